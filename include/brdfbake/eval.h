@@ -1,0 +1,49 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// `brdfbake eval`: one or more quantities of a model along a sweep of one
+// direction, as CSV.
+
+#ifndef BRDFBAKE_EVAL_H_
+#define BRDFBAKE_EVAL_H_
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "brdfbake/brdf.h"
+#include "brdfbake/fresnel.h"
+#include "brdfbake/model.h"
+
+namespace brdfbake {
+
+// Quantities and the direction each one sweeps:
+//   D, pdf      the microfacet normal m (pdf: density of the model's sampler
+//               for the fixed view wo, per steradian)
+//   Lambda, G1  the direction w
+//   G2, brdf    the light direction wi, with the view wo fixed
+//   K           the direction w (sel)
+struct EvalRequest {
+  ModelParams model;
+  std::vector<std::string> quantities = {"D"};
+  Masking masking = Masking::kHeightCorrelated;
+  Fresnel fresnel;
+  double mu_o = 1.0;   // cos(theta) of the fixed view wo
+  double phi_o = 0.0;  // azimuth of wo, radians
+  double phi = 0.0;    // azimuth of the swept direction, radians
+  std::string sweep = "mu";  // "mu": cos(theta); "theta": degrees
+  double from = 0.0, to = 1.0;
+  int count = 11;
+};
+
+const std::vector<std::string>& EvalQuantities();
+
+// Throws std::invalid_argument (one line, naming the bad input) on bad input.
+void ValidateEvalRequest(const EvalRequest& req);
+
+// Writes a header line and `count` rows. Throws on bad input before writing.
+void EvalCsv(const EvalRequest& req, std::ostream& out);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_EVAL_H_

@@ -1,0 +1,72 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// A model chosen at run time (from the command line or a scene): its name
+// and parameters, validated once, and a type-erased double-precision view of
+// the scalar reference for tools that do not know the model at compile time.
+
+#ifndef BRDFBAKE_MODEL_H_
+#define BRDFBAKE_MODEL_H_
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "brdfbake/brdf.h"
+#include "brdfbake/fresnel.h"
+#include "brdfbake/vec3.h"
+
+namespace brdfbake {
+
+struct ModelParams {
+  std::string name = "ggx";  // ggx | beckmann | std | ellipsoid | sel
+  double alpha_x = 0.25;
+  double alpha_y = 0.25;
+  double gamma = 2.0;  // std only; +inf = Beckmann
+  double theta_x = 0, theta_y = 0, theta_z = 0;  // ellipsoid A = S R, sel Q (radians)
+
+  // One-line JSON such as {"name":"ggx","alpha_x":0.25,"alpha_y":0.25}.
+  std::string ToJson() const;
+};
+
+// Every model name, with a one-line description of its parameters.
+struct ModelInfo {
+  const char* name;
+  const char* parameters;
+  const char* source;
+};
+const std::vector<ModelInfo>& Models();
+
+// Throws std::invalid_argument with a one-line message naming the bad
+// parameter if `p` is outside the documented domain.
+void ValidateModelParams(const ModelParams& p);
+
+// A validated model, evaluated in double. Quantities a model does not define
+// (Lambda for sel, say) throw std::invalid_argument.
+class Model {
+ public:
+  virtual ~Model() = default;
+  virtual const ModelParams& params() const = 0;
+  virtual bool IsMicrofacet() const { return true; }
+
+  virtual double D(const Vec3<double>& m) const = 0;
+  virtual double Lambda(const Vec3<double>& w) const = 0;
+  virtual double G1(const Vec3<double>& w) const = 0;
+  virtual double G2(const Vec3<double>& wi, const Vec3<double>& wo,
+                    Masking masking) const = 0;
+  virtual double Brdf(const Vec3<double>& wi, const Vec3<double>& wo,
+                      const Fresnel& fresnel, Masking masking, int channel) const = 0;
+  // The model's importance sampler of microfacet normals for a view wo
+  // (visible normals where available) and its density per steradian.
+  virtual Vec3<double> Sample(const Vec3<double>& wo, double u1, double u2) const = 0;
+  virtual double Pdf(const Vec3<double>& wo, const Vec3<double>& m) const = 0;
+  // Lobe value (sel only).
+  virtual double K(const Vec3<double>& w) const;
+};
+
+std::unique_ptr<Model> MakeModel(const ModelParams& p);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_MODEL_H_

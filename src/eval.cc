@@ -1,0 +1,127 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "brdfbake/eval.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace brdfbake {
+namespace {
+
+[[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
+
+std::string Fmt(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+const std::vector<std::string>& EvalQuantities() {
+  static const std::vector<std::string> kQ = {"D", "Lambda", "G1", "G2", "brdf", "pdf", "K"};
+  return kQ;
+}
+
+void ValidateEvalRequest(const EvalRequest& req) {
+  ValidateModelParams(req.model);
+  if (req.quantities.empty()) Bad("--quantity: at least one quantity is required");
+  for (const std::string& q : req.quantities) {
+    bool ok = false;
+    for (const std::string& k : EvalQuantities()) ok |= q == k;
+    if (!ok) Bad("--quantity: unknown quantity '" + q + "' (expected D, Lambda, G1, G2, brdf, pdf or K)");
+    const bool is_sel = req.model.name == "sel";
+    if (is_sel != (q == "K")) {
+      Bad(is_sel ? "--quantity: model sel has only the quantity K"
+                 : "--quantity: K is defined for model sel only");
+    }
+  }
+  if (req.count < 1 || req.count > 10000000) Bad("--count must be in [1, 10000000]");
+  if (!std::isfinite(req.from) || !std::isfinite(req.to)) Bad("--from/--to must be finite");
+  if (req.sweep == "mu") {
+    if (req.from < -1 || req.from > 1 || req.to < -1 || req.to > 1) {
+      Bad("--from/--to must lie in [-1, 1] for --sweep mu");
+    }
+  } else if (req.sweep == "theta") {
+    if (req.from < 0 || req.from > 180 || req.to < 0 || req.to > 180) {
+      Bad("--from/--to must lie in [0, 180] degrees for --sweep theta");
+    }
+  } else {
+    Bad("--sweep: unknown sweep '" + req.sweep + "' (expected mu or theta)");
+  }
+  if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("--mu-o must lie in [0, 1]");
+  if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("--phi/--phi-o must be finite");
+  if (req.fresnel.kind == FresnelKind::kDielectric &&
+      (!std::isfinite(req.fresnel.eta) || !(req.fresnel.eta > 0))) {
+    Bad("--eta must be a finite number > 0");
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (!std::isfinite(req.fresnel.f0[c]) || req.fresnel.f0[c] < 0 || req.fresnel.f0[c] > 1) {
+      Bad("--f0 values must lie in [0, 1]");
+    }
+    if (!std::isfinite(req.fresnel.n[c]) || !(req.fresnel.n[c] > 0) ||
+        !std::isfinite(req.fresnel.k[c]) || req.fresnel.k[c] < 0) {
+      Bad("--n must be > 0 and --k >= 0, finite");
+    }
+  }
+}
+
+void EvalCsv(const EvalRequest& req, std::ostream& out) {
+  ValidateEvalRequest(req);
+  const std::unique_ptr<Model> model = MakeModel(req.model);
+  const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
+  const bool grey = req.fresnel.IsGrey();
+
+  std::ostringstream header;
+  header << "mu,theta_deg";
+  for (const std::string& q : req.quantities) {
+    if (q == "brdf" && !grey) {
+      header << ",brdf_r,brdf_g,brdf_b";
+    } else {
+      header << "," << q;
+    }
+  }
+  out << header.str() << "\n";
+
+  for (int i = 0; i < req.count; ++i) {
+    const double t = req.count == 1 ? 0.0 : static_cast<double>(i) / (req.count - 1);
+    const double s = req.from + (req.to - req.from) * t;
+    double mu, theta_deg;
+    if (req.sweep == "mu") {
+      mu = s;
+      theta_deg = std::acos(mu) * 180.0 / kPi<double>;
+    } else {
+      theta_deg = s;
+      mu = std::cos(s * kPi<double> / 180.0);
+    }
+    const Vec3<double> w = FromMuPhi(mu, req.phi);
+    std::string row = Fmt(mu) + "," + Fmt(theta_deg);
+    for (const std::string& q : req.quantities) {
+      if (q == "D") {
+        row += "," + Fmt(model->D(w));
+      } else if (q == "Lambda") {
+        row += "," + Fmt(model->Lambda(w));
+      } else if (q == "G1") {
+        row += "," + Fmt(model->G1(w));
+      } else if (q == "G2") {
+        row += "," + Fmt(model->G2(w, wo, req.masking));
+      } else if (q == "pdf") {
+        row += "," + Fmt(model->Pdf(wo, w));
+      } else if (q == "K") {
+        row += "," + Fmt(model->K(w));
+      } else if (q == "brdf") {
+        const int channels = grey ? 1 : 3;
+        for (int c = 0; c < channels; ++c) {
+          row += "," + Fmt(model->Brdf(w, wo, req.fresnel, req.masking, c));
+        }
+      }
+    }
+    out << row << "\n";
+  }
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,83 @@
+# Copyright 2026 the brdfbake authors.
+# SPDX-License-Identifier: Apache-2.0
+#
+# Command-line contract: run as `cmake -DBRDFBAKE=path -P cli_test.cmake`.
+# Each check runs the tool and asserts its exit status and output.
+
+function(run_tool expect_ok out_var err_var)
+  execute_process(COMMAND ${BRDFBAKE} ${ARGN}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(expect_ok AND NOT rc EQUAL 0)
+    message(FATAL_ERROR "brdfbake ${ARGN}: exit ${rc}, stderr: ${err}")
+  endif()
+  if(NOT expect_ok AND rc EQUAL 0)
+    message(FATAL_ERROR "brdfbake ${ARGN}: expected a non-zero exit, got 0")
+  endif()
+  set(${out_var} "${out}" PARENT_SCOPE)
+  set(${err_var} "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_one_line_error)
+  run_tool(FALSE out err ${ARGN})
+  string(STRIP "${err}" err)
+  string(FIND "${err}" "\n" nl)
+  if(NOT nl EQUAL -1 OR err STREQUAL "")
+    message(FATAL_ERROR "brdfbake ${ARGN}: expected a one-line error, got: '${err}'")
+  endif()
+  if(NOT out STREQUAL "")
+    message(FATAL_ERROR "brdfbake ${ARGN}: expected no output on error, got: '${out}'")
+  endif()
+endfunction()
+
+run_tool(TRUE out err --help)
+if(NOT out MATCHES "eval")
+  message(FATAL_ERROR "--help does not list eval: ${out}")
+endif()
+run_tool(TRUE out err --version)
+if(NOT out MATCHES "brdfbake [0-9]+\\.[0-9]+\\.[0-9]+" OR NOT out MATCHES "SIMD target in use")
+  message(FATAL_ERROR "--version: ${out}")
+endif()
+run_tool(TRUE out err eval --help)
+foreach(model ggx beckmann std ellipsoid sel)
+  if(NOT out MATCHES "${model}")
+    message(FATAL_ERROR "eval --help does not list model ${model}")
+  endif()
+endforeach()
+
+# GGX Lambda at alpha = 1, mu = 0.5: (sqrt(1 + tan^2) - 1)/2 = (2 - 1)/2 = 0.5.
+run_tool(TRUE out err eval --model ggx --alpha 1 --quantity Lambda --from 0.5 --to 0.5 --count 1)
+if(NOT out MATCHES "^mu,theta_deg,Lambda\n0\\.5,60[.0-9]*,0\\.5[0-9]*\n$" AND
+   NOT out MATCHES "^mu,theta_deg,Lambda\n0\\.5,60[.0-9]*,0\\.4999999[0-9]*\n$")
+  message(FATAL_ERROR "eval Lambda: unexpected output '${out}'")
+endif()
+
+foreach(model ggx beckmann std ellipsoid)
+  run_tool(TRUE out err eval --model ${model} --roughness 0.5 --gamma 3 --theta-x 10
+           --quantity D,Lambda,G1,G2,brdf,pdf --fresnel conductor --count 21 --from 0.01 --mu-o 0.3)
+  string(REGEX MATCHALL "\n" lines "${out}")
+  list(LENGTH lines n)
+  if(NOT n EQUAL 22)
+    message(FATAL_ERROR "eval ${model}: expected 22 lines, got ${n}: ${out}")
+  endif()
+  if(out MATCHES "nan|inf")
+    message(FATAL_ERROR "eval ${model}: non-finite output: ${out}")
+  endif()
+endforeach()
+run_tool(TRUE out err eval --model sel --alpha-x 0.3 --alpha-y 0.6 --quantity K --count 5)
+run_tool(TRUE out err eval --model std --gamma inf --quantity Lambda --sweep theta --from 0 --to 89 --count 4)
+
+expect_one_line_error(frobnicate)
+expect_one_line_error(eval --model phong)
+expect_one_line_error(eval --alpha -1)
+expect_one_line_error(eval --alpha abc)
+expect_one_line_error(eval --model std --gamma 1.2)
+expect_one_line_error(eval --quantity X)
+expect_one_line_error(eval --count 0)
+expect_one_line_error(eval --from 3)
+expect_one_line_error(eval --fresnel metal)
+expect_one_line_error(eval --fresnel schlick --f0 1,2)
+expect_one_line_error(eval --masking none)
+expect_one_line_error(eval --model sel --quantity D)
+expect_one_line_error(eval --no-such-flag)
+expect_one_line_error(eval --model ellipsoid --theta-y 120)
+message(STATUS "cli: all checks passed")

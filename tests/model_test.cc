@@ -1,0 +1,160 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The run-time model registry and `eval`: validation of parameters with
+// one-line messages, identities between models through the type-erased
+// interface, and the CSV contract.
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "brdfbake/eval.h"
+#include "brdfbake/model.h"
+
+namespace brdfbake {
+namespace {
+
+std::string ErrorOf(const ModelParams& p) {
+  try {
+    ValidateModelParams(p);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ModelTest, RejectsBadParametersWithOneLineMessages) {
+  ModelParams p;
+  EXPECT_EQ(ErrorOf(p), "");
+  p.alpha_x = -0.1;
+  EXPECT_NE(ErrorOf(p).find("alpha_x"), std::string::npos);
+  p.alpha_x = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(ErrorOf(p).find("alpha_x"), std::string::npos);
+  p.alpha_x = 0.3;
+  p.alpha_y = 0;
+  EXPECT_NE(ErrorOf(p).find("alpha_y"), std::string::npos);
+  p.alpha_y = 0.3;
+  p.name = "phong";
+  EXPECT_NE(ErrorOf(p).find("unknown model 'phong'"), std::string::npos);
+  p.name = "std";
+  p.gamma = 1.5;
+  EXPECT_NE(ErrorOf(p).find("gamma"), std::string::npos);
+  p.gamma = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(ErrorOf(p).find("gamma"), std::string::npos);
+  p.gamma = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(ErrorOf(p), "");
+  p.name = "ellipsoid";
+  p.theta_y = 2.0;
+  EXPECT_NE(ErrorOf(p).find("theta_y"), std::string::npos);
+  for (const ModelParams& bad : {p}) {
+    const std::string msg = ErrorOf(bad);
+    EXPECT_EQ(msg.find('\n'), std::string::npos);
+  }
+}
+
+TEST(ModelTest, StdGammaTwoIsGgxAndInfinityIsBeckmann) {
+  ModelParams g;
+  g.name = "ggx";
+  g.alpha_x = 0.3;
+  g.alpha_y = 0.7;
+  ModelParams s = g;
+  s.name = "std";
+  s.gamma = 2;
+  ModelParams b = g;
+  b.name = "beckmann";
+  ModelParams si = s;
+  si.gamma = std::numeric_limits<double>::infinity();
+  const auto mg = MakeModel(g), ms = MakeModel(s), mb = MakeModel(b), msi = MakeModel(si);
+  for (double mu = 0.05; mu <= 1; mu += 0.1) {
+    const Vec3<double> w = FromMuPhi(mu, 0.8);
+    EXPECT_NEAR(ms->D(w), mg->D(w), 1e-12 * mg->D(w));
+    EXPECT_NEAR(ms->Lambda(w), mg->Lambda(w), 1e-10 * (1 + mg->Lambda(w)));
+    EXPECT_NEAR(msi->D(w), mb->D(w), 1e-12 * mb->D(w));
+    EXPECT_NEAR(msi->Lambda(w), mb->Lambda(w), 1e-12 * (1 + mb->Lambda(w)));
+  }
+}
+
+TEST(ModelTest, SelHasOnlyK) {
+  ModelParams p;
+  p.name = "sel";
+  const auto m = MakeModel(p);
+  EXPECT_FALSE(m->IsMicrofacet());
+  EXPECT_NEAR(m->K(Vec3<double>(0, 0, 1)), 1.0, 1e-12);
+  EXPECT_THROW(m->D(Vec3<double>(0, 0, 1)), std::invalid_argument);
+  ModelParams q;
+  EXPECT_THROW(MakeModel(q)->K(Vec3<double>(0, 0, 1)), std::invalid_argument);
+}
+
+TEST(EvalTest, CsvHasHeaderAndRows) {
+  EvalRequest req;
+  req.quantities = {"D", "Lambda", "G1", "G2", "brdf", "pdf"};
+  req.count = 5;
+  req.mu_o = 0.5;
+  std::ostringstream out;
+  EvalCsv(req, out);
+  std::istringstream in(out.str());
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "mu,theta_deg,D,Lambda,G1,G2,brdf,pdf");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    int commas = 0;
+    for (char c : line) commas += c == ',';
+    EXPECT_EQ(commas, 7) << line;
+    EXPECT_EQ(line.find("nan"), std::string::npos) << line;
+  }
+  EXPECT_EQ(rows, 5);
+}
+
+TEST(EvalTest, ColouredFresnelGivesThreeChannels) {
+  EvalRequest req;
+  req.quantities = {"brdf"};
+  req.fresnel = Fresnel::Schlick({0.9, 0.6, 0.3});
+  req.count = 3;
+  req.from = 0.2;
+  req.mu_o = 0.9;
+  std::ostringstream out;
+  EvalCsv(req, out);
+  EXPECT_EQ(out.str().substr(0, out.str().find('\n')), "mu,theta_deg,brdf_r,brdf_g,brdf_b");
+}
+
+TEST(EvalTest, ThetaSweepMatchesMu) {
+  EvalRequest req;
+  req.sweep = "theta";
+  req.from = 0;
+  req.to = 60;
+  req.count = 2;
+  req.quantities = {"G1"};
+  std::ostringstream out;
+  EvalCsv(req, out);
+  EXPECT_NE(out.str().find("\n0.50000000000000011,60,"), std::string::npos) << out.str();
+}
+
+TEST(EvalTest, RejectsBadRequests) {
+  EvalRequest req;
+  req.quantities = {"Q"};
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+  req.quantities = {"K"};
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+  req.quantities = {"D"};
+  req.count = 0;
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+  req.count = 3;
+  req.from = 2;
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+  req.from = 0;
+  req.mu_o = -0.1;
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+  req.mu_o = 1;
+  req.sweep = "phi";
+  EXPECT_THROW(ValidateEvalRequest(req), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace brdfbake
