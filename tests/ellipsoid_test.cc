@@ -117,7 +117,7 @@ double RelDiff(double a, double b) {
 // ---------------------------------------------------------------------------
 // Normalization: integral of D(m) m.n over the hemisphere is 1 (eq. 8 with
 // A_e(n) = projected area of the half ellipsoid along n), for every A.
-TEST(EllipsoidNdf, ProjectedAreaNormalization) {
+TEST(EllipsoidTest, ProjectedAreaNormalization) {
   double max_err = 0;
   for (const Shape& s : kShapes) {
     const Ell e = s.Make();
@@ -134,7 +134,7 @@ TEST(EllipsoidNdf, ProjectedAreaNormalization) {
 // surface area of the ellipsoid p^T A^T A p = C_e^2 with C_e from eq. 27,
 // computed independently from the parameterization of an ellipsoid with
 // semi-axes (C/ax, C/ay, C) (R only rotates it).
-TEST(EllipsoidNdf, FullSphereIntegralIsSurfaceArea) {
+TEST(EllipsoidTest, FullSphereIntegralIsSurfaceArea) {
   double max_err = 0;
   for (const Shape& s : kShapes) {
     const Ell e = s.Make();
@@ -160,7 +160,7 @@ TEST(EllipsoidNdf, FullSphereIntegralIsSurfaceArea) {
 
 // Eq. 24: A_e(u) = integral of max(0, u.m) over the whole ellipsoid, and
 // eq. 26: A_l(u, v) = the same restricted to v.m >= 0, in units of A_e(n).
-TEST(EllipsoidNdf, ProjectedAreasMatchIntegrals) {
+TEST(EllipsoidTest, ProjectedAreasMatchIntegrals) {
   double max_e = 0, max_l = 0;
   const Shape* shapes[] = {&kShapes[1], &kShapes[4], &kShapes[6]};
   const Dir dirs[] = {FromMuPhi(0.9, 0.4), FromMuPhi(0.2, 2.5), FromMuPhi(-0.6, 5.0),
@@ -189,7 +189,7 @@ TEST(EllipsoidNdf, ProjectedAreasMatchIntegrals) {
 // area integral of max(0, u.m) D(m) dm; and eq. 28: with G1 of eq. 29 the
 // visible projected area G1(u) A_l(u, n) never exceeds u.n, with equality
 // wherever the min in eq. 29 is not active (always for R = I).
-TEST(EllipsoidNdf, VisibleProjectedAreaIdentity) {
+TEST(EllipsoidTest, VisibleProjectedAreaIdentity) {
   double max_lune = 0, max_eq = 0, max_dv = 0;
   int n_clamped = 0;
   for (const Shape& s : kShapes) {
@@ -228,7 +228,7 @@ TEST(EllipsoidNdf, VisibleProjectedAreaIdentity) {
 // ||A^-T m|| = ||S^-1 R m|| is smallest, i.e. at m = R^T z, with the value
 // 1 / (pi |A| ||An||); and a matrix built by hand from eq. 2-3 gives the same
 // NDF as the angle constructor.
-TEST(EllipsoidNdf, ShapeMatrixConvention) {
+TEST(EllipsoidTest, ShapeMatrixConvention) {
   for (const Shape& s : kShapes) {
     const Ell e = s.Make();
     const Mat3<double> r = Mat3<double>::RotX(s.tx) * Mat3<double>::RotY(s.ty) *
@@ -249,7 +249,7 @@ TEST(EllipsoidNdf, ShapeMatrixConvention) {
 }
 
 // The tilted ellipsoids do hit the min in eq. 6 near normal incidence.
-TEST(EllipsoidNdf, G1ClampIsReachedForTiltedShapes) {
+TEST(EllipsoidTest, G1ClampIsReachedForTiltedShapes) {
   const Ell e = kShapes[6].Make();
   EXPECT_EQ(e.G1(kN), 1.0);
   EXPECT_EQ(e.Lambda(kN), 0.0);
@@ -261,7 +261,7 @@ TEST(EllipsoidNdf, G1ClampIsReachedForTiltedShapes) {
 
 // ---------------------------------------------------------------------------
 // R = I: the ellipsoid NDF is anisotropic GGX (seed 000 section 1, seed 001).
-TEST(EllipsoidNdf, UnrotatedEqualsAnisotropicGgx) {
+TEST(EllipsoidTest, UnrotatedEqualsAnisotropicGgx) {
   const double alphas[][2] = {{0.3, 0.3}, {0.5, 0.05}, {1.0, 1.0},  {0.001, 0.8},
                               {2.0, 0.1}, {1e-4, 1e-4}, {1e-6, 0.3}, {0.05, 50.0}};
   std::mt19937_64 rng(7);
@@ -294,7 +294,7 @@ TEST(EllipsoidNdf, UnrotatedEqualsAnisotropicGgx) {
   EXPECT_LE(max_lambda, 1e-12);
 }
 
-TEST(EllipsoidNdf, UnrotatedSamplerEqualsGgxSampler) {
+TEST(EllipsoidTest, UnrotatedSamplerEqualsGgxSampler) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   double max_err = 0;
@@ -318,7 +318,7 @@ TEST(EllipsoidNdf, UnrotatedSamplerEqualsGgxSampler) {
 
 // ---------------------------------------------------------------------------
 // Eq. 30 is a density over m.
-TEST(EllipsoidNdf, PdfVisibleIntegratesToOne) {
+TEST(EllipsoidTest, PdfVisibleIntegratesToOne) {
   double max_err = 0;
   for (const Shape& s : kShapes) {
     const Ell e = s.Make();
@@ -339,7 +339,7 @@ struct ChiCase {
   Dir view;
 };
 
-TEST(EllipsoidNdf, SampleVisibleChiSquare) {
+TEST(EllipsoidTest, SampleVisibleChiSquare) {
   const ChiCase cases[] = {
       {"iso R=I mu=0.6", {"", 0.5, 0.5, 0, 0, 0}, FromMuPhi(0.6, 1.0)},
       {"aniso R=I mu=0.6", {"", 0.7, 0.2, 0, 0, 0}, FromMuPhi(0.6, 2.0)},
@@ -352,7 +352,8 @@ TEST(EllipsoidNdf, SampleVisibleChiSquare) {
       {"grazing rotated mu=0.05 b", {"", 0.4, 0.3, 0.3, -0.5, 1.0}, FromMuPhi(0.05, 3.456)},
       // Lune so thin that A_l(u, n) = 0.025 < u.n: G1 = 1 (the min is active).
       // (Thinner lunes of sharper shapes, e.g. alpha = (0.5, 0.05) at
-      // A_l = 0.004, are sampled correctly too, but the 6x6-point bin
+      // A_l = 0.004, pass too when the expected counts are integrated finely
+      // (checked outside this suite), but the 6x6-point bin
       // quadrature of ChiSquareDirections is then too coarse for the
       // expected counts; PdfVisibleIntegratesToOne covers that shape.)
       {"grazing thin lune mu=0.05", {"", 0.4, 0.15, 0.8, 0.3, 0.5},
@@ -376,7 +377,7 @@ TEST(EllipsoidNdf, SampleVisibleChiSquare) {
 }
 
 // Every sample is a unit normal of the valid lune: m.n >= 0 and m.u >= 0.
-TEST(EllipsoidNdf, SamplesLieInTheLune) {
+TEST(EllipsoidTest, SamplesLieInTheLune) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   for (const Shape& s : kShapes) {
@@ -396,7 +397,7 @@ TEST(EllipsoidNdf, SamplesLieInTheLune) {
 // Seed 000 section 1: "Scaling the matrix by a constant (c A) and left
 // multiplication by an orthogonal matrix (Q A) does not change the
 // distribution". Build c Q A explicitly and compare every quantity.
-TEST(EllipsoidNdf, InvariantUnderScaleAndLeftOrthogonal) {
+TEST(EllipsoidTest, InvariantUnderScaleAndLeftOrthogonal) {
   const Mat3<double> q_rot = Mat3<double>::RotZ(0.9) * Mat3<double>::RotX(-1.3) *
                              Mat3<double>::RotY(2.2);
   const Mat3<double> q_refl = Mat3<double>::Diagonal(1, -1, 1) * q_rot;  // det -1
@@ -450,7 +451,7 @@ TEST(EllipsoidNdf, InvariantUnderScaleAndLeftOrthogonal) {
 // ---------------------------------------------------------------------------
 // No NaN or Inf over the documented domain (SPEC.md section 6), and the float
 // instantiation stays close to the double one.
-TEST(EllipsoidNdf, FiniteEverywhere) {
+TEST(EllipsoidTest, FiniteEverywhere) {
   const Shape extreme[] = {{"tiny", 1e-4, 1e-4, 0, 0, 0},
                            {"1000:1", 0.5, 5e-4, 0, 0, 0.3},
                            {"1000:1 tilted", 0.5, 5e-4, 0.4, 0.9, 0.3},
@@ -482,7 +483,7 @@ TEST(EllipsoidNdf, FiniteEverywhere) {
   }
 }
 
-TEST(EllipsoidNdf, FloatMatchesDouble) {
+TEST(EllipsoidTest, FloatMatchesDouble) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   for (const Shape& s : kShapes) {

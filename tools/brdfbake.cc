@@ -14,8 +14,14 @@
 #include <string>
 #include <vector>
 
+#include <chrono>
+#include <mutex>
+
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 
+#include "brdfbake/bake.h"
 #include "brdfbake/eval.h"
 #include "brdfbake/model.h"
 #include "brdfbake/targets.h"
@@ -152,6 +158,123 @@ std::string ModelsHelp() {
   return s;
 }
 
+struct BakeOptions {
+  std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear";
+  std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
+  std::string pixel = "float", output;
+  int samples = 0, threads = 0;
+  double tolerance = 1e-8;
+  uint64_t seed = 1;
+  bool complement = false, error_channel = false;
+
+  void Add(CLI::App* app) {
+    app->add_option("--table,-t", table, "E | E_avg | dfg")->required();
+    app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
+    app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]")->capture_default_str();
+    app->add_option("--size", size, "mu x roughness entries, e.g. 32x32 (E_avg: roughness entries)")
+        ->capture_default_str();
+    app->add_option("--warp", warp, "linear | square | sqrt, or per axis: mu=linear,roughness=square")
+        ->capture_default_str();
+    app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
+        ->capture_default_str();
+    app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
+    app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
+    app->add_option("--samples", samples, "nodes per dimension (quadrature) or samples per texel; 0 = default");
+    app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
+        ->capture_default_str();
+    app->add_option("--seed", seed, "seed of the randomized integrators")->capture_default_str();
+    app->add_option("--pixel", pixel, "float | half")->capture_default_str();
+    app->add_flag("--complement", complement, "store 1-E instead of E (E table)");
+    app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
+    app->add_option("--threads", threads, "worker threads; 0 = all cores")->capture_default_str();
+    app->add_option("-o,--output", output, "output .exr file")->required();
+  }
+
+  brdfbake::BakeSpec Get() const {
+    brdfbake::BakeSpec spec;
+    spec.table = brdfbake::ParseTable(table);
+    spec.model.name = model;
+    spec.model.gamma = ParseNumber("--gamma", gamma);
+    spec.masking = ParseMasking(masking);
+    spec.integrator = brdfbake::ParseIntegrator(integrator);
+    spec.samples = samples;
+    spec.tolerance = tolerance;
+    spec.seed = seed;
+    spec.complement = complement;
+    spec.error_channel = error_channel;
+    spec.threads = threads;
+    if (pixel != "float" && pixel != "half") {
+      throw std::invalid_argument("--pixel: expected float or half, got '" + pixel + "'");
+    }
+    spec.half = pixel == "half";
+    // Size: WxH for 2D tables, N for E_avg.
+    auto parse_int = [](const std::string& opt, const std::string& text) {
+      const double v = ParseNumber(opt, text);
+      if (v != std::floor(v) || v < 1 || v > 8192) {
+        throw std::invalid_argument(opt + ": '" + text + "' is not an integer in [1, 8192]");
+      }
+      return static_cast<int>(v);
+    };
+    const size_t x = size.find('x');
+    if (spec.table == brdfbake::TableKind::kEavg) {
+      spec.roughness.size = parse_int("--size", x == std::string::npos ? size : size.substr(x + 1));
+    } else {
+      if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + size + "'");
+      spec.mu.size = parse_int("--size", size.substr(0, x));
+      spec.roughness.size = parse_int("--size", size.substr(x + 1));
+    }
+    const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
+    spec.mu.placement = spec.roughness.placement = pl;
+    for (const std::string& item : SplitComma(warp)) {
+      const size_t eq = item.find('=');
+      if (eq == std::string::npos) {
+        spec.mu.warp = spec.roughness.warp = brdfbake::ParseWarp(item);
+      } else if (item.substr(0, eq) == "mu") {
+        spec.mu.warp = brdfbake::ParseWarp(item.substr(eq + 1));
+      } else if (item.substr(0, eq) == "roughness") {
+        spec.roughness.warp = brdfbake::ParseWarp(item.substr(eq + 1));
+      } else {
+        throw std::invalid_argument("--warp: unknown axis '" + item.substr(0, eq) +
+                                    "' (expected mu or roughness)");
+      }
+    }
+    if (output.empty()) throw std::invalid_argument("-o: an output file is required");
+    brdfbake::ValidateBakeSpec(spec);
+    return spec;
+  }
+};
+
+// A progress bar on stderr when it is a terminal and the bake has taken
+// more than a second.
+class Progress {
+ public:
+  Progress() : tty_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  void operator()(int64_t done, int64_t total) {
+    if (!tty_) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (elapsed < 1.0) return;
+    std::lock_guard<std::mutex> lock(mu_);
+    if (done < total && std::chrono::duration<double>(now - last_).count() < 0.1) return;
+    last_ = now;
+    const int width = 40;
+    const int filled = static_cast<int>(width * done / std::max<int64_t>(1, total));
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%% %.1fs", filled, "========================================",
+                 width - filled, "", static_cast<int>(100 * done / std::max<int64_t>(1, total)),
+                 elapsed);
+    shown_ = true;
+  }
+  void Finish() {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool tty_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_, last_;
+  std::mutex mu_;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -180,6 +303,11 @@ int main(int argc, char** argv) {
   eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf)")->capture_default_str();
   eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
 
+  CLI::App* bake = app.add_subcommand(
+      "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing OpenEXR file.");
+  BakeOptions bake_opts;
+  bake_opts.Add(bake);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -196,6 +324,18 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (*bake) {
+      const brdfbake::BakeSpec spec = bake_opts.Get();
+      Progress progress;
+      const brdfbake::Table table =
+          brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
+      progress.Finish();
+      brdfbake::WriteExr(table, bake_opts.output);
+      std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
+                  bake_opts.output.c_str(), brdfbake::TableName(spec.table), spec.model.name.c_str(),
+                  table.width, table.height, brdfbake::IntegratorName(spec.integrator),
+                  table.seconds, table.max_abs_error);
+    }
     if (*eval) {
       req.model = model_opts.Get();
       req.fresnel = fresnel_opts.Get();

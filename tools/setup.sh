@@ -34,23 +34,12 @@ if [ "$mode" = test ]; then
   exec ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 
-# Main job. Until the table baker lands, the most useful output is each
-# model's curves at the default roughness: D, Lambda, G1 along mu, and the
-# BRDF and visible-normal pdf for a 60-degree view.
+# Main job: bake the default engine set (GGX, height-correlated, 32x32 over
+# mu x roughness with edges placement, alpha = roughness^2) into out/. Each
+# file is written to a temporary and renamed, never left partial.
 mkdir -p out
 tool=build/bin/brdfbake
-emit() {  # emit FILE ARGS...: write through a temporary, never a partial file
-  file="$1"; shift
-  "$tool" "$@" > "out/.$file.tmp" && mv "out/.$file.tmp" "out/$file"
-  echo "wrote out/$file"
-}
-for model in ggx beckmann; do
-  emit "${model}_r0.5.csv" eval --model "$model" --roughness 0.5 \
-    --quantity D,Lambda,G1,G2,brdf,pdf --mu-o 0.5 --count 101
-done
-emit "std_gamma3_r0.5.csv" eval --model std --gamma 3 --roughness 0.5 \
-  --quantity D,Lambda,G1,G2,brdf,pdf --mu-o 0.5 --count 101
-emit "ellipsoid_r0.5_tilted.csv" eval --model ellipsoid --roughness 0.5 --theta-x 15 \
-  --quantity D,Lambda,G1,G2,brdf,pdf --mu-o 0.5 --count 101
-emit "sel_0.3x0.6.csv" eval --model sel --alpha-x 0.3 --alpha-y 0.6 --quantity K --count 101
+"$tool" bake --table E --model ggx --size 32x32 -o out/ggx_E.exr
+"$tool" bake --table E_avg --model ggx --size 32 -o out/ggx_E_avg.exr
+"$tool" bake --table dfg --model ggx --size 32x32 -o out/ggx_dfg.exr
 "$tool" --version

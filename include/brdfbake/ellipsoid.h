@@ -27,8 +27,8 @@
 // w, k the unit vectors along Au, Av: it keeps full relative precision for
 // thin lunes (strongly tilted ellipsoids seen at grazing angles).
 //
-// Typos and subtleties in seed 000, all checked numerically (see
-// tests/ellipsoid_test.cc and the report that came with this file):
+// Typos and subtleties in seed 000, all checked numerically (the identities
+// by quadrature in tests/ellipsoid_test.cc, eq. 23 with mpmath):
 //  - eq. 23 reads (Ma) x (Mb) = |M| M^-1 (a x b); the identity is
 //    |M| M^-T (a x b) (the cofactor matrix). The text after it (and eq. 24)
 //    uses the correct A^-T.
@@ -39,6 +39,10 @@
 //  - eq. 30 is normalized by A_l(u, n), not by u.n / G1(u): the two differ
 //    where the min in eq. 29 is active (tilted ellipsoids near normal view),
 //    so PdfVisible and DVisible below are different functions in general.
+//  - section 5: for theta_x, theta_y != 0 the half ellipsoid is cut by the
+//    plane normal to A^T A n, so the mean microfacet normal is not n; D is
+//    still normalized as integral of D(m) m.n dm = 1 (eq. 8), and G1 only
+//    satisfies eq. 28 as an inequality.
 
 #ifndef BRDFBAKE_ELLIPSOID_H_
 #define BRDFBAKE_ELLIPSOID_H_

@@ -20,7 +20,10 @@
 // Both U - v_z and U + v_z are positive; the smaller of the two is evaluated
 // as (U^2 - v_z^2) / (the larger) so K keeps full relative precision near the
 // lobe axis and opposite it. K(axis) = 1, K(-axis) = amax^4, and
-// 0 < K <= 1 whenever amax <= 1 (the seed's range of roughness).
+// 0 < K <= 1 whenever amax <= 1 (the seed's range of roughness; up to the
+// rounding of w: within ~1e-8 rad of the axis a w that is unit only to
+// rounding can give 1 + ulp). For amax > 1 the lobe exceeds 1 behind
+// (K(-axis) = amax^4); alphas are not clamped from above.
 //
 // Typos in seed 002, checked numerically (tests/sel_test.cc):
 //  - the diagonal scaling of the line, p' = (t w - c) diag(1/ax, 1/ay, .),

@@ -1,0 +1,132 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The table baker (SPEC.md sections 3-4): directional albedo E(mu, r), its
+// cosine-weighted average E_avg(r) and the split-sum DFG terms, baked with a
+// choice of integrators, each estimating its own error per texel.
+
+#ifndef BRDFBAKE_BAKE_H_
+#define BRDFBAKE_BAKE_H_
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "brdfbake/brdf.h"
+#include "brdfbake/model.h"
+
+namespace brdfbake {
+
+enum class TableKind { kE, kEavg, kDfg };
+enum class Warp { kLinear, kSquare, kSqrt };
+enum class Placement { kCenters, kEdges };
+
+// quadrature: Gauss-Legendre over the sampler's unit square with the horizon
+//   crossing located per line and the rule split there, refined along a
+//   ladder of node counts until two successive rules agree to a tolerance;
+//   error from the last two rules.
+// qmc: randomized quasi-Monte Carlo (Hammersley points with independent
+//   Cranley-Patterson rotations), visible-normal importance sampling; error
+//   from the spread of the replicas.
+// mc: plain Monte Carlo with visible-normal sampling; error from the sample
+//   variance.
+// engine: the settings engines use today, N Hammersley points (1024 by
+//   default) with NDF importance sampling of the half vector; its error is
+//   measured against the quadrature.
+enum class IntegratorKind { kQuadrature, kQmc, kMc, kEngine };
+
+const char* TableName(TableKind t);
+const char* WarpName(Warp w);
+const char* PlacementName(Placement p);
+const char* IntegratorName(IntegratorKind k);
+// Parsers throw std::invalid_argument naming the bad value.
+TableKind ParseTable(const std::string& s);
+Warp ParseWarp(const std::string& s);
+Placement ParsePlacement(const std::string& s);
+IntegratorKind ParseIntegrator(const std::string& s);
+
+struct Axis {
+  std::string name;  // "mu" or "roughness"
+  int size = 32;
+  double min = 0, max = 1;
+  Warp warp = Warp::kLinear;
+  Placement placement = Placement::kEdges;
+
+  // SPEC.md section 4: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
+  // value = min + (max - min) w(t).
+  double Value(int i) const;
+  std::string ToJson() const;
+};
+
+struct BakeSpec {
+  TableKind table = TableKind::kE;
+  ModelParams model;  // ggx, beckmann or std; alpha comes from the roughness axis
+  Masking masking = Masking::kHeightCorrelated;
+  IntegratorKind integrator = IntegratorKind::kQuadrature;
+  int samples = 0;  // max nodes per dimension (quadrature) or samples per texel; 0 = default
+  double tolerance = 1e-8;  // quadrature: stop refining when two rules agree to this
+  uint64_t seed = 1;
+  Axis mu{"mu", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
+  Axis roughness{"roughness", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
+  bool complement = false;     // store 1 - E instead of E (E table only)
+  bool error_channel = false;  // add a per-texel "error" channel
+  bool half = false;           // half pixels (default float)
+  int threads = 0;             // 0 = all cores
+
+  // Default samples for the integrator (the value used when samples == 0).
+  int EffectiveSamples() const;
+};
+
+// Throws std::invalid_argument (one line, naming the bad input).
+void ValidateBakeSpec(const BakeSpec& spec);
+
+struct Channel {
+  std::string name;     // EXR channel name
+  std::string meaning;  // E, 1-E, E_avg, dfg.scale, dfg.bias, error
+  std::vector<double> values;
+};
+
+struct Table {
+  BakeSpec spec;
+  std::vector<Axis> axes;  // fastest varying first
+  int width = 0, height = 0;
+  std::vector<Channel> channels;
+  double max_abs_error = 0;   // largest estimated error of any stored value
+  double seconds = 0;         // wall time of the bake
+  std::string integrator_json;
+};
+
+// Progress callback: done, total (texels or rows).
+using ProgressFn = std::function<void(int64_t done, int64_t total)>;
+
+Table Bake(const BakeSpec& spec, const ProgressFn& progress = nullptr);
+
+// One texel of the E / dfg tables with the spec's model, masking and
+// integrator: E, dfg.scale and dfg.bias at (roughness, mu), and the
+// integrator's own error estimate of each.
+struct TexelEstimate {
+  double e = 0, scale = 0, bias = 0;
+  double err_e = 0, err_scale = 0, err_bias = 0;
+};
+TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
+                             uint64_t texel_seed = 0);
+
+// Writes `table` as a self-describing OpenEXR file (SPEC.md section 4): to a
+// temporary file beside `path`, then renamed. Throws std::runtime_error.
+void WriteExr(const Table& table, const std::string& path);
+
+// Reads back a brdfbake EXR: every string attribute and every channel.
+struct ExrContents {
+  int width = 0, height = 0;
+  std::vector<std::pair<std::string, std::string>> attributes;
+  std::vector<std::pair<std::string, std::vector<float>>> channels;
+  bool half = false;
+  std::string Attribute(const std::string& name) const;
+  const std::vector<float>* ChannelData(const std::string& name) const;
+};
+ExrContents ReadExr(const std::string& path);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_BAKE_H_

@@ -1,0 +1,201 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Tests of the squared ellipsoidal lobe (seed 002): its isotropic case
+// against GGX, its geometric definition (the squared distance from the origin
+// to an ellipsoid), and its frame convention.
+
+#include "brdfbake/sel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "brdfbake/ggx.h"
+#include "test_util.h"
+
+namespace brdfbake {
+namespace {
+
+using test::Dir;
+
+double RelDiff(double a, double b) {
+  if (a == b) return 0;
+  return std::abs(a - b) / std::max(std::abs(a), std::abs(b));
+}
+
+// Uniform random direction on the sphere.
+Dir RandomDir(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  return FromMuPhi(2.0 * uni(rng) - 1.0, 2.0 * kPi<double> * uni(rng));
+}
+
+// Random rotation Q = Rx Ry Rz with uniform angles.
+Mat3<double> RandomRotation(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> ang(-kPi<double>, kPi<double>);
+  return Mat3<double>::RotX(ang(rng)) * Mat3<double>::RotY(ang(rng)) *
+         Mat3<double>::RotZ(ang(rng));
+}
+
+// Seed 002 section 1: the written-out SSL is pi alpha^2 D_GGX(cos(theta/2)),
+// with D_GGX evaluated by the library's GGX (slope form, seed 004 eq. 3).
+// The inputs are chosen so that both sides see the same angle exactly:
+// sin^2(theta/2) = s2 is dyadic, so cos(theta) = 1 - 2 s2 is exact (a
+// rounded cos(theta) would limit the agreement to eps / alpha^2).
+TEST(SelTest, SquaredSpheroidalLobeEqualsScaledGgxAtHalfAngle) {
+  double max_err = 0;
+  for (double alpha : {1e-3, 0.01, 0.05, 0.2, 0.5, 1.0}) {
+    const GgxNdf<double> ggx(alpha);
+    for (double s2 : {0.0, 0x1p-30, 0x1p-20, 0x1p-12, 0x1p-6, 0.25, 0.5, 0.75,
+                      1.0 - 0x1p-10}) {
+      const Dir half(std::sqrt(s2), 0.0, std::sqrt(1.0 - s2));
+      const double want = kPi<double> * alpha * alpha * ggx.D(half);
+      const double got = SquaredSpheroidalLobe(alpha, 1.0 - 2.0 * s2);
+      max_err = std::max(max_err, RelDiff(got, want));
+      EXPECT_LE(RelDiff(got, want), 1e-12) << "alpha=" << alpha << " s2=" << s2;
+    }
+    EXPECT_DOUBLE_EQ(SquaredSpheroidalLobe(alpha, 1.0), 1.0);
+    EXPECT_NEAR(SquaredSpheroidalLobe(alpha, -1.0), std::pow(alpha, 4), 1e-15);
+  }
+  std::printf("SSL vs pi a^2 D_GGX(cos(theta/2)): max relative error %.2e\n", max_err);
+  // alpha is clamped like every model's: no 0/0 at alpha = 0.
+  EXPECT_DOUBLE_EQ(SquaredSpheroidalLobe(0.0, 1.0), 1.0);
+}
+
+// alpha_x = alpha_y: the SEL is the SSL of the angle to the lobe axis.
+TEST(SelTest, IsotropicEqualsSquaredSpheroidalLobe) {
+  std::mt19937_64 rng(1);
+  double max_err = 0;
+  for (double alpha : {0.05, 0.1, 0.3, 0.6, 1.0}) {
+    for (int q = 0; q < 5; ++q) {
+      const SelLobe<double> lobe(alpha, alpha, RandomRotation(rng));
+      for (int i = 0; i < 400; ++i) {
+        // Half uniform, half within a few alpha of the axis.
+        Dir w = RandomDir(rng);
+        if (i % 2) w = Normalize(lobe.Axis() + w * (3.0 * alpha * std::abs(w.z)));
+        const double cos_theta = (lobe.q() * w).z;
+        const double err =
+            RelDiff(lobe.K(w), SquaredSpheroidalLobe(alpha, cos_theta));
+        max_err = std::max(max_err, err);
+        EXPECT_LE(err, 1e-12) << "alpha=" << alpha;
+      }
+    }
+  }
+  std::printf("SEL(alpha, alpha) vs SSL: max relative error %.2e\n", max_err);
+}
+
+// On the axis K = 1; opposite it K = amax^4; in between 0 < K <= 1 (for
+// alphas in the seed's range [0, 1]).
+TEST(SelTest, RangeAndAxisValues) {
+  std::mt19937_64 rng(2);
+  const double alphas[][2] = {{0.3, 0.05}, {0.05, 0.8}, {1.0, 0.2},
+                              {0.02, 0.02}, {1e-4, 0.1}, {0.5, 5e-4}};
+  for (const auto& a : alphas) {
+    for (int q = 0; q < 4; ++q) {
+      const SelLobe<double> lobe(a[0], a[1], RandomRotation(rng));
+      const double amax = std::max(a[0], a[1]);
+      EXPECT_NEAR(lobe.K(lobe.Axis()), 1.0, 1e-14);
+      EXPECT_LE(RelDiff(lobe.K(-lobe.Axis()), std::pow(amax, 4)), 1e-13);
+      for (int i = 0; i < 2000; ++i) {
+        const double k = lobe.K(RandomDir(rng));
+        ASSERT_GT(k, 0.0);
+        ASSERT_LE(k, 1.0);
+      }
+    }
+  }
+}
+
+// K(w; Q) = K(Q w; I), and FromAngles builds Q = Rx Ry Rz.
+TEST(SelTest, RotationEquivariance) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> ang(-kPi<double>, kPi<double>);
+  for (int q = 0; q < 20; ++q) {
+    const double tx = ang(rng), ty = ang(rng), tz = ang(rng);
+    const SelLobe<double> rotated = SelLobe<double>::FromAngles(0.4, 0.07, tx, ty, tz);
+    const Mat3<double> qm =
+        Mat3<double>::RotX(tx) * Mat3<double>::RotY(ty) * Mat3<double>::RotZ(tz);
+    const SelLobe<double> unrotated(0.4, 0.07, Mat3<double>());
+    for (int i = 0; i < 200; ++i) {
+      const Dir w = RandomDir(rng);
+      EXPECT_LE(RelDiff(rotated.K(w), unrotated.K(qm * w)), 1e-14);
+    }
+    // The lobe axis is Q^T z.
+    EXPECT_NEAR(Length(rotated.Axis() - qm.Transposed() * Dir(0, 0, 1)), 0.0, 1e-15);
+  }
+  // Convention spelled out: a positive theta_y turns the axis towards -x
+  // (Ry^T z = (-sin, 0, cos)), and alpha_x stays along the first row of Q.
+  const SelLobe<double> tilted = SelLobe<double>::FromAngles(0.3, 0.1, 0.0, 0.5, 0.0);
+  EXPECT_NEAR(tilted.K(Dir(-std::sin(0.5), 0.0, std::cos(0.5))), 1.0, 1e-14);
+  const SelLobe<double> plain(0.3, 0.1, Mat3<double>());
+  const Dir wx = FromMuPhi(0.9, 0.0), wy = FromMuPhi(0.9, 0.5 * kPi<double>);
+  EXPECT_GT(plain.K(wx), plain.K(wy));  // wider along x (alpha_x > alpha_y)
+}
+
+// Seed 002 section 2 from the definition: sqrt(K(w)) v lies on the ellipsoid
+// with centre c = (0, 0, (1 - amax^2) / 2) and semi-axes
+// r = (alpha_x, alpha_y, (1 + amax^2) / 2) in lobe space.
+TEST(SelTest, PointLiesOnTheEllipsoid) {
+  std::mt19937_64 rng(4);
+  const double alphas[][2] = {{0.3, 0.05}, {0.05, 0.8}, {1.0, 0.2}, {0.02, 0.02},
+                              {0.7, 0.7},  {1e-3, 0.5}, {0.25, 0.6}};
+  double max_err = 0;
+  for (const auto& a : alphas) {
+    const double amax = std::max(a[0], a[1]);
+    const double cz = 0.5 * (1.0 - amax * amax), rz = 0.5 * (1.0 + amax * amax);
+    for (int q = 0; q < 4; ++q) {
+      const Mat3<double> qm = RandomRotation(rng);
+      const SelLobe<double> lobe(a[0], a[1], qm);
+      for (int i = 0; i < 1000; ++i) {
+        const Dir w = RandomDir(rng);
+        const Dir p = (qm * w) * std::sqrt(lobe.K(w));
+        const double ex = p.x / a[0], ey = p.y / a[1], ez = (p.z - cz) / rz;
+        const double f = ex * ex + ey * ey + ez * ez;
+        max_err = std::max(max_err, std::abs(f - 1.0));
+        EXPECT_NEAR(f, 1.0, 1e-12) << a[0] << " " << a[1];
+      }
+    }
+  }
+  std::printf("SEL ellipsoid implicit equation: max |f - 1| = %.2e\n", max_err);
+}
+
+// Float instantiations stay close to the double ones, with no NaN or Inf even
+// for alpha = 1e-4 and 1000:1 anisotropy.
+TEST(SelTest, FloatMatchesDoubleAndIsFinite) {
+  std::mt19937_64 rng(5);
+  const double alphas[][2] = {{0.3, 0.05}, {1e-4, 1e-4}, {0.5, 5e-4}, {1.0, 1.0}};
+  double max_err = 0;
+  for (const auto& a : alphas) {
+    const Mat3<double> qd = RandomRotation(rng);
+    Mat3<float> qf;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) qf.m[i][j] = static_cast<float>(qd.m[i][j]);
+    const SelLobe<double> ld(a[0], a[1], qd);
+    const SelLobe<float> lf(static_cast<float>(a[0]), static_cast<float>(a[1]), qf);
+    for (int i = 0; i < 2000; ++i) {
+      const Vec3<float> wf(RandomDir(rng));
+      const float kf = lf.K(wf);
+      ASSERT_TRUE(std::isfinite(kf));
+      ASSERT_GT(kf, 0.0f);
+      ASSERT_LE(kf, 1.0f + 1e-6f);  // w and Q w are unit only to float rounding
+      // Compare at the float inputs (Q rounded too), so only float
+      // arithmetic inside K is measured.
+      Mat3<double> qfd;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) qfd.m[r][c] = qf.m[r][c];
+      const SelLobe<double> ref(static_cast<float>(a[0]), static_cast<float>(a[1]), qfd);
+      const double err = RelDiff(kf, ref.K(Dir(wf)));
+      if (a[0] >= 1e-3 && a[1] >= 1e-3) max_err = std::max(max_err, err);
+    }
+    const float ssl = SquaredSpheroidalLobe(static_cast<float>(a[0]), 0.3f);
+    EXPECT_LE(RelDiff(ssl, SquaredSpheroidalLobe(static_cast<double>(static_cast<float>(a[0])),
+                                                 static_cast<double>(0.3f))),
+              1e-5);
+  }
+  std::printf("SEL float vs double: max relative error %.2e\n", max_err);
+  EXPECT_LE(max_err, 1e-5);
+}
+
+}  // namespace
+}  // namespace brdfbake
