@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -150,6 +151,14 @@ TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t te
       return QmcTexel(ndf, mu, spec.masking, n, texel_seed, true);
     case IntegratorKind::kEngine: {
       const QuadratureResult r = EngineRule(ndf, mu, spec.masking, n);
+      if (!spec.estimate_error) {
+        TexelValue v;
+        v.e = r.e;
+        v.bias = r.fc;
+        v.scale = r.e - r.fc;
+        v.err_e = v.err_bias = v.err_scale = std::numeric_limits<double>::infinity();
+        return v;
+      }
       const TexelValue ref = QuadratureTexel(ndf, mu, spec.masking, 512, 1e-10);
       TexelValue v;
       v.e = r.e;
@@ -192,7 +201,7 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["max_nodes_per_dimension"] = n;
       j["tolerance"] = spec.tolerance;
       j["domain"] = "visible-normal sampler's unit square, split where wi crosses the horizon";
-      j["rule"] = "Gauss-Legendre (trapezoidal in a periodic azimuth), node ladder 12..max until two successive rules agree to the tolerance";
+      j["rule"] = "Gauss-Legendre (trapezoidal in a periodic azimuth), node ladder 12, 24, 48, ... (doubling) up to the max until two successive rules agree to the tolerance";
       j["error_estimate"] = "difference between the last two rules of the ladder";
       break;
     case IntegratorKind::kQmc:
@@ -310,6 +319,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     for (double e : error) t.max_abs_error = std::max(t.max_abs_error, e);
     if (spec.error_channel) t.channels.push_back({"error", "error", error});
   }
+  t.integration_error = t.max_abs_error;
   // Storing the values adds the rounding error of the pixel type.
   double max_value = 0;
   for (const Channel& c : t.channels) {

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/grid.h"
 #include "brdfbake/version.h"
 
 namespace brdfbake {
@@ -78,6 +79,33 @@ void WriteExr(const Table& table, const std::string& path) {
     Imf::OutputFile file(tmp.c_str(), header);
     file.setFrameBuffer(fb);
     file.writePixels(table.height);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + e.what());
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+}
+
+void WriteImageExr(const std::string& path, int width, int height,
+                   const std::vector<std::pair<std::string, const std::vector<float>*>>& channels,
+                   const std::vector<std::pair<std::string, std::string>>& attributes) {
+  Imf::Header header(width, height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const auto& kv : attributes) header.insert(kv.first, Imf::StringAttribute(kv.second));
+  Imf::FrameBuffer fb;
+  for (const auto& c : channels) {
+    header.channels().insert(c.first, Imf::Channel(Imf::FLOAT));
+    fb.insert(c.first, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.second->data())),
+                                  sizeof(float), sizeof(float) * width));
+  }
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  try {
+    Imf::OutputFile file(tmp.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(height);
   } catch (const std::exception& e) {
     std::remove(tmp.c_str());
     throw std::runtime_error("cannot write '" + path + "': " + e.what());

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include <chrono>
+#include <filesystem>
 #include <mutex>
 
 #include <unistd.h>
@@ -22,8 +23,11 @@
 #include <CLI/CLI.hpp>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/batch.h"
 #include "brdfbake/eval.h"
+#include "brdfbake/grid.h"
 #include "brdfbake/model.h"
+#include "brdfbake/report.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/version.h"
 
@@ -163,11 +167,11 @@ struct BakeOptions {
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
   std::string pixel = "float", output;
   int samples = 0, threads = 0;
-  double tolerance = 1e-8;
+  double tolerance = brdfbake::BakeSpec().tolerance;
   uint64_t seed = 1;
   bool complement = false, error_channel = false;
 
-  void Add(CLI::App* app) {
+  void Add(CLI::App* app, bool for_report = false) {
     app->add_option("--table,-t", table, "E | E_avg | dfg")->required();
     app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
     app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]")->capture_default_str();
@@ -178,15 +182,19 @@ struct BakeOptions {
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
+    app->add_option("--threads", threads, "worker threads; 0 = all cores")->capture_default_str();
+    app->add_option("--seed", seed, "seed of the randomized integrators")->capture_default_str();
+    if (for_report) {
+      app->add_option("-o,--output", output, "output directory (created if missing)")->required();
+      return;
+    }
     app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
-    app->add_option("--samples", samples, "nodes per dimension (quadrature) or samples per texel; 0 = default");
+    app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
         ->capture_default_str();
-    app->add_option("--seed", seed, "seed of the randomized integrators")->capture_default_str();
     app->add_option("--pixel", pixel, "float | half")->capture_default_str();
     app->add_flag("--complement", complement, "store 1-E instead of E (E table)");
     app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
-    app->add_option("--threads", threads, "worker threads; 0 = all cores")->capture_default_str();
     app->add_option("-o,--output", output, "output .exr file")->required();
   }
 
@@ -302,11 +310,35 @@ int main(int argc, char** argv) {
   eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str();
   eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf)")->capture_default_str();
   eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
+  std::string grid_kind, grid_out, target = "best";
+  int grid_w = 256, grid_h = 256, grid_threads = 0;
+  eval->add_option("--grid", grid_kind,
+                   "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
+                   "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");
+  eval->add_option("--width", grid_w, "grid width")->capture_default_str();
+  eval->add_option("--height", grid_h, "grid height")->capture_default_str();
+  eval->add_option("--threads", grid_threads, "grid: worker threads; 0 = all cores")->capture_default_str();
+  eval->add_option("-o,--output", grid_out, "grid: output .exr file");
+  eval->add_option("--target", target, "force a SIMD target (AVX3, AVX2, SSE4, SSSE3, SCALAR, or best)")
+      ->capture_default_str();
 
   CLI::App* bake = app.add_subcommand(
       "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing OpenEXR file.");
   BakeOptions bake_opts;
   bake_opts.Add(bake);
+
+  CLI::App* report = app.add_subcommand(
+      "report", "Error against run time of every integrator over a ladder of budgets, and the "
+                "interpolation error against table size: CSV and SVG plots in a directory.");
+  BakeOptions report_opts;
+  report_opts.size = "16x16";
+  report_opts.Add(report, true);
+  int repeats = 3;
+  double reference_tolerance = 1e-11;
+  report->add_option("--repeats", repeats, "timing: median of this many bakes")->capture_default_str();
+  report->add_option("--reference-tolerance", reference_tolerance,
+                     "tolerance of the converged quadrature used as the reference")
+      ->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -336,7 +368,57 @@ int main(int argc, char** argv) {
                   table.width, table.height, brdfbake::IntegratorName(spec.integrator),
                   table.seconds, table.max_abs_error);
     }
-    if (*eval) {
+    if (*report) {
+      brdfbake::ReportSpec rs;
+      rs.table = report_opts.Get();
+      rs.repeats = repeats;
+      if (!(reference_tolerance > 0) || !std::isfinite(reference_tolerance)) {
+        throw std::invalid_argument("--reference-tolerance must be a finite number > 0");
+      }
+      rs.reference_tolerance = reference_tolerance;
+      if (rs.repeats < 1 || rs.repeats > 100) throw std::invalid_argument("--repeats must be in [1, 100]");
+      std::error_code ec;
+      std::filesystem::create_directories(report_opts.output, ec);
+      if (ec || !std::filesystem::is_directory(report_opts.output)) {
+        throw std::invalid_argument("-o: cannot create directory '" + report_opts.output + "'");
+      }
+      const brdfbake::Report r = brdfbake::RunReport(
+          rs, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+      brdfbake::WriteReport(r, report_opts.output);
+      std::printf("wrote %s/report.csv, report.svg, interpolation.csv, interpolation.svg\n",
+                  report_opts.output.c_str());
+    }
+    if (*eval && !grid_kind.empty()) {
+      brdfbake::ForceTarget(target);
+      brdfbake::GridRequest gr;
+      gr.model = model_opts.Get();
+      gr.fresnel = fresnel_opts.Get();
+      gr.masking = ParseMasking(masking);
+      gr.kind = brdfbake::ParseGridKind(grid_kind);
+      gr.width = grid_w;
+      gr.height = grid_h;
+      gr.threads = grid_threads;
+      gr.mu_o = req.mu_o;
+      gr.phi_o = phi_o_deg * 3.14159265358979323846 / 180.0;
+      if (grid_out.empty()) throw std::invalid_argument("-o: --grid writes an EXR file; name it with -o");
+      const auto start = std::chrono::steady_clock::now();
+      const brdfbake::Grid g = brdfbake::EvalGrid(gr);
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const char* names[] = {"f", "f_cos", "G1"};
+      const std::string channel = names[static_cast<int>(gr.kind)];
+      brdfbake::WriteImageExr(
+          grid_out, g.width, g.height, {{channel, &g.values}},
+          {{"brdfbake.version", BRDFBAKE_VERSION},
+           {"brdfbake.grid", brdfbake::GridKindName(gr.kind)},
+           {"brdfbake.model", gr.model.ToJson()},
+           {"brdfbake.masking", brdfbake::MaskingName(gr.masking)},
+           {"brdfbake.fresnel", gr.fresnel.Name()},
+           {"brdfbake.evaluated_by", g.path}});
+      std::printf("wrote %s: %s grid %dx%d of %s in %.3f s (%s)\n", grid_out.c_str(),
+                  brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name.c_str(), secs,
+                  g.path.c_str());
+    } else if (*eval) {
+      if (target != "best") brdfbake::ForceTarget(target);
       req.model = model_opts.Get();
       req.fresnel = fresnel_opts.Get();
       req.masking = ParseMasking(masking);

@@ -65,7 +65,9 @@ struct BakeSpec {
   Masking masking = Masking::kHeightCorrelated;
   IntegratorKind integrator = IntegratorKind::kQuadrature;
   int samples = 0;  // max nodes per dimension (quadrature) or samples per texel; 0 = default
-  double tolerance = 1e-8;  // quadrature: stop refining when two rules agree to this
+  // quadrature: stop refining when two rules agree to this. 1e-7 is the
+  // precision of the float pixels the tables are stored in.
+  double tolerance = 1e-7;
   uint64_t seed = 1;
   Axis mu{"mu", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   Axis roughness{"roughness", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
@@ -73,6 +75,7 @@ struct BakeSpec {
   bool error_channel = false;  // add a per-texel "error" channel
   bool half = false;           // half pixels (default float)
   int threads = 0;             // 0 = all cores
+  bool estimate_error = true;  // engine: measure the error against the quadrature
 
   // Default samples for the integrator (the value used when samples == 0).
   int EffectiveSamples() const;
@@ -93,6 +96,7 @@ struct Table {
   int width = 0, height = 0;
   std::vector<Channel> channels;
   double max_abs_error = 0;   // largest estimated error of any stored value
+  double integration_error = 0;  // the same before rounding to the pixel type
   double seconds = 0;         // wall time of the bake
   std::string integrator_json;
 };

@@ -1,0 +1,72 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// `brdfbake report`: error against run time for every integrator over a
+// ladder of budgets, measured against a converged reference the report
+// computes itself, and the interpolation error of bilinear lookup over a
+// ladder of table sizes.
+
+#ifndef BRDFBAKE_REPORT_H_
+#define BRDFBAKE_REPORT_H_
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "brdfbake/bake.h"
+
+namespace brdfbake {
+
+struct ReportSpec {
+  BakeSpec table;          // table kind, model, masking, size, placement, warp
+  int repeats = 3;         // timing: median of this many bakes
+  double reference_tolerance = 1e-11;
+  std::vector<int> interpolation_sizes = {4, 8, 16, 32, 64};
+  int interpolation_probes = 16;  // per axis, cell midpoints checked (at most)
+};
+
+struct ReportRow {
+  std::string integrator;
+  std::string budget_name;  // "tolerance", "samples"
+  double budget = 0;
+  double seconds_median = 0, seconds_min = 0;
+  double max_abs_error = 0, rms_error = 0;
+  double claimed_max_error = 0;  // the integrator's own estimate
+};
+
+struct InterpolationRow {
+  int size = 0;  // entries per axis
+  double max_abs_error = 0, rms_error = 0;
+  double max_abs_error_inner = 0;  // without the cells touching mu = mu_min
+  int probes = 0;
+  double bake_seconds = 0;
+};
+
+struct Report {
+  ReportSpec spec;
+  double reference_seconds = 0;
+  double reference_claimed_error = 0;
+  std::vector<ReportRow> rows;
+  std::vector<InterpolationRow> interpolation;
+};
+
+using ReportLog = std::function<void(const std::string&)>;
+
+Report RunReport(const ReportSpec& spec, const ReportLog& log = nullptr);
+
+// Writes DIR/report.csv, DIR/report.svg, DIR/interpolation.csv and
+// DIR/interpolation.svg (each through a temporary file and a rename).
+void WriteReport(const Report& report, const std::string& dir);
+
+// The SVG plots alone (exposed for tests).
+struct Series {
+  std::string name;
+  std::vector<double> x, y;
+};
+std::string LogLogSvg(const std::string& title, const std::string& x_label,
+                      const std::string& y_label, const std::vector<Series>& series,
+                      const std::string& footnote);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_REPORT_H_

@@ -1,0 +1,150 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "brdfbake/grid.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "brdfbake/batch.h"
+
+namespace brdfbake {
+
+GridKind ParseGridKind(const std::string& s) {
+  if (s == "slice") return GridKind::kSlice;
+  if (s == "hemisphere") return GridKind::kHemisphere;
+  if (s == "g1") return GridKind::kG1;
+  throw std::invalid_argument("--grid: unknown grid '" + s + "' (expected slice, hemisphere or g1)");
+}
+
+const char* GridKindName(GridKind k) {
+  switch (k) {
+    case GridKind::kSlice: return "slice";
+    case GridKind::kHemisphere: return "hemisphere";
+    case GridKind::kG1: return "g1";
+  }
+  return "slice";
+}
+
+void ValidateGridRequest(const GridRequest& req) {
+  ValidateModelParams(req.model);
+  if (req.model.name == "sel") throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
+  if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
+    throw std::invalid_argument("--width/--height must be in [1, 16384]");
+  }
+  if (!(req.mu_o > 0) || req.mu_o > 1) throw std::invalid_argument("--mu-o must lie in (0, 1]");
+  if (req.threads < 0) throw std::invalid_argument("--threads must be >= 0");
+}
+
+namespace {
+
+// The directions of one row, as SoA.
+struct RowDirs {
+  std::vector<float> ix, iy, iz, ox, oy, oz;
+  std::vector<char> inside;
+  explicit RowDirs(int n) : ix(n), iy(n), iz(n), ox(n), oy(n), oz(n), inside(n, 1) {}
+  void Set(int x, const Vec3<double>& wi, const Vec3<double>& wo) {
+    ix[x] = float(wi.x); iy[x] = float(wi.y); iz[x] = float(wi.z);
+    ox[x] = float(wo.x); oy[x] = float(wo.y); oz[x] = float(wo.z);
+  }
+};
+
+RowDirs MakeRow(const GridRequest& req, int y) {
+  const int w = req.width;
+  RowDirs r(w);
+  const double half_pi = 1.5707963267948966;
+  if (req.kind == GridKind::kSlice) {
+    const double td = (y + 0.5) / req.height * half_pi;
+    // Difference vector at phi_d = 90 degrees, in the half-vector frame.
+    const Vec3<double> d(0.0, std::sin(td), std::cos(td));
+    for (int x = 0; x < w; ++x) {
+      const double th = (x + 0.5) / w * half_pi;
+      const double c = std::cos(th), s = std::sin(th);
+      // Rotate about y by theta_h (phi_h = 0).
+      auto rot = [&](const Vec3<double>& v) {
+        return Vec3<double>(c * v.x + s * v.z, v.y, -s * v.x + c * v.z);
+      };
+      r.Set(x, rot(d), rot(Vec3<double>(-d.x, -d.y, d.z)));
+    }
+  } else if (req.kind == GridKind::kHemisphere) {
+    const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
+    const double v = 1.0 - 2.0 * (y + 0.5) / req.height;
+    for (int x = 0; x < w; ++x) {
+      const double u = 2.0 * (x + 0.5) / w - 1.0;
+      const double z2 = 1.0 - u * u - v * v;
+      r.inside[x] = z2 > 0;
+      r.Set(x, Vec3<double>(u, v, std::sqrt(std::max(0.0, z2))), wo);
+    }
+  } else {
+    for (int x = 0; x < w; ++x) {
+      r.Set(x, FromMuPhi((x + 0.5) / w, 0.0), Vec3<double>(0, 0, 1));
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+Grid EvalGrid(const GridRequest& req) {
+  ValidateGridRequest(req);
+  std::unique_ptr<tbb::global_control> limit;
+  if (req.threads > 0) {
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  req.threads);
+  }
+  Grid g;
+  g.width = req.width;
+  g.height = req.height;
+  g.values.assign(size_t(req.width) * req.height, 0.0f);
+  const bool simd = req.model.name == "ggx" &&
+                    (req.fresnel.kind == FresnelKind::kOne ||
+                     (req.fresnel.kind == FresnelKind::kSchlick && req.fresnel.IsGrey()));
+  g.path = simd ? "simd:" + BatchTarget() : "scalar";
+  const std::unique_ptr<Model> model = simd ? nullptr : MakeModel(req.model);
+  tbb::parallel_for(0, req.height, [&](int y) {
+    const RowDirs r = MakeRow(req, y);
+    float* out = g.values.data() + size_t(y) * req.width;
+    if (req.kind == GridKind::kG1) {
+      const double rough = (y + 0.5) / req.height;
+      if (simd) {
+        GgxBatchParams p;
+        p.alpha_x = p.alpha_y = float(rough * rough);
+        GgxLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        for (int x = 0; x < req.width; ++x) out[x] = 1.0f / (1.0f + out[x]);
+      } else {
+        ModelParams mp = req.model;
+        mp.alpha_x = mp.alpha_y = std::max(rough * rough, 1e-4);
+        const std::unique_ptr<Model> m = MakeModel(mp);
+        for (int x = 0; x < req.width; ++x) {
+          out[x] = float(m->G1(Vec3<double>(r.ix[x], r.iy[x], r.iz[x])));
+        }
+      }
+      return;
+    }
+    if (simd) {
+      GgxBatchParams p;
+      p.alpha_x = float(req.model.alpha_x);
+      p.alpha_y = float(req.model.alpha_y);
+      p.f0 = req.fresnel.kind == FresnelKind::kOne ? 1.0f : float(req.fresnel.f0[0]);
+      p.masking = req.masking;
+      GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+                   r.oz.data(), out, req.width);
+    } else {
+      for (int x = 0; x < req.width; ++x) {
+        out[x] = float(model->Brdf(Vec3<double>(r.ix[x], r.iy[x], r.iz[x]),
+                                   Vec3<double>(r.ox[x], r.oy[x], r.oz[x]), req.fresnel,
+                                   req.masking, 0));
+      }
+    }
+    if (req.kind == GridKind::kHemisphere) {
+      for (int x = 0; x < req.width; ++x) out[x] = r.inside[x] ? out[x] * r.iz[x] : 0.0f;
+    }
+  });
+  return g;
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,388 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "brdfbake/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <tbb/parallel_for.h>
+
+namespace brdfbake {
+namespace {
+
+// Largest and RMS difference over every value channel (not "error").
+void CompareTables(const Table& t, const Table& ref, double* max_err, double* rms) {
+  double m = 0, s = 0;
+  size_t n = 0;
+  for (size_t c = 0; c < t.channels.size(); ++c) {
+    if (t.channels[c].meaning == "error") continue;
+    for (size_t i = 0; i < t.channels[c].values.size(); ++i) {
+      const double d = t.channels[c].values[i] - ref.channels[c].values[i];
+      m = std::max(m, std::abs(d));
+      s += d * d;
+      ++n;
+    }
+  }
+  *max_err = m;
+  *rms = n ? std::sqrt(s / n) : 0.0;
+}
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The parameter value at a fractional index (the same map as Axis::Value).
+double AxisValueAt(const Axis& a, double fi) {
+  double t = a.placement == Placement::kCenters ? (fi + 0.5) / a.size
+                                                 : (a.size == 1 ? 0.0 : fi / (a.size - 1));
+  double w = t;
+  if (a.warp == Warp::kSquare) w = t * t;
+  if (a.warp == Warp::kSqrt) w = std::sqrt(t);
+  return a.min + (a.max - a.min) * w;
+}
+
+void WriteAtomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw std::runtime_error("cannot write '" + path + "'");
+    }
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+}
+
+std::string Num(double v, const char* fmt = "%.6g") {
+  char buf[64];
+  std::snprintf(buf, sizeof(buf), fmt, v);
+  return buf;
+}
+
+}  // namespace
+
+Report RunReport(const ReportSpec& spec, const ReportLog& log) {
+  ValidateBakeSpec(spec.table);
+  if (spec.repeats < 1 || spec.repeats > 100) {
+    throw std::invalid_argument("--repeats must be in [1, 100]");
+  }
+  auto say = [&](const std::string& s) {
+    if (log) log(s);
+  };
+  Report report;
+  report.spec = spec;
+
+  // The converged reference.
+  BakeSpec ref_spec = spec.table;
+  ref_spec.integrator = IntegratorKind::kQuadrature;
+  ref_spec.tolerance = spec.reference_tolerance;
+  ref_spec.samples = 2048;
+  ref_spec.error_channel = false;
+  ref_spec.complement = false;
+  say("reference: quadrature, tolerance " + Num(spec.reference_tolerance));
+  const Table ref = Bake(ref_spec);
+  report.reference_seconds = ref.seconds;
+  report.reference_claimed_error = ref.integration_error;
+
+  struct Ladder {
+    IntegratorKind kind;
+    const char* budget_name;
+    std::vector<double> budgets;
+  };
+  const std::vector<Ladder> ladders = {
+      {IntegratorKind::kQuadrature, "tolerance", {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8}},
+      {IntegratorKind::kQmc, "samples", {64, 256, 1024, 4096, 16384}},
+      {IntegratorKind::kMc, "samples", {64, 256, 1024, 4096, 16384}},
+      {IntegratorKind::kEngine, "samples", {64, 256, 1024, 4096}},
+  };
+  for (const Ladder& ladder : ladders) {
+    for (double budget : ladder.budgets) {
+      BakeSpec s = spec.table;
+      s.integrator = ladder.kind;
+      s.error_channel = false;
+      s.complement = false;
+      if (ladder.kind == IntegratorKind::kQuadrature) {
+        s.tolerance = budget;
+        s.samples = 0;
+      } else {
+        s.samples = static_cast<int>(budget);
+      }
+      // Timed runs: the engine's error measurement (a quadrature) is not part
+      // of what an engine bake costs, so it is timed without it.
+      s.estimate_error = ladder.kind != IntegratorKind::kEngine;
+      std::vector<double> times;
+      Table t;
+      for (int r = 0; r < spec.repeats; ++r) {
+        t = Bake(s);
+        times.push_back(t.seconds);
+      }
+      ReportRow row;
+      row.integrator = IntegratorName(ladder.kind);
+      row.budget_name = ladder.budget_name;
+      row.budget = budget;
+      row.seconds_median = Median(times);
+      row.seconds_min = *std::min_element(times.begin(), times.end());
+      CompareTables(t, ref, &row.max_abs_error, &row.rms_error);
+      if (ladder.kind == IntegratorKind::kEngine) {
+        s.estimate_error = true;
+        row.claimed_max_error = Bake(s).integration_error;
+      } else {
+        row.claimed_max_error = t.integration_error;
+      }
+      say(row.integrator + " " + row.budget_name + "=" + Num(budget) + ": " +
+          Num(row.seconds_median, "%.3g") + " s, max error " + Num(row.max_abs_error, "%.2e") +
+          " (claimed " + Num(row.claimed_max_error, "%.2e") + ")");
+      report.rows.push_back(row);
+    }
+  }
+
+  // Interpolation error of bilinear (or linear, for E_avg) lookup at cell
+  // midpoints, against the converged integrator at those points.
+  const bool one_d = spec.table.table == TableKind::kEavg;
+  for (int n : spec.interpolation_sizes) {
+    BakeSpec s = spec.table;
+    s.integrator = IntegratorKind::kQuadrature;
+    s.tolerance = std::min(s.tolerance, 1e-8);
+    s.samples = 0;
+    s.error_channel = false;
+    s.complement = false;
+    s.roughness.size = n;
+    if (!one_d) s.mu.size = n;
+    if ((s.roughness.placement == Placement::kEdges && n < 2) || n < 1) continue;
+    const Table t = Bake(s);
+    const int cells_r = s.roughness.placement == Placement::kEdges ? n - 1 : n - 1;
+    const int cells_m = one_d ? 1 : (s.mu.placement == Placement::kEdges ? n - 1 : n - 1);
+    if (cells_r < 1 || cells_m < 1) continue;
+    const int pr = std::min(cells_r, spec.interpolation_probes);
+    const int pm = one_d ? 1 : std::min(cells_m, spec.interpolation_probes);
+    // Exact values at the probe points, computed in parallel; the reduction
+    // below is serial so the result does not depend on the thread count.
+    struct Probe {
+      int cr, cm;
+      std::vector<double> exact;
+    };
+    std::vector<Probe> probes(static_cast<size_t>(pr) * pm);
+    tbb::parallel_for(0, pr * pm, [&](int k) {
+      const int a = k / pm, b = k % pm;
+      Probe& p = probes[k];
+      p.cr = (a * cells_r) / pr;
+      p.cm = one_d ? 0 : (b * cells_m) / pm;
+      const double r = AxisValueAt(s.roughness, p.cr + 0.5);
+      if (one_d) {
+        BakeSpec one = s;
+        one.roughness.size = 1;
+        one.roughness.placement = Placement::kCenters;
+        one.roughness.min = one.roughness.max = r;
+        one.roughness.warp = Warp::kLinear;
+        p.exact.push_back(Bake(one).channels[0].values[0]);
+      } else {
+        const TexelEstimate v = IntegrateTexel(s, r, AxisValueAt(s.mu, p.cm + 0.5));
+        if (s.table == TableKind::kE) {
+          p.exact.push_back(v.e);
+        } else {
+          p.exact.push_back(v.scale);
+          p.exact.push_back(v.bias);
+        }
+      }
+    });
+    double max_err = 0, max_err_inner = 0, sum2 = 0;
+    int count = 0;
+    for (const Probe& p : probes) {
+      for (size_t c = 0; c < p.exact.size(); ++c) {
+        const std::vector<double>& vals = t.channels[c].values;
+        double interp;
+        if (one_d) {
+          interp = 0.5 * (vals[p.cr] + vals[p.cr + 1]);
+        } else {
+          const int w = t.width;
+          interp = 0.25 * (vals[p.cr * w + p.cm] + vals[p.cr * w + p.cm + 1] +
+                           vals[(p.cr + 1) * w + p.cm] + vals[(p.cr + 1) * w + p.cm + 1]);
+        }
+        const double d = std::abs(interp - p.exact[c]);
+        max_err = std::max(max_err, d);
+        if (one_d || p.cm > 0) max_err_inner = std::max(max_err_inner, d);
+        sum2 += d * d;
+        ++count;
+      }
+    }
+    InterpolationRow row;
+    row.size = n;
+    row.max_abs_error = max_err;
+    row.max_abs_error_inner = max_err_inner;
+    row.rms_error = count ? std::sqrt(sum2 / count) : 0;
+    row.probes = count;
+    row.bake_seconds = t.seconds;
+    say("interpolation " + std::to_string(n) + ": max error " + Num(max_err, "%.2e"));
+    report.interpolation.push_back(row);
+  }
+  return report;
+}
+
+std::string LogLogSvg(const std::string& title, const std::string& x_label,
+                      const std::string& y_label, const std::vector<Series>& series,
+                      const std::string& footnote) {
+  const double W = 940, H = 620, left = 90, right = 260, top = 60, bottom = 105;
+  double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
+  for (const Series& s : series) {
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      if (!(s.x[i] > 0) || !(s.y[i] > 0)) continue;
+      xmin = std::min(xmin, s.x[i]);
+      xmax = std::max(xmax, s.x[i]);
+      ymin = std::min(ymin, s.y[i]);
+      ymax = std::max(ymax, s.y[i]);
+    }
+  }
+  if (xmin > xmax) xmin = 1, xmax = 10, ymin = 1, ymax = 10;
+  const double lx0 = std::floor(std::log10(xmin)), lx1 = std::max(lx0 + 1, std::ceil(std::log10(xmax)));
+  const double ly0 = std::floor(std::log10(ymin)), ly1 = std::max(ly0 + 1, std::ceil(std::log10(ymax)));
+  const double pw = W - left - right, ph = H - top - bottom;
+  auto X = [&](double x) { return left + pw * (std::log10(x) - lx0) / (lx1 - lx0); };
+  auto Y = [&](double y) { return top + ph * (1 - (std::log10(y) - ly0) / (ly1 - ly0)); };
+  std::ostringstream o;
+  o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H
+    << "\" font-family=\"sans-serif\" font-size=\"13\">\n";
+  o << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  o << "<text x=\"" << W / 2 << "\" y=\"30\" text-anchor=\"middle\" font-size=\"17\">" << title
+    << "</text>\n";
+  // Grid and ticks at decades (and 2, 5 within a decade as light lines).
+  for (double d = lx0; d <= lx1 + 1e-9; d += 1) {
+    for (double m : {1.0, 2.0, 5.0}) {
+      const double v = m * std::pow(10.0, d);
+      if (std::log10(v) > lx1 + 1e-9) break;
+      const double x = X(v);
+      o << "<line x1=\"" << x << "\" y1=\"" << top << "\" x2=\"" << x << "\" y2=\"" << top + ph
+        << "\" stroke=\"" << (m == 1 ? "#bbb" : "#eee") << "\"/>\n";
+      if (m == 1) {
+        o << "<text x=\"" << x << "\" y=\"" << top + ph + 20 << "\" text-anchor=\"middle\">1e"
+          << static_cast<int>(d) << "</text>\n";
+      }
+    }
+  }
+  for (double d = ly0; d <= ly1 + 1e-9; d += 1) {
+    const double y = Y(std::pow(10.0, d));
+    o << "<line x1=\"" << left << "\" y1=\"" << y << "\" x2=\"" << left + pw << "\" y2=\"" << y
+      << "\" stroke=\"#bbb\"/>\n";
+    o << "<text x=\"" << left - 8 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">1e"
+      << static_cast<int>(d) << "</text>\n";
+  }
+  o << "<rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw << "\" height=\"" << ph
+    << "\" fill=\"none\" stroke=\"black\"/>\n";
+  o << "<text x=\"" << left + pw / 2 << "\" y=\"" << top + ph + 45
+    << "\" text-anchor=\"middle\" font-size=\"15\">" << x_label << "</text>\n";
+  o << "<text transform=\"translate(25," << top + ph / 2
+    << ") rotate(-90)\" text-anchor=\"middle\" font-size=\"15\">" << y_label << "</text>\n";
+  static const char* kColors[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b"};
+  for (size_t k = 0; k < series.size(); ++k) {
+    const Series& s = series[k];
+    const char* color = kColors[k % 6];
+    std::ostringstream pts;
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      if (!(s.x[i] > 0) || !(s.y[i] > 0)) continue;
+      pts << X(s.x[i]) << "," << Y(s.y[i]) << " ";
+      o << "<circle cx=\"" << X(s.x[i]) << "\" cy=\"" << Y(s.y[i]) << "\" r=\"4\" fill=\"" << color
+        << "\"/>\n";
+    }
+    o << "<polyline points=\"" << pts.str() << "\" fill=\"none\" stroke=\"" << color
+      << "\" stroke-width=\"2\"/>\n";
+    const double ly = top + 20 + 24 * k;
+    o << "<line x1=\"" << left + pw + 15 << "\" y1=\"" << ly << "\" x2=\"" << left + pw + 45
+      << "\" y2=\"" << ly << "\" stroke=\"" << color << "\" stroke-width=\"3\"/>\n";
+    o << "<text x=\"" << left + pw + 52 << "\" y=\"" << ly + 4 << "\">" << s.name << "</text>\n";
+  }
+  // Footnote, wrapped at '; '.
+  std::vector<std::string> lines;
+  {
+    std::string rest = footnote;
+    size_t cut;
+    while (rest.size() > 110 && (cut = rest.rfind("; ", 110)) != std::string::npos) {
+      lines.push_back(rest.substr(0, cut + 1));
+      rest = rest.substr(cut + 2);
+    }
+    lines.push_back(rest);
+  }
+  for (size_t i = 0; i < lines.size(); ++i) {
+    o << "<text x=\"" << left << "\" y=\"" << H - 12 - 15 * (lines.size() - 1 - i)
+      << "\" font-size=\"11\" fill=\"#444\">" << lines[i] << "</text>\n";
+  }
+  o << "</svg>\n";
+  return o.str();
+}
+
+void WriteReport(const Report& report, const std::string& dir) {
+  const BakeSpec& t = report.spec.table;
+  std::ostringstream csv;
+  csv << "integrator,budget_name,budget,seconds_median,seconds_min,max_abs_error,rms_error,"
+         "claimed_max_error\n";
+  for (const ReportRow& r : report.rows) {
+    csv << r.integrator << "," << r.budget_name << "," << Num(r.budget) << ","
+        << Num(r.seconds_median) << "," << Num(r.seconds_min) << "," << Num(r.max_abs_error)
+        << "," << Num(r.rms_error) << "," << Num(r.claimed_max_error) << "\n";
+  }
+  std::string what = std::string(TableName(t.table)) + " " + t.model.name;
+  if (t.model.name == "std") what += " gamma=" + Num(t.model.gamma);
+  const std::string size = t.table == TableKind::kEavg
+                               ? std::to_string(t.roughness.size)
+                               : std::to_string(t.mu.size) + "x" + std::to_string(t.roughness.size);
+  const std::string footnote =
+      "error: max |value - reference| over all texels; reference: quadrature at tolerance " +
+      Num(report.spec.reference_tolerance) + " (its own estimate " +
+      Num(report.reference_claimed_error, "%.1e") + "); time: median of " +
+      std::to_string(report.spec.repeats) + " bakes, all cores";
+  std::vector<Series> series;
+  for (const ReportRow& r : report.rows) {
+    if (series.empty() || series.back().name.rfind(r.integrator, 0) != 0) {
+      std::string label = r.integrator;
+      if (r.integrator == "engine") label = "engine (NDF, Hammersley)";
+      if (r.integrator == "qmc") label = "qmc (VNDF)";
+      if (r.integrator == "mc") label = "mc (VNDF)";
+      series.push_back({label, {}, {}});
+    }
+    series.back().x.push_back(r.seconds_median);
+    series.back().y.push_back(std::max(r.max_abs_error, 1e-12));
+  }
+  const std::string title = what + " " + size + " (" + MaskingName(t.masking) +
+                            "): max error against bake time";
+  std::ostringstream icsv;
+  icsv << "size,max_abs_error,max_abs_error_without_first_mu_cell,rms_error,probes,bake_seconds\n";
+  Series interp{"all cells", {}, {}};
+  Series interp_inner{"without the first mu cell", {}, {}};
+  for (const InterpolationRow& r : report.interpolation) {
+    icsv << r.size << "," << Num(r.max_abs_error) << "," << Num(r.max_abs_error_inner) << ","
+         << Num(r.rms_error) << "," << r.probes << "," << Num(r.bake_seconds) << "\n";
+    interp.x.push_back(r.size);
+    interp.y.push_back(std::max(r.max_abs_error, 1e-12));
+    interp_inner.x.push_back(r.size);
+    interp_inner.y.push_back(std::max(r.max_abs_error_inner, 1e-12));
+  }
+  WriteAtomically(dir + "/report.csv", csv.str());
+  WriteAtomically(dir + "/report.svg",
+                  LogLogSvg(title, "bake time (s)", "max abs error", series, footnote));
+  WriteAtomically(dir + "/interpolation.csv", icsv.str());
+  WriteAtomically(
+      dir + "/interpolation.svg",
+      LogLogSvg(what + ": error of " + (t.table == TableKind::kEavg ? "linear" : "bilinear") +
+                    " lookup against table size",
+                "entries per axis", "max abs error",
+                t.table == TableKind::kEavg ? std::vector<Series>{interp}
+                                            : std::vector<Series>{interp, interp_inner},
+                std::string("placement ") + PlacementName(t.roughness.placement) + ", warp mu " +
+                    WarpName(t.mu.warp) + ", roughness " + WarpName(t.roughness.warp) +
+                    "; exact values from the quadrature at cell midpoints"));
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,89 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// `report`: every integrator over its budget ladder, errors against the
+// converged reference, the integrators' own estimates bounding the true
+// error, interpolation error, and the CSV/SVG outputs, for every table kind.
+
+#include "brdfbake/report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace brdfbake {
+namespace {
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+void CheckReport(TableKind kind) {
+  ReportSpec spec;
+  spec.table.table = kind;
+  spec.table.mu.size = 4;
+  spec.table.roughness.size = kind == TableKind::kEavg ? 2 : 4;
+  spec.repeats = 1;
+  spec.reference_tolerance = 1e-10;
+  spec.interpolation_sizes = {3, kind == TableKind::kEavg ? 4 : 6};
+  spec.interpolation_probes = kind == TableKind::kEavg ? 2 : 4;
+  const Report r = RunReport(spec);
+  std::set<std::string> integrators;
+  for (const ReportRow& row : r.rows) {
+    integrators.insert(row.integrator);
+    EXPECT_GT(row.seconds_median, 0.0);
+    EXPECT_TRUE(std::isfinite(row.max_abs_error));
+    EXPECT_LE(row.rms_error, row.max_abs_error + 1e-15);
+    // The integrator's own estimate bounds its true error.
+    EXPECT_LE(row.max_abs_error, row.claimed_max_error + 2 * r.reference_claimed_error)
+        << row.integrator << " " << row.budget;
+  }
+  EXPECT_EQ(integrators.size(), 4u);
+  EXPECT_GE(r.rows.size(), 16u);
+  // More budget, less error, for the deterministic quadrature.
+  EXPECT_LT(r.rows[5].max_abs_error, r.rows[0].max_abs_error);
+  ASSERT_EQ(r.interpolation.size(), 2u);
+  for (const InterpolationRow& row : r.interpolation) {
+    EXPECT_GT(row.probes, 0);
+    EXPECT_TRUE(std::isfinite(row.max_abs_error));
+  }
+  const std::string dir = ::testing::TempDir() + "/brdfbake_report_" + TableName(kind);
+  std::filesystem::create_directories(dir);
+  WriteReport(r, dir);
+  const std::string csv = ReadFile(dir + "/report.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "integrator,budget_name,budget,seconds_median,seconds_min,max_abs_error,rms_error,"
+            "claimed_max_error");
+  int lines = 0;
+  for (char c : csv) lines += c == '\n';
+  EXPECT_EQ(lines, static_cast<int>(r.rows.size()) + 1);
+  const std::string svg = ReadFile(dir + "/report.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("polyline"), std::string::npos);
+  EXPECT_NE(svg.find("quadrature"), std::string::npos);
+  EXPECT_NE(svg.find("engine"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/interpolation.csv").find("size,max_abs_error"), std::string::npos);
+  EXPECT_NE(ReadFile(dir + "/interpolation.svg").find("polyline"), std::string::npos);
+}
+
+TEST(ReportTest, ETable) { CheckReport(TableKind::kE); }
+TEST(ReportTest, DfgTable) { CheckReport(TableKind::kDfg); }
+TEST(ReportTest, EavgTable) { CheckReport(TableKind::kEavg); }
+
+TEST(ReportTest, SvgScalesAreLogarithmic) {
+  const std::string svg = LogLogSvg("t", "x", "y", {{"a", {1e-3, 1e-1}, {1e-6, 1e-2}}}, "note");
+  EXPECT_NE(svg.find(">1e-3<"), std::string::npos);
+  EXPECT_NE(svg.find(">1e-1<"), std::string::npos);
+  EXPECT_NE(svg.find(">1e-6<"), std::string::npos);
+  EXPECT_NE(svg.find(">1e-2<"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace brdfbake
