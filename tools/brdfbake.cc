@@ -28,6 +28,7 @@
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
 #include "brdfbake/report.h"
+#include "brdfbake/stability.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/version.h"
 
@@ -340,6 +341,15 @@ int main(int argc, char** argv) {
                      "tolerance of the converged quadrature used as the reference")
       ->capture_default_str();
 
+  CLI::App* stability = app.add_subcommand(
+      "stability", "Float kernels against the double reference, region by region over the "
+                   "documented domain: max relative error and non-finite count, as CSV.");
+  int stability_samples = 20000;
+  uint64_t stability_seed = 1;
+  stability->add_option("--samples", stability_samples, "samples per region and model")
+      ->capture_default_str();
+  stability->add_option("--seed", stability_seed, "seed")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -387,6 +397,14 @@ int main(int argc, char** argv) {
       brdfbake::WriteReport(r, report_opts.output);
       std::printf("wrote %s/report.csv, report.svg, interpolation.csv, interpolation.svg\n",
                   report_opts.output.c_str());
+    }
+    if (*stability) {
+      if (stability_samples < 1 || stability_samples > 100000000) {
+        throw std::invalid_argument("--samples must be in [1, 100000000]");
+      }
+      std::ostringstream out;
+      brdfbake::WriteStabilityCsv(brdfbake::RunStability(stability_samples, stability_seed), out);
+      std::cout << out.str();
     }
     if (*eval && !grid_kind.empty()) {
       brdfbake::ForceTarget(target);
