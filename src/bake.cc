@@ -200,9 +200,14 @@ std::string IntegratorJson(const BakeSpec& spec) {
     case IntegratorKind::kQuadrature:
       j["max_nodes_per_dimension"] = n;
       j["tolerance"] = spec.tolerance;
-      j["domain"] = "visible-normal sampler's unit square, split where wi crosses the horizon";
+      j["domain"] = "unit square of the GGX visible-normal sampler with the model's alpha "
+                    "(weight D G2 (wo.m) / (wo.z pdf_ggx(m)) for beckmann and std), split where "
+                    "wi crosses the horizon; std with gamma < 2: inner mesh graded towards the "
+                    "disk rim, azimuth mapped by Sidi's sin^4 transformation";
       j["rule"] = "Gauss-Legendre (trapezoidal in a periodic azimuth), node ladder 12, 24, 48, ... (doubling) up to the max until two successive rules agree to the tolerance";
-      j["error_estimate"] = "difference between the last two rules of the ladder";
+      j["error_estimate"] = "difference between the last two rules of the ladder (plus the "
+                            "difference before it when the node cap stops the ladder short of "
+                            "the tolerance)";
       break;
     case IntegratorKind::kQmc:
       j["samples"] = 8 * std::max(1, n / 8);

@@ -12,6 +12,11 @@
 // whose integrand is G2 / G1(wo) in [0, 1] for exact visible-normal
 // sampling (seed 003 eq. 19) and is zero where wi falls below the horizon.
 // The DFG terms weight it with 1 - Fc and Fc, Fc = (1 - wo.m)^5.
+// The QMC, MC and engine integrators use each model's own sampler; the
+// deterministic quadrature uses the GGX visible-normal sampler with the
+// model's alpha_x, alpha_y for GGX, Beckmann and STD alike (LineFamily),
+// whose square is periodic in u2 and smooth in u1, with the weight
+// f cos_i / pdf_ggx(wi) = D G2 (wo.m) / (wo.z PdfVisible_ggx(wo, m)).
 
 #ifndef BRDFBAKE_SRC_INTEGRATE_H_
 #define BRDFBAKE_SRC_INTEGRATE_H_
@@ -69,13 +74,19 @@ struct VisibleSampler<StdNdf<double>> {
   }
 };
 
-// Whether the sampler's u2 is an azimuth (periodic): then the outer rule is
-// the trapezoidal rule in u2, which converges geometrically for smooth
-// periodic integrands; otherwise Gauss-Legendre after u2 = 3 s^2 - 2 s^3.
+// Whether the quadrature's parameterisation (LineFamily) has an azimuth as
+// u2 (periodic): then the outer rule is the trapezoidal rule in u2, which
+// converges geometrically for smooth periodic integrands; otherwise
+// Gauss-Legendre after u2 = 3 s^2 - 2 s^3. True for the GGX disk, used by
+// all three baked models.
 template <class Ndf>
 struct PeriodicU2 : std::false_type {};
 template <>
 struct PeriodicU2<GgxNdf<double>> : std::true_type {};
+template <>
+struct PeriodicU2<BeckmannNdf<double>> : std::true_type {};
+template <>
+struct PeriodicU2<StdNdf<double>> : std::true_type {};
 
 // Accumulates (w, w Fc) for a sample of the unit square; returns wi.z so
 // callers can locate the horizon.
@@ -109,12 +120,15 @@ struct Integrand {
   }
 };
 
-// Deterministic quadrature. The square is mapped by u1 = sin^2(pi t / 2) and
-// u2 = 3 s^2 - 2 s^3. For the GGX sampler sqrt(u1) is the radius rho of the
-// visible-normal disk and the lift onto the hemisphere, sqrt(1 - rho^2),
-// becomes cos(pi t / 2): smooth up to the rim, where it has a square-root
-// singularity in rho. Both maps also flatten the endpoints of samplers whose
-// inverse CDF is singular there (Beckmann's slopes).
+// Deterministic quadrature. The square is mapped by u1 = sin^2(pi t / 2)
+// (and, for a non-periodic u2, u2 = 3 s^2 - 2 s^3). For the GGX sampler
+// sqrt(u1) is the radius rho of the visible-normal disk and the lift onto
+// the hemisphere, sqrt(1 - rho^2), becomes cos(pi t / 2): smooth up to the
+// rim, where it has a square-root singularity in rho.
+// (Beckmann and STD used to be integrated over their own samplers' squares:
+// Beckmann's inverse-CDF + erfinv and the STD's pseudo-VNIS have endpoint
+// singularities and a non-periodic u2, on which the rule converged slowly
+// and often stopped at the node cap; see GgxDiskLines.)
 // For each outer node s the inner integrand is continuous but has a kink
 // where wi crosses the horizon (G2 vanishes linearly there): its zeros in t
 // are bracketed on a probe grid, refined by a bracketing secant iteration,
@@ -135,9 +149,36 @@ inline double DU1(double t) {  // d u1 / dt = (pi / 2) sin(pi t)
 // grows like alpha / (2 wi.z), so G2 changes over wi.z of a few alpha. Each
 // above-horizon interval that ends (or starts) on the horizon is split where
 // wi.z equals this height, so both pieces are smooth at the scale of the rule.
+// The same height serves Beckmann and STD: their Lambda_std(a) has the same
+// a = cot(theta) / alpha scaling (Beckmann's falls off faster, the STD's
+// like a^(2 - 2 gamma) for large a), and the rule converges to the default
+// tolerance with it for both (checked against an independent half-vector
+// integration for alpha 1e-3..1, mu 0..1, gamma 1.55..inf).
 template <class Ndf>
 double HorizonLayer(const Ndf& ndf) {
   return std::min(0.25, 8.0 * std::max(ndf.alpha_x(), ndf.alpha_y()));
+}
+
+// The exponent of the weight's power law at the rim of the GGX disk for a
+// model sampled by the GGX visible normals: D_M / D_ggx ~ r^(2 RimPower) for
+// large standard slopes r. Beckmann and GGX: 0 or below (bounded weight).
+// STD: 2 - gamma, so for gamma < 2 the weight grows like nh.z^(2 gamma - 4)
+// towards the lower rim, where nh.z ~ (1 - t)^2 (and like (1 - t)^(2 gamma
+// - 4) at normal incidence): in t the integrand behaves like (1 - t)^(4 gamma
+// - 7), singular for gamma < 7/4 and of low smoothness up to gamma = 2 (the
+// slope tail of the STD is heavier than GGX's there; at gamma -> 3/2 its
+// mean slope diverges). Measured max of the weight over the square (alpha
+// 1e-3..1, mu 1e-7..1): 3.7e5 at gamma 1.55, 476 at gamma 1.8, against
+// <= 2.61 for Beckmann and gamma >= 2.5. The horizon always cuts the rim off
+// (m.z -> 0 puts wi at -wo.z), but at grazing or small alpha the cut comes
+// within ~alpha mu of it, so the rule grades its mesh towards the rim for
+// these models (IntegrateLine).
+template <class Ndf>
+double RimPower(const Ndf&) {
+  return 0;
+}
+inline double RimPower(const StdNdf<double>& ndf) {
+  return std::isinf(ndf.gamma()) ? 0.0 : 2 - ndf.gamma();
 }
 
 // A root of g in [lo, hi], where g(lo) = glo and g(hi) = ghi have opposite
@@ -207,23 +248,44 @@ struct LineFamily {
   Line At(double u2) const { return {&f, u2}; }
 };
 
-// GGX (seed 003, Listing 1) with everything that depends only on wo
-// precomputed per texel and cos / sin of the disk azimuth per line.
+// The GGX visible-normal sampler (seed 003, Listing 1) as the
+// parameterisation of the square, for GGX itself and for the other
+// slope-space models (Beckmann, STD) with the same alpha_x, alpha_y, with
+// everything that depends only on wo precomputed per texel and cos / sin of
+// the disk azimuth per line.
+//
+// For GGX the weight is G2 / G1(wo). For a model M sampled by the GGX
+// visible normals, pdf(m) = G1_ggx(wo) (wo.m) D_ggx(m) / wo.z, and
+//   f cos_i / pdf(wi) = D_M(m) G2_M(wi, wo, m) (wo.m) / (wo.z pdf(m))
+//                     = [D_M(m) / D_ggx(m)] G2_M / G1_ggx(wo).
+// Both D share the stretch (ax, ay), so D_M / D_ggx = P22_M(r^2) / P22_ggx(r^2)
+// = pi (1 + r^2)^2 P22_M(r^2), where r^2 is the squared standard slope of
+// the hemisphere-configuration normal nh, (nh.x^2 + nh.y^2) / nh.z^2.
+// That ratio is bounded when M's slope tail is no heavier than GGX's:
+// Beckmann exp(-r^2) (1 + r^2)^2 <= 4/e, STD gamma >= 2 (the ratio decays
+// like r^(4 - 2 gamma)); with G2_M <= G1_M(wo) and G1_M / G1_ggx(wo) <=
+// sqrt(pi) at grazing the weight stays below ~2.61 (measured max 2.608 over
+// the square, alpha 1e-3..1, mu 1e-7..1). For STD gamma < 2 it grows like
+// r^(4 - 2 gamma) towards the rim of the disk (nh.z -> 0): see RimPower.
+//
 // With wo at azimuth 0 (wo.y = 0) the basis is t1 = (0, 1, 0) (or (1, 0, 0)
 // at normal incidence, where the integrand is rotationally symmetric), so the
 // disk point (p1, p2) -> (-p1, p2), i.e. phi -> pi - phi, u2 -> 1/2 - u2,
-// flips the sign of m.y and wi.y and nothing else: every other quantity is
-// computed from the same operands (the y products with wo.y = 0 and with the
-// zero components of t2 and vh are signed zeros), so the integrand is
-// bit-for-bit symmetric and the outer rule evaluates half of its lines.
-template <>
-struct LineFamily<GgxNdf<double>> {
+// flips the sign of nh.y, m.y and wi.y and nothing else: every other
+// quantity is computed from the same operands (the y products with wo.y = 0
+// and with the zero components of t2 and vh are signed zeros; r^2 and
+// Lambda use squares of y components), so the integrand is bit-for-bit
+// symmetric and the outer rule evaluates half of its lines.
+template <class Ndf>
+struct GgxDiskLines {
   static constexpr bool kMirrorU2 = true;
+  static constexpr bool kIsGgx = std::is_same_v<Ndf, GgxNdf<double>>;
+  const Ndf* ndf;
   Vec3<double> wo, vh, t1, t2;
-  double ax, ay, sh, lambda_wo;
+  double ax, ay, sh, lambda_wo, lambda_ggx_wo;
   bool separable;
-  explicit LineFamily(const Integrand<GgxNdf<double>>& f)
-      : wo(f.wo), ax(f.ndf.alpha_x()), ay(f.ndf.alpha_y()),
+  explicit GgxDiskLines(const Integrand<Ndf>& f)
+      : ndf(&f.ndf), wo(f.wo), ax(f.ndf.alpha_x()), ay(f.ndf.alpha_y()),
         separable(f.masking == Masking::kSeparable) {
     vh = Normalize(Vec3<double>(ax * wo.x, ay * wo.y, wo.z));
     const double lensq = vh.x * vh.x + vh.y * vh.y;
@@ -231,30 +293,42 @@ struct LineFamily<GgxNdf<double>> {
     t2 = Cross(vh, t1);
     sh = 0.5 * (1 + vh.z);
     lambda_wo = f.ndf.Lambda(wo);
+    lambda_ggx_wo = GgxLambda(wo);
   }
   // GGX Lambda = (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))), 1/a^2 = (ax^2 x^2 + ay^2 y^2) / z^2.
-  double Lambda(const Vec3<double>& w) const {
+  double GgxLambda(const Vec3<double>& w) const {
     const double px = ax * w.x, py = ay * w.y;
     const double inv_a2 = (px * px + py * py) / (w.z * w.z);
     return inv_a2 / (2 * (1 + std::sqrt(1 + inv_a2)));
   }
+  double Lambda(const Vec3<double>& w) const {
+    if constexpr (kIsGgx) {
+      return GgxLambda(w);
+    } else {
+      return ndf->Lambda(w);
+    }
+  }
   struct Line {
-    const LineFamily* fam;
+    const GgxDiskLines* fam;
     double c, s;  // cos, sin of the disk azimuth 2 pi u2
-    // The microfacet normal at disk radius sqrt(u1) = sin(pi t / 2).
-    Vec3<double> Normal(double t) const {
-      const LineFamily& F = *fam;
+    // The hemisphere-configuration normal at disk radius sqrt(u1) = sin(pi t / 2).
+    Vec3<double> Hemi(double t) const {
+      const GgxDiskLines& F = *fam;
       const double r = std::sin(1.5707963267948966 * t);
       const double p1 = r * c;
       const double p2 = (1 - F.sh) * std::sqrt(std::max(0.0, 1 - p1 * p1)) + F.sh * (r * s);
       const double lift = std::sqrt(std::max(0.0, 1 - p1 * p1 - p2 * p2));
-      const Vec3<double> nh = F.t1 * p1 + F.t2 * p2 + F.vh * lift;
+      return F.t1 * p1 + F.t2 * p2 + F.vh * lift;
+    }
+    Vec3<double> Normal(const Vec3<double>& nh) const {
+      const GgxDiskLines& F = *fam;
       return Normalize(Vec3<double>(F.ax * nh.x, F.ay * nh.y, std::max(0.0, nh.z)));
     }
-    double Z(double t) const { return Reflect(fam->wo, Normal(t)).z; }
+    double Z(double t) const { return Reflect(fam->wo, Normal(Hemi(t))).z; }
     void Eval(double t, double* w, double* w_fc) const {
-      const LineFamily& F = *fam;
-      const Vec3<double> m = Normal(t);
+      const GgxDiskLines& F = *fam;
+      const Vec3<double> nh = Hemi(t);
+      const Vec3<double> m = Normal(nh);
       const double wo_m = Dot(F.wo, m);
       const Vec3<double> wi = m * (2 * wo_m) - F.wo;
       // wi.m = wo.m for a reflection.
@@ -262,10 +336,22 @@ struct LineFamily<GgxNdf<double>> {
         *w = *w_fc = 0;
         return;
       }
-      // G2 / G1(wo): G1(wi) (separable) or (1 + L(wo)) / (1 + L(wi) + L(wo)).
       const double lambda_wi = F.Lambda(wi);
-      const double v = F.separable ? 1 / (1 + lambda_wi)
-                                   : (1 + F.lambda_wo) / (1 + lambda_wi + F.lambda_wo);
+      double v;
+      if constexpr (kIsGgx) {
+        // G2 / G1(wo): G1(wi) (separable) or (1 + L(wo)) / (1 + L(wi) + L(wo)).
+        v = F.separable ? 1 / (1 + lambda_wi)
+                        : (1 + F.lambda_wo) / (1 + lambda_wi + F.lambda_wo);
+      } else {
+        // [D_M / D_ggx] G2_M / G1_ggx(wo). nh.z > 0 here (m.z = 0 would put
+        // wi at -wo.z), so r2 is finite.
+        const double r2 = (nh.x * nh.x + nh.y * nh.y) / (nh.z * nh.z);
+        const double q = 1 + r2;
+        const double ratio = kPi<double> * F.ndf->StdP22(r2) * (q * q);
+        const double g2 = F.separable ? 1 / ((1 + lambda_wi) * (1 + F.lambda_wo))
+                                      : 1 / (1 + lambda_wi + F.lambda_wo);
+        v = ratio * g2 * (1 + F.lambda_ggx_wo);
+      }
       *w = v;
       *w_fc = v * SchlickWeight(wo_m);
     }
@@ -276,13 +362,33 @@ struct LineFamily<GgxNdf<double>> {
   }
 };
 
+template <>
+struct LineFamily<GgxNdf<double>> : GgxDiskLines<GgxNdf<double>> {
+  using GgxDiskLines::GgxDiskLines;
+};
+template <>
+struct LineFamily<BeckmannNdf<double>> : GgxDiskLines<BeckmannNdf<double>> {
+  using GgxDiskLines::GgxDiskLines;
+};
+template <>
+struct LineFamily<StdNdf<double>> : GgxDiskLines<StdNdf<double>> {
+  using GgxDiskLines::GgxDiskLines;
+};
+
 // One inner integral: the rule on [0, 1] in t along `line`, split at the
 // horizon crossings and at the layer height next to them.
+//
+// With `grade_rim` every interval is further cut at t = 1 - 2^-k (k >= 1), a
+// mesh graded geometrically towards the rim t = 1 of the disk, where the
+// weight of a model with a heavier slope tail than GGX (STD gamma < 2) is
+// singular (see RimPower); each piece then lies at a distance from t = 1 at
+// least its own width, so the rule converges geometrically on every piece
+// at a rate independent of how close the horizon cut comes to the rim.
 template <class LineT>
 void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, double layer,
-                   std::vector<double>* cuts_buf, double* acc, double* acc_fc) {
+                   bool grade_rim, std::vector<double>* cuts_buf, double* acc, double* acc_fc) {
   std::vector<double>& cuts = *cuts_buf;
-  auto integrate = [&](double a, double b) {
+  auto integrate_piece = [&](double a, double b) {
     for (size_t i = 0; i < inner.x.size(); ++i) {
       const double t = a + (b - a) * inner.x[i];
       double w, wfc;
@@ -291,6 +397,23 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
       *acc += jac * w;
       *acc_fc += jac * wfc;
     }
+  };
+  auto integrate = [&](double a, double b) {
+    if (!grade_rim) {
+      integrate_piece(a, b);
+      return;
+    }
+    // 1 - 2^-k is exact in double; 48 levels reach 1 - t ~ 4e-15, below
+    // which the disk point no longer changes in double.
+    double step = 0.5;
+    for (int k = 1; k <= 48 && a < b; ++k, step *= 0.5) {
+      const double g = 1 - step;
+      if (g <= a) continue;
+      const double e = std::min(g, b);
+      integrate_piece(a, e);
+      a = e;
+    }
+    if (a < b) integrate_piece(a, b);
   };
   auto z_at = [&](double t) { return line.Z(t); };
   // Bracket the horizon crossings along t on a probe grid.
@@ -342,14 +465,47 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
 }
 
 template <class Ndf>
-QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer,
+QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer, bool grade_rim,
                                 const GaussLegendre& outer, const GaussLegendre& inner,
                                 int probes) {
   QuadratureResult r;
   std::vector<double> cuts;
   const bool periodic = PeriodicU2<Ndf>::value;
   const int n_outer = static_cast<int>(outer.x.size());
-  if (periodic) {
+  if (periodic && grade_rim) {
+    // The inner integral I(u2) of a model whose weight is singular at the
+    // rim (RimPower > 0) is itself singular, algebraically, at u2 = 0 and
+    // 1/2 (phi = 0, pi: the plane of incidence, where the lower rim, on
+    // which nh.z -> 0, meets the upper rim, on which wo.m -> 0). There
+    // the trapezoidal rule in u2 converges only like n^-2.4 (measured, STD
+    // gamma 1.6 at grazing). Each half period [h/2, (h+1)/2] is mapped by
+    // Sidi's sin^4 transformation u2 = h/2 + psi(s)/2, psi'(s) = (8/3)
+    // sin^4(pi s), which vanishes to fourth order at both singular points,
+    // and the trapezoidal rule at the midpoints s = (j + 1/2)/k, k = n/2 per
+    // half, is applied; the mirror u2 -> 1/2 - u2 maps s -> 1 - s within
+    // each half, so node j pairs with k - 1 - j.
+    const int k = std::max(1, n_outer / 2);
+    for (int h = 0; h < 2; ++h) {
+      for (int j = 0; j < k; ++j) {
+        const int jm = k - 1 - j;
+        if (jm < j) continue;
+        const double count = jm > j ? 2 : 1;
+        const double sv = (j + 0.5) / k;
+        const double a = 6.283185307179586 * sv;
+        // psi(s) = s - (8/3) [sin(2 pi s) / (4 pi) - sin(4 pi s) / (32 pi)],
+        // psi'(s) = (3 - 4 cos(2 pi s) + cos(4 pi s)) / 3.
+        const double psi = sv - (8.0 / 3.0) * (std::sin(a) / 12.566370614359172 -
+                                               std::sin(2 * a) / 100.53096491487338);
+        const double dpsi = (3 - 4 * std::cos(a) + std::cos(2 * a)) / 3;
+        double acc = 0, acc_fc = 0;
+        IntegrateLine(family.At(0.5 * h + 0.5 * psi), inner, probes, layer, grade_rim, &cuts,
+                      &acc, &acc_fc);
+        const double wgt = count * dpsi * 0.5 / k;
+        r.e += wgt * acc;
+        r.fc += wgt * acc_fc;
+      }
+    }
+  } else if (periodic) {
     // Trapezoidal rule at the midpoints u2 = (j + 1/2) / n. With the mirror
     // symmetry and n even, node j pairs with (n/2 - 1 - j) mod n: each pair
     // is evaluated once and counted twice (a node that is its own mirror,
@@ -363,7 +519,8 @@ QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer,
         if (jm > j) count = 2;
       }
       double acc = 0, acc_fc = 0;
-      IntegrateLine(family.At((j + 0.5) / n_outer), inner, probes, layer, &cuts, &acc, &acc_fc);
+      IntegrateLine(family.At((j + 0.5) / n_outer), inner, probes, layer, grade_rim, &cuts, &acc,
+                    &acc_fc);
       r.e += count * acc;
       r.fc += count * acc_fc;
     }
@@ -375,7 +532,7 @@ QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer,
       const double u2 = s * s * (3 - 2 * s);
       const double du2 = 6 * s * (1 - s) * outer.w[j];
       double acc = 0, acc_fc = 0;
-      IntegrateLine(family.At(u2), inner, probes, layer, &cuts, &acc, &acc_fc);
+      IntegrateLine(family.At(u2), inner, probes, layer, grade_rim, &cuts, &acc, &acc_fc);
       r.e += du2 * acc;
       r.fc += du2 * acc_fc;
     }
@@ -435,17 +592,41 @@ TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_n
   const Integrand<Ndf> f(ndf, wo, masking);
   const LineFamily<Ndf> family(f);
   const double layer = HorizonLayer(ndf);
+  const bool grade_rim = RimPower(ndf) > 0;
+  // For the models sampled through the GGX disk, whose weight varies over
+  // the whole disk (D_M / D_ggx), 12 and 24 nodes can agree by accident
+  // (measured: STD gamma 2.5, alpha 0.01, mu = 1 agreed to 3e-11 with a true
+  // error of 1.2e-10), so convergence is only accepted from the 48-node rule
+  // on. GGX keeps its ladder (its weight G2 / G1 is flat except near the
+  // horizon, where the layer split resolves it).
+  const int min_k = std::is_same_v<Ndf, GgxNdf<double>> ? 1 : 2;
   const int probes = 24;
   static const int kLadder[] = {12, 24, 48, 96, 192, 384, 768, 1536, 3072, 4096};
   QuadratureResult prev =
-      QuadratureRule(family, layer, CachedRule(kLadder[0]), CachedRule(kLadder[0]), probes);
-  TexelValue v;
+      QuadratureRule(family, layer, grade_rim, CachedRule(kLadder[0]), CachedRule(kLadder[0]), probes);
+  TexelValue v, v_prev;
   for (int k = 1; k < int(std::size(kLadder)); ++k) {
     const int n = std::min(kLadder[k], std::max(max_nodes, kLadder[1]));
-    const QuadratureResult cur = QuadratureRule(family, layer, CachedRule(n), CachedRule(n), probes);
+    const QuadratureResult cur =
+        QuadratureRule(family, layer, grade_rim, CachedRule(n), CachedRule(n), probes);
     v = FromTwo(cur, prev);
-    if (std::max(v.err_e, std::max(v.err_scale, v.err_bias)) <= tol || n >= max_nodes) break;
+    const bool converged =
+        k >= min_k && std::max(v.err_e, std::max(v.err_scale, v.err_bias)) <= tol;
+    if (!converged && n >= max_nodes && k >= 2) {
+      // Stopped by the node cap short of the tolerance: the rule may not
+      // yet be in its asymptotic regime, so the claim is the sum of the last
+      // two differences. If the error shrinks by a factor rho per doubling,
+      // the error of the finer rule is rho / (1 - rho) times the last
+      // difference and the claim (1 + 1 / rho) times it: a bound for any
+      // rho <= 1 / sqrt(2), i.e. convergence faster than O(n^-1/2), where
+      // the last difference alone needs rho <= 1/2 (O(1/n)).
+      v.err_e += v_prev.err_e;
+      v.err_scale += v_prev.err_scale;
+      v.err_bias += v_prev.err_bias;
+    }
+    if (converged || n >= max_nodes) break;
     prev = cur;
+    v_prev = v;
   }
   return v;
 }

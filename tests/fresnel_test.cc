@@ -54,6 +54,9 @@ TEST(FresnelTest, ConductorMatchesKnownValues) {
       EXPECT_NEAR(FresnelConductor(n, k, 0.0), 1.0, 1e-12);
     }
   }
+  // Grazing incidence is total reflection even for eta = 1 (0/0 in the
+  // general expression).
+  EXPECT_EQ(FresnelConductor(1.0, 0.0, 0.0), 1.0);
   // k = 0 is a dielectric.
   for (double c = 0.05; c <= 1.0; c += 0.05) {
     EXPECT_NEAR(FresnelConductor(1.5, 0.0, c), FresnelDielectric(1.5, c), 1e-14);

@@ -52,6 +52,9 @@ template <typename T>
 T FresnelConductor(T n, T k, T cos_i) {
   using C = std::complex<T>;
   cos_i = std::clamp(cos_i, T(0), T(1));
+  // Grazing incidence reflects everything (and for eta = 1 the general
+  // expression below is 0/0 there).
+  if (cos_i == T(0)) return T(1);
   const C eta(n, k);
   const C sin2_t = C(T(1) - cos_i * cos_i) / (eta * eta);
   const C cos_t = std::sqrt(C(T(1)) - sin2_t);
