@@ -13,6 +13,8 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
+#include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/batch_extra.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
@@ -155,6 +157,64 @@ void BM_BrdfBatch(benchmark::State& state, std::string target) {
   state.SetItemsProcessed(state.iterations() * kN);
 }
 
+// The other models' BRDF kernels and the visible-normal samplers, per target.
+enum class Kernel { kBeckmannBrdf, kStdBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible };
+void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) {
+  ForceTarget(target);
+  FloatInputs& in = FIn();
+  static std::vector<float> u1, u2, mx(kN), my(kN), mz(kN);
+  if (u1.empty()) {
+    for (int i = 0; i < kN; ++i) {
+      u1.push_back(float(In().u1[i]));
+      u2.push_back(float(In().u2[i]));
+    }
+  }
+  BeckmannBatchParams bp;
+  bp.alpha_x = bp.alpha_y = 0.3f;
+  bp.f0 = 0.04f;
+  StdBatchParams sp;
+  sp.alpha_x = sp.alpha_y = 0.3f;
+  sp.gamma = 3.3f;
+  sp.f0 = 0.04f;
+  EllipsoidBatchParams ep;
+  ep.alpha_x = 0.3f;
+  ep.alpha_y = 0.5f;
+  ep.theta_x = 0.2f;
+  ep.theta_y = 0.1f;
+  ep.theta_z = 0.4f;
+  ep.f0 = 0.04f;
+  GgxBatchParams gp;
+  gp.alpha_x = gp.alpha_y = 0.3f;
+  for (auto _ : state) {
+    switch (kernel) {
+      case Kernel::kBeckmannBrdf:
+        BeckmannBrdfBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
+                          in.oy.data(), in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kStdBrdf:
+        StdBrdfBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
+                     in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kEllipsoidBrdf:
+        EllipsoidBrdfBatch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
+                           in.oy.data(), in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kGgxSampleVisible:
+        GgxSampleVisibleBatch(gp, in.ox.data(), in.oy.data(), in.oz.data(), u1.data(), u2.data(),
+                              mx.data(), my.data(), mz.data(), kN);
+        break;
+      case Kernel::kEllipsoidSampleVisible:
+        EllipsoidSampleVisibleBatch(ep, in.ox.data(), in.oy.data(), in.oz.data(), u1.data(),
+                                    u2.data(), mx.data(), my.data(), mz.data(), kN);
+        break;
+    }
+    benchmark::DoNotOptimize(in.out.data());
+    benchmark::DoNotOptimize(mz.data());
+  }
+  ForceTarget("best");
+  state.SetItemsProcessed(state.iterations() * kN);
+}
+
 __attribute__((optimize("no-tree-vectorize"))) void ScalarFloatBrdf(FloatInputs& in) {
   const GgxNdf<float> ndf(0.3f);
   const Fresnel fresnel = Fresnel::Schlick({0.04, 0.04, 0.04});
@@ -218,8 +278,19 @@ BENCHMARK_CAPTURE(BM_BakeE, ggx/engine1024, IntegratorKind::kEngine, 1024)
 }  // namespace brdfbake
 
 int main(int argc, char** argv) {
+  using brdfbake::Kernel;
   for (const std::string& t : brdfbake::AvailableTargets()) {
     benchmark::RegisterBenchmark(("BM_Brdf/ggx/" + t).c_str(), brdfbake::BM_BrdfBatch, t);
+    benchmark::RegisterBenchmark(("BM_Brdf/beckmann/" + t).c_str(), brdfbake::BM_KernelBatch,
+                                 Kernel::kBeckmannBrdf, t);
+    benchmark::RegisterBenchmark(("BM_Brdf/std/" + t).c_str(), brdfbake::BM_KernelBatch,
+                                 Kernel::kStdBrdf, t);
+    benchmark::RegisterBenchmark(("BM_Brdf/ellipsoid/" + t).c_str(), brdfbake::BM_KernelBatch,
+                                 Kernel::kEllipsoidBrdf, t);
+    benchmark::RegisterBenchmark(("BM_SampleVisible/ggx/" + t).c_str(), brdfbake::BM_KernelBatch,
+                                 Kernel::kGgxSampleVisible, t);
+    benchmark::RegisterBenchmark(("BM_SampleVisible/ellipsoid/" + t).c_str(),
+                                 brdfbake::BM_KernelBatch, Kernel::kEllipsoidSampleVisible, t);
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
