@@ -57,6 +57,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "simd/ggx-inl.h"
 #include "simd/math-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -83,30 +84,7 @@ struct BeckmannConsts {
   }
 };
 
-// 1 / sqrt(x) from the hardware estimate and one Newton step (the same
-// helper as the GGX kernels, kept local so that each -inl.h stands alone).
-// The portable fallbacks (SCALAR, EMU128) use the exact square root.
-template <class D, class V>
-HWY_INLINE V RsqrtRefined(D d, V x) {
-#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
-  return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));
-#else
-  const V y = hn::ApproximateReciprocalSqrt(x);
-  const V half_x = hn::Mul(x, hn::Set(d, 0.5f));
-  return hn::Mul(y, hn::NegMulAdd(hn::Mul(half_x, y), y, hn::Set(d, 1.5f)));
-#endif
-}
-
-// Schlick Fresnel at wo.h, h = s / |s|, len2 = |s|^2 (> 0).
-template <class D, class V>
-HWY_INLINE V SchlickAtHalf(D d, V f0, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
-  const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
-  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  const V cos_d = hn::Min(hn::Mul(wo_s, RsqrtRefined(d, safe_len2)), hn::Set(d, 1.0f));
-  const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
-  const V m2 = hn::Mul(m, m);
-  return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
-}
+// RsqrtNewton and SchlickAtHalf come from simd/ggx-inl.h.
 
 template <class D, class V>
 HWY_INLINE V BeckmannD(D d, const BeckmannConsts<D>& c, V mx, V my, V mz) {
@@ -128,7 +106,7 @@ template <class D, class V>
 HWY_INLINE void BeckmannLambdaParts(D d, const BeckmannConsts<D>& c, V wx, V wy, V wz, V* num,
                                     V* den) {
   const V p = hn::MulAdd(hn::Mul(wx, wx), c.ax2, hn::Mul(hn::Mul(wy, wy), c.ay2));
-  const V a = hn::Min(hn::Mul(wz, RsqrtRefined(d, hn::Max(p, hn::Set(d, 1e-36f)))),
+  const V a = hn::Min(hn::Mul(wz, RsqrtNewton(d, hn::Max(p, hn::Set(d, 1e-36f)))),
                       hn::Set(d, 1e4f));
   V q, one_2a2;
   IerfcScaled(d, a, &q, &one_2a2);

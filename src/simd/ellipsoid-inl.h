@@ -256,7 +256,6 @@ HWY_INLINE V EllipsoidG1(D d, const EllipsoidConsts<D>& c, V ux, V uy, V uz) {
 template <class D, class V>
 HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V ix, V iy, V iz,
                            V ox, V oy, V oz) {
-  const V one = hn::Set(d, 1.0f);
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   V d_num, d_den;
   EllipsoidDParts(c, sx, sy, sz, &d_num, &d_den);
@@ -273,14 +272,8 @@ HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V i
   }
   const V num = hn::Mul(d_num, hn::Mul(dni, dno));
   const V dv = hn::Div(num, hn::Mul(hn::Mul(hn::Set(d, 4.0f), d_den), g_den));
-  // Schlick Fresnel at wo.h, as in GgxBrdf.
   const V len2 = Dot3(sx, sy, sz, sx, sy, sz);
-  const V wo_s = Dot3(ox, oy, oz, sx, sy, sz);
-  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  const V cos_d = hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), one);
-  const V m = hn::Max(hn::Sub(one, cos_d), hn::Zero(d));
-  const V m2 = hn::Mul(m, m);
-  const V f = hn::MulAdd(hn::Sub(one, c.f0), hn::Mul(hn::Mul(m2, m2), m), c.f0);
+  const V f = SchlickAtHalf(d, c.f0, ox, oy, oz, sx, sy, sz, len2);
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));

@@ -62,6 +62,18 @@ HWY_INLINE V RsqrtNewton(D d, V x) {
 #endif
 }
 
+// Schlick Fresnel at wo.h with h = s / |s|, len2 = |s|^2 (shared by every
+// model's BRDF kernel).
+template <class D, class V>
+HWY_INLINE V SchlickAtHalf(D d, V f0, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
+  const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
+  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
+  const V cos_d = hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
+  const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
+  const V m2 = hn::Mul(m, m);
+  return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
+}
+
 template <class D, class V>
 HWY_INLINE V GgxD(D d, const GgxConsts<D>& c, V mx, V my, V mz) {
   const V len2 = hn::MulAdd(mx, mx, hn::MulAdd(my, my, hn::Mul(mz, mz)));
@@ -100,14 +112,7 @@ HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V i
   }
   const V num = hn::Mul(hn::Mul(len2, len2), c.inv_pi_axay);
   const V dv = hn::Div(num, hn::Mul(hn::Mul(q, q), vis_den));
-  // Schlick Fresnel at wo.h.
-  const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
-  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  const V cos_d = hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
-  const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
-  const V m2 = hn::Mul(m, m);
-  const V w5 = hn::Mul(hn::Mul(m2, m2), m);
-  const V f = hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), c.f0), w5, c.f0);
+  const V f = SchlickAtHalf(d, c.f0, ox, oy, oz, sx, sy, sz, len2);
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));

@@ -187,7 +187,7 @@ HWY_INLINE V StdLambdaAbove(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
     const V one = hn::Set(d, 1.0f);
     V g = hn::Zero(d);
     for (int k = 0; k < kStdLaguerrePoints; ++k) {
-      const V r = RsqrtRefined(d, hn::MulAdd(hn::Set(d, c.lag_e[k]), ia2, one));
+      const V r = RsqrtNewton(d, hn::MulAdd(hn::Set(d, c.lag_e[k]), ia2, one));
       g = hn::MulAdd(hn::Set(d, c.lag_w[k]), hn::Mul(hn::Mul(r, r), r), g);
     }
     const V br = hn::MulAdd(hn::Mul(g, c.c2), ia2, c.c1);
