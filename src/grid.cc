@@ -11,6 +11,8 @@
 #include <tbb/parallel_for.h>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/batch_extra.h"
 
 namespace brdfbake {
 
@@ -100,24 +102,47 @@ Grid EvalGrid(const GridRequest& req) {
   g.width = req.width;
   g.height = req.height;
   g.values.assign(size_t(req.width) * req.height, 0.0f);
-  const bool simd = req.model.name == "ggx" &&
-                    (req.fresnel.kind == FresnelKind::kOne ||
-                     (req.fresnel.kind == FresnelKind::kSchlick && req.fresnel.IsGrey()));
+  // The SIMD kernels take F = 1 or a grey Schlick F0; other Fresnel models
+  // go through the scalar reference.
+  const bool simd = req.fresnel.kind == FresnelKind::kOne ||
+                    (req.fresnel.kind == FresnelKind::kSchlick && req.fresnel.IsGrey());
   g.path = simd ? "simd:" + BatchTarget() : "scalar";
   const std::unique_ptr<Model> model = simd ? nullptr : MakeModel(req.model);
   tbb::parallel_for(0, req.height, [&](int y) {
     const RowDirs r = MakeRow(req, y);
     float* out = g.values.data() + size_t(y) * req.width;
+    const std::string& name = req.model.name;
+    const float f0 = req.fresnel.kind == FresnelKind::kOne ? 1.0f : float(req.fresnel.f0[0]);
     if (req.kind == GridKind::kG1) {
       const double rough = (y + 0.5) / req.height;
+      const float a = float(std::max(rough * rough, 1e-4));
       if (simd) {
-        GgxBatchParams p;
-        p.alpha_x = p.alpha_y = float(rough * rough);
-        GgxLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        // G1 = 1 / (1 + Lambda) from each model's Lambda kernel.
+        if (name == "ggx") {
+          GgxBatchParams p;
+          p.alpha_x = p.alpha_y = a;
+          GgxLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        } else if (name == "beckmann") {
+          BeckmannBatchParams p;
+          p.alpha_x = p.alpha_y = a;
+          BeckmannLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        } else if (name == "std") {
+          StdBatchParams p;
+          p.alpha_x = p.alpha_y = a;
+          p.gamma = float(req.model.gamma);
+          StdLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        } else {
+          EllipsoidBatchParams p;
+          p.alpha_x = p.alpha_y = a;
+          p.theta_x = float(req.model.theta_x);
+          p.theta_y = float(req.model.theta_y);
+          p.theta_z = float(req.model.theta_z);
+          EllipsoidLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+        }
         for (int x = 0; x < req.width; ++x) out[x] = 1.0f / (1.0f + out[x]);
       } else {
         ModelParams mp = req.model;
-        mp.alpha_x = mp.alpha_y = std::max(rough * rough, 1e-4);
+        mp.alpha_x = mp.alpha_y = a;
         const std::unique_ptr<Model> m = MakeModel(mp);
         for (int x = 0; x < req.width; ++x) {
           out[x] = float(m->G1(Vec3<double>(r.ix[x], r.iy[x], r.iz[x])));
@@ -126,13 +151,44 @@ Grid EvalGrid(const GridRequest& req) {
       return;
     }
     if (simd) {
-      GgxBatchParams p;
-      p.alpha_x = float(req.model.alpha_x);
-      p.alpha_y = float(req.model.alpha_y);
-      p.f0 = req.fresnel.kind == FresnelKind::kOne ? 1.0f : float(req.fresnel.f0[0]);
-      p.masking = req.masking;
-      GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
-                   r.oz.data(), out, req.width);
+      const float ax = float(req.model.alpha_x), ay = float(req.model.alpha_y);
+      if (name == "ggx") {
+        GgxBatchParams p;
+        p.alpha_x = ax;
+        p.alpha_y = ay;
+        p.f0 = f0;
+        p.masking = req.masking;
+        GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+                     r.oz.data(), out, req.width);
+      } else if (name == "beckmann") {
+        BeckmannBatchParams p;
+        p.alpha_x = ax;
+        p.alpha_y = ay;
+        p.f0 = f0;
+        p.masking = req.masking;
+        BeckmannBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+                          r.oz.data(), out, req.width);
+      } else if (name == "std") {
+        StdBatchParams p;
+        p.alpha_x = ax;
+        p.alpha_y = ay;
+        p.gamma = float(req.model.gamma);
+        p.f0 = f0;
+        p.masking = req.masking;
+        StdBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+                     r.oz.data(), out, req.width);
+      } else {
+        EllipsoidBatchParams p;
+        p.alpha_x = ax;
+        p.alpha_y = ay;
+        p.theta_x = float(req.model.theta_x);
+        p.theta_y = float(req.model.theta_y);
+        p.theta_z = float(req.model.theta_z);
+        p.f0 = f0;
+        p.masking = req.masking;
+        EllipsoidBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+                           r.oz.data(), out, req.width);
+      }
     } else {
       for (int x = 0; x < req.width; ++x) {
         out[x] = float(model->Brdf(Vec3<double>(r.ix[x], r.iy[x], r.iz[x]),
