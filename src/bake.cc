@@ -78,12 +78,12 @@ IntegratorKind ParseIntegrator(const std::string& s) {
   Bad("--integrator: unknown integrator '" + s + "' (expected quadrature, qmc, mc or engine)");
 }
 
-double Axis::Value(int i) const {
+double Axis::ValueAt(double fi) const {
   double t;
   if (placement == Placement::kCenters) {
-    t = (i + 0.5) / size;
+    t = (fi + 0.5) / size;
   } else {
-    t = size == 1 ? 0.0 : static_cast<double>(i) / (size - 1);
+    t = size == 1 ? 0.0 : fi / (size - 1);
   }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;

@@ -29,6 +29,29 @@ namespace brdfbake {
 
 std::string BakeModelJson(const BakeSpec& spec);  // bake.cc
 
+namespace {
+
+// Writes `header` and `fb` to a temporary file beside `path`, then renames
+// it: never a partial file.
+void WriteAtomically(const std::string& path, const Imf::Header& header,
+                     const Imf::FrameBuffer& fb, int height) {
+  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  try {
+    Imf::OutputFile file(tmp.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(height);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + e.what());
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  }
+}
+
+}  // namespace
+
 void WriteExr(const Table& table, const std::string& path) {
   const BakeSpec& spec = table.spec;
   Imf::Header header(table.width, table.height);
@@ -73,20 +96,7 @@ void WriteExr(const Table& table, const std::string& path) {
     }
   }
 
-  // Write beside the destination, then rename: never a partial file.
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  try {
-    Imf::OutputFile file(tmp.c_str(), header);
-    file.setFrameBuffer(fb);
-    file.writePixels(table.height);
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + e.what());
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  }
+  WriteAtomically(path, header, fb, table.height);
 }
 
 void WriteImageExr(const std::string& path, int width, int height,
@@ -101,19 +111,7 @@ void WriteImageExr(const std::string& path, int width, int height,
     fb.insert(c.first, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.second->data())),
                                   sizeof(float), sizeof(float) * width));
   }
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  try {
-    Imf::OutputFile file(tmp.c_str(), header);
-    file.setFrameBuffer(fb);
-    file.writePixels(height);
-  } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + e.what());
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  }
+  WriteAtomically(path, header, fb, height);
 }
 
 std::string ExrContents::Attribute(const std::string& name) const {

@@ -74,22 +74,8 @@ struct VisibleSampler<StdNdf<double>> {
   }
 };
 
-// Whether the quadrature's parameterisation (LineFamily) has an azimuth as
-// u2 (periodic): then the outer rule is the trapezoidal rule in u2, which
-// converges geometrically for smooth periodic integrands; otherwise
-// Gauss-Legendre after u2 = 3 s^2 - 2 s^3. True for the GGX disk, used by
-// all three baked models.
-template <class Ndf>
-struct PeriodicU2 : std::false_type {};
-template <>
-struct PeriodicU2<GgxNdf<double>> : std::true_type {};
-template <>
-struct PeriodicU2<BeckmannNdf<double>> : std::true_type {};
-template <>
-struct PeriodicU2<StdNdf<double>> : std::true_type {};
-
-// Accumulates (w, w Fc) for a sample of the unit square; returns wi.z so
-// callers can locate the horizon.
+// Accumulates (w, w Fc) for a sample of the unit square of the model's own
+// visible-normal sampler (the sampling integrators).
 template <class Ndf>
 struct Integrand {
   const Ndf& ndf;
@@ -100,10 +86,6 @@ struct Integrand {
   Integrand(const Ndf& n, const Vec3<double>& w, Masking mk)
       : ndf(n), wo(w), masking(mk), g1_wo(n.G1(w)) {}
 
-  double HorizonZ(double u1, double u2) const {
-    const Vec3<double> m = VisibleSampler<Ndf>::Sample(ndf, wo, u1, u2);
-    return Reflect(wo, m).z;
-  }
   // Returns false when wi is below the horizon (zero contribution).
   bool Eval(double u1, double u2, double* w, double* w_fc) const {
     const Vec3<double> m = VisibleSampler<Ndf>::Sample(ndf, wo, u1, u2);
@@ -120,8 +102,7 @@ struct Integrand {
   }
 };
 
-// Deterministic quadrature. The square is mapped by u1 = sin^2(pi t / 2)
-// (and, for a non-periodic u2, u2 = 3 s^2 - 2 s^3). For the GGX sampler
+// Deterministic quadrature. The square is mapped by u1 = sin^2(pi t / 2). For the GGX sampler
 // sqrt(u1) is the radius rho of the visible-normal disk and the lift onto
 // the hemisphere, sqrt(1 - rho^2), becomes cos(pi t / 2): smooth up to the
 // rim, where it has a square-root singularity in rho.
@@ -129,7 +110,7 @@ struct Integrand {
 // Beckmann's inverse-CDF + erfinv and the STD's pseudo-VNIS have endpoint
 // singularities and a non-periodic u2, on which the rule converged slowly
 // and often stopped at the node cap; see GgxDiskLines.)
-// For each outer node s the inner integrand is continuous but has a kink
+// For each outer node u2 the inner integrand is continuous but has a kink
 // where wi crosses the horizon (G2 vanishes linearly there): its zeros in t
 // are bracketed on a probe grid, refined by a bracketing secant iteration,
 // and the rule is applied on each sub-interval where wi is above the horizon.
@@ -230,23 +211,11 @@ inline constexpr double kCrossingTol = 1e-11;
 // across it): any point near the layer height serves.
 inline constexpr double kLayerRelTol = 1e-3;
 
-// The integrand restricted to one line u2 = const of the square, as a
-// function of t: Z(t) = wi.z and Eval(t) = (w, w Fc). Generic version over
-// the model's sampler.
+// The integrand restricted to one line u2 = const of the quadrature's
+// square, as a function of t: Z(t) = wi.z and Eval(t) = (w, w Fc). Every
+// baked model uses the GGX disk (GgxDiskLines below).
 template <class Ndf>
-struct LineFamily {
-  // Lines u2 and 1/2 - u2 carry the same integrand (see the GGX version).
-  static constexpr bool kMirrorU2 = false;
-  const Integrand<Ndf>& f;
-  explicit LineFamily(const Integrand<Ndf>& integrand) : f(integrand) {}
-  struct Line {
-    const Integrand<Ndf>* f;
-    double u2;
-    double Z(double t) const { return f->HorizonZ(U1(t), u2); }
-    void Eval(double t, double* w, double* w_fc) const { f->Eval(U1(t), u2, w, w_fc); }
-  };
-  Line At(double u2) const { return {&f, u2}; }
-};
+struct LineFamily;
 
 // The GGX visible-normal sampler (seed 003, Listing 1) as the
 // parameterisation of the square, for GGX itself and for the other
@@ -466,13 +435,13 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
 
 template <class Ndf>
 QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer, bool grade_rim,
-                                const GaussLegendre& outer, const GaussLegendre& inner,
-                                int probes) {
+                                int n_outer, const GaussLegendre& inner, int probes) {
+  // u2 is the azimuth of the GGX disk: periodic, so the outer rule is the
+  // trapezoidal rule, which converges geometrically for smooth periodic
+  // integrands.
   QuadratureResult r;
   std::vector<double> cuts;
-  const bool periodic = PeriodicU2<Ndf>::value;
-  const int n_outer = static_cast<int>(outer.x.size());
-  if (periodic && grade_rim) {
+  if (grade_rim) {
     // The inner integral I(u2) of a model whose weight is singular at the
     // rim (RimPower > 0) is itself singular, algebraically, at u2 = 0 and
     // 1/2 (phi = 0, pi: the plane of incidence, where the lower rim, on
@@ -505,7 +474,7 @@ QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer, boo
         r.fc += wgt * acc_fc;
       }
     }
-  } else if (periodic) {
+  } else {
     // Trapezoidal rule at the midpoints u2 = (j + 1/2) / n. With the mirror
     // symmetry and n even, node j pairs with (n/2 - 1 - j) mod n: each pair
     // is evaluated once and counted twice (a node that is its own mirror,
@@ -526,16 +495,6 @@ QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer, boo
     }
     r.e /= n_outer;
     r.fc /= n_outer;
-  } else {
-    for (int j = 0; j < n_outer; ++j) {
-      const double s = outer.x[j];
-      const double u2 = s * s * (3 - 2 * s);
-      const double du2 = 6 * s * (1 - s) * outer.w[j];
-      double acc = 0, acc_fc = 0;
-      IntegrateLine(family.At(u2), inner, probes, layer, grade_rim, &cuts, &acc, &acc_fc);
-      r.e += du2 * acc;
-      r.fc += du2 * acc_fc;
-    }
   }
   return r;
 }
@@ -603,12 +562,12 @@ TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_n
   const int probes = 24;
   static const int kLadder[] = {12, 24, 48, 96, 192, 384, 768, 1536, 3072, 4096};
   QuadratureResult prev =
-      QuadratureRule(family, layer, grade_rim, CachedRule(kLadder[0]), CachedRule(kLadder[0]), probes);
+      QuadratureRule(family, layer, grade_rim, kLadder[0], CachedRule(kLadder[0]), probes);
   TexelValue v, v_prev;
   for (int k = 1; k < int(std::size(kLadder)); ++k) {
     const int n = std::min(kLadder[k], std::max(max_nodes, kLadder[1]));
     const QuadratureResult cur =
-        QuadratureRule(family, layer, grade_rim, CachedRule(n), CachedRule(n), probes);
+        QuadratureRule(family, layer, grade_rim, n, CachedRule(n), probes);
     v = FromTwo(cur, prev);
     const bool converged =
         k >= min_k && std::max(v.err_e, std::max(v.err_scale, v.err_bias)) <= tol;

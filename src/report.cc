@@ -41,16 +41,6 @@ double Median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-// The parameter value at a fractional index (the same map as Axis::Value).
-double AxisValueAt(const Axis& a, double fi) {
-  double t = a.placement == Placement::kCenters ? (fi + 0.5) / a.size
-                                                 : (a.size == 1 ? 0.0 : fi / (a.size - 1));
-  double w = t;
-  if (a.warp == Warp::kSquare) w = t * t;
-  if (a.warp == Warp::kSqrt) w = std::sqrt(t);
-  return a.min + (a.max - a.min) * w;
-}
-
 void WriteAtomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   {
@@ -182,7 +172,7 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
       Probe& p = probes[k];
       p.cr = (a * cells_r) / pr;
       p.cm = one_d ? 0 : (b * cells_m) / pm;
-      const double r = AxisValueAt(s.roughness, p.cr + 0.5);
+      const double r = s.roughness.ValueAt(p.cr + 0.5);
       if (one_d) {
         BakeSpec one = s;
         one.roughness.size = 1;
@@ -191,7 +181,7 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
         one.roughness.warp = Warp::kLinear;
         p.exact.push_back(Bake(one).channels[0].values[0]);
       } else {
-        const TexelEstimate v = IntegrateTexel(s, r, AxisValueAt(s.mu, p.cm + 0.5));
+        const TexelEstimate v = IntegrateTexel(s, r, s.mu.ValueAt(p.cm + 0.5));
         if (s.table == TableKind::kE) {
           p.exact.push_back(v.e);
         } else {

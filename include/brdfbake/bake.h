@@ -55,7 +55,9 @@ struct Axis {
 
   // SPEC.md section 4: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
   // value = min + (max - min) w(t).
-  double Value(int i) const;
+  double Value(int i) const { return ValueAt(i); }
+  // The same map at a fractional index (e.g. i + 0.5, a cell midpoint).
+  double ValueAt(double fi) const;
   std::string ToJson() const;
 };
 
