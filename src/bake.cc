@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include "brdfbake/version.h"
+#include "azimuthal.h"
 #include "integrate.h"
 
 namespace brdfbake {
@@ -139,12 +140,32 @@ void ValidateBakeSpec(const BakeSpec& spec) {
 
 namespace {
 
+// The deterministic quadrature. Tables that need E only (E, E_avg) of the
+// isotropic GGX use the one-dimensional rule with the azimuth integrated in
+// closed form (azimuthal.h); dfg and the other models the two-dimensional
+// rule over the visible-normal disk. Only E is filled in the first case.
+template <class Ndf>
+TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int max_nodes,
+                         double tol) {
+  if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
+    if (spec.table != TableKind::kDfg && ndf.alpha_x() == ndf.alpha_y()) {
+      const AzimuthalResult r =
+          GgxAzimuthalAlbedo(ndf.alpha_x(), std::max(mu, kMuMin), spec.masking, tol, max_nodes);
+      TexelValue v;
+      v.e = r.value;
+      v.err_e = r.error;
+      return v;
+    }
+  }
+  return QuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
+}
+
 template <class Ndf>
 TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t texel_seed) {
   const int n = spec.EffectiveSamples();
   switch (spec.integrator) {
     case IntegratorKind::kQuadrature:
-      return QuadratureTexel(ndf, mu, spec.masking, n, spec.tolerance);
+      return QuadratureFor(ndf, mu, spec, n, spec.tolerance);
     case IntegratorKind::kQmc:
       return QmcTexel(ndf, mu, spec.masking, n, texel_seed, false);
     case IntegratorKind::kMc:
@@ -159,7 +180,7 @@ TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t te
         v.err_e = v.err_bias = v.err_scale = std::numeric_limits<double>::infinity();
         return v;
       }
-      const TexelValue ref = QuadratureTexel(ndf, mu, spec.masking, 512, 1e-10);
+      const TexelValue ref = QuadratureFor(ndf, mu, spec, 512, 1e-10);
       TexelValue v;
       v.e = r.e;
       v.bias = r.fc;
@@ -198,8 +219,18 @@ std::string IntegratorJson(const BakeSpec& spec) {
   j["method"] = IntegratorName(spec.integrator);
   switch (spec.integrator) {
     case IntegratorKind::kQuadrature:
-      j["max_nodes_per_dimension"] = n;
       j["tolerance"] = spec.tolerance;
+      if (spec.model.name == "ggx" && spec.table != TableKind::kDfg) {
+        j["max_pieces"] = n;
+        j["domain"] = "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
+                      "(isotropic GGX); mesh graded geometrically (ratio 3) from the specular "
+                      "peak (scale 2 alpha) and the horizon";
+        j["rule"] = "Gauss-Kronrod 15 per piece, pieces bisected worst first until the "
+                    "summed error estimate meets the tolerance";
+        j["error_estimate"] = "sum over the pieces of |K15 - G7|";
+        break;
+      }
+      j["max_nodes_per_dimension"] = n;
       j["domain"] = "unit square of the GGX visible-normal sampler with the model's alpha "
                     "(weight D G2 (wo.m) / (wo.z pdf_ggx(m)) for beckmann and std), split where "
                     "wi crosses the horizon; std with gamma < 2: inner mesh graded towards the "

@@ -189,7 +189,10 @@ TEST(BakeTest, DfgSumsToE) {
   EXPECT_EQ(dfg.channels[1].name, "dfg.bias");
   for (size_t i = 0; i < e.channels[0].values.size(); ++i) {
     const double sum = dfg.channels[0].values[i] + dfg.channels[1].values[i];
-    EXPECT_NEAR(sum, e.channels[0].values[i], 1e-12);
+    // E comes from the one-dimensional rule (azimuth in closed form), dfg
+    // from the rule over the visible-normal disk: they agree within the
+    // two claims.
+    EXPECT_NEAR(sum, e.channels[0].values[i], e.integration_error + dfg.integration_error);
     EXPECT_GE(dfg.channels[1].values[i], 0.0);
   }
 }
