@@ -11,6 +11,9 @@
 #include <random>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/batch_extra.h"
+#include "brdfbake/kernel_bounds.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ellipsoid.h"
@@ -19,6 +22,19 @@
 
 namespace brdfbake {
 namespace {
+
+// Values below this are compared absolutely (physically negligible, and
+// below the range where float keeps its relative precision through
+// products of small factors).
+constexpr double kValueFloor = 1e-30;
+
+// The stated bound of the float instantiation of the scalar reference: its
+// largest error comes from exponentials of large arguments (Beckmann
+// exp(-r2), the STD's exp(-gamma log1p(.))), which multiply the few-ulp
+// rounding of the argument by the argument itself (up to ~100 before float
+// underflows): 100 x 3 x 2^-24 = 2e-5; the ellipsoid's rotated products
+// cancel by up to ~1/alpha in the same way. Measured maximum 5.6e-5.
+constexpr double kFloatReferenceBound = 1e-4;
 
 struct Params {
   double ax, ay, gamma, tx, ty, tz;
@@ -86,33 +102,169 @@ std::vector<Region> Regions() {
   };
 }
 
-template <class T>
-struct Ndfs {
-  static GgxNdf<T> Ggx(const Params& p) { return GgxNdf<T>(T(p.ax), T(p.ay)); }
+// The float-rounded copy of a direction, built from float values that went
+// through memory: with GCC 12 at -O2 a Vec3<float> constructed from a
+// Vec3<double> was seen to keep its double values (printed (double) of the
+// float members had 52-bit mantissas), so the "float" path ran on unrounded
+// inputs and the comparison measured the inputs' rounding instead of the
+// arithmetic.
+Vec3<float> RoundToFloat(const Vec3<double>& v) {
+  volatile float c[3] = {static_cast<float>(v.x), static_cast<float>(v.y),
+                         static_cast<float>(v.z)};
+  return Vec3<float>(c[0], c[1], c[2]);
+}
+
+double RelErr(double f, double d) { return std::abs(f - d) / std::max(std::abs(d), kValueFloor); }
+
+// One row's running statistics: the worst relative error and the worst ratio
+// of the error to the sample's own bound.
+void Record(StabilityRow* row, double value, double ref, bool lambda, double bound,
+            bool may_flush = false) {
+  ++row->samples;
+  if (!std::isfinite(value) && !(lambda && std::isinf(ref))) {
+    ++row->non_finite;
+    return;
+  }
+  // Lambda: the relative error of 1 + Lambda (what G1 and G2 use).
+  double err = lambda ? (std::isinf(ref) ? 0.0 : std::abs(value - ref) / (1 + ref))
+                      : RelErr(value, ref);
+  // Exponent above 87: the float exponential is subnormal (flushed to 0 by
+  // the batch calls, or with few bits left); only finiteness is checked.
+  if (may_flush) err = 0;
+  row->max_rel_error = std::max(row->max_rel_error, err);
+  row->max_error_over_bound = std::max(row->max_error_over_bound, err / bound);
+}
+
+// Squared standard slope of the normal m under the stretch (ax, ay).
+double StdSlope2(const Vec3<double>& m, double ax, double ay) {
+  const double sx = m.x / ax, sy = m.y / ay;
+  return (sx * sx + sy * sy) / (m.z * m.z);
+}
+// a = cot(theta) / alpha of the direction w (the argument of Lambda_std).
+double LambdaArg(const Vec3<double>& w, double ax, double ay) {
+  const double px = ax * w.x, py = ay * w.y;
+  return w.z / std::sqrt(std::max(px * px + py * py, 1e-300));
+}
+Vec3<double> Half(const Vec3<double>& a, const Vec3<double>& b) {
+  Vec3<double> h(0, 0, 1);
+  HalfVector(a, b, &h);
+  return h;
+}
+
+// The SIMD kernel of one model at one sample: D(m), Lambda(a) and the BRDF
+// (a, b), each against the double reference at the same float inputs and
+// against its documented bound (include/brdfbake/kernel_bounds.h).
+struct SampleBounds {
+  double d = 0, lambda = 0, brdf = 0;
 };
 
-double RelErr(double f, double d) { return std::abs(f - d) / std::max(std::abs(d), 1e-30); }
-
-// Float-vs-double statistics of one quantity of one model type.
-template <class NdfD, class NdfF>
-void Measure(const NdfD& nd, const NdfF& nf, const Vec3<double>& a, const Vec3<double>& b,
-             StabilityRow* rows) {
-  const Vec3<float> af(a), bf(b);
-  // Compare against the double reference at the float-rounded inputs.
-  const Vec3<double> ad(af), bd(bf);
-  const double vals_f[4] = {nf.D(af), nf.Lambda(af), nf.G1(af),
-                            Brdf(nf, Fresnel::One(), af, bf, Masking::kHeightCorrelated)};
-  const double vals_d[4] = {nd.D(ad), nd.Lambda(ad), nd.G1(ad),
-                            Brdf(nd, Fresnel::One(), ad, bd, Masking::kHeightCorrelated)};
-  for (int q = 0; q < 4; ++q) {
-    ++rows[q].samples;
-    if (!std::isfinite(vals_f[q]) && !(q == 1 && std::isinf(vals_d[q]))) {
-      ++rows[q].non_finite;
-      continue;
+SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<double>& m_in,
+                         const Vec3<double>& a_in, const Vec3<double>& b_in, StabilityRow* rows) {
+  SampleBounds sb;
+  const Vec3<float> af = RoundToFloat(a_in), bf = RoundToFloat(b_in), mf = RoundToFloat(m_in);
+  const Vec3<double> a(af), b(bf), m(mf);
+  const float ax = static_cast<float>(p.ax), ay = static_cast<float>(p.ay);
+  float d, l, f;
+  if (model == "ggx") {
+    GgxBatchParams bp;
+    bp.alpha_x = ax;
+    bp.alpha_y = ay;
+    GgxDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
+    GgxLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
+    GgxBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
+    const GgxNdf<double> nd(ax, ay);
+    sb = {bounds::kGgxRel, bounds::kGgxRel, bounds::kGgxRel};
+    Record(&rows[0], d, nd.D(m), false, sb.d);
+    Record(&rows[1], l, nd.Lambda(a), true, sb.lambda);
+    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
+           sb.brdf);
+  } else if (model == "beckmann" || model == "std") {
+    const bool beck = model == "beckmann";
+    const double gamma = beck ? std::numeric_limits<double>::infinity()
+                              : static_cast<double>(static_cast<float>(p.gamma));
+    const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStdExpSlope;
+    const double brdf_slope = beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStdExpSlope;
+    if (beck) {
+      BeckmannBatchParams bp;
+      bp.alpha_x = ax;
+      bp.alpha_y = ay;
+      BeckmannDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
+      BeckmannLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
+      BeckmannBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
+    } else {
+      StdBatchParams bp;
+      bp.alpha_x = ax;
+      bp.alpha_y = ay;
+      bp.gamma = static_cast<float>(gamma);
+      StdDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
+      StdLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
+      StdBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     }
-    const double err = q == 1 ? std::abs(vals_f[q] - vals_d[q]) / (1 + vals_d[q])
-                              : RelErr(vals_f[q], vals_d[q]);
-    rows[q].max_rel_error = std::max(rows[q].max_rel_error, err);
+    const StdNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
+    // The exponent E of the exponential factor (see kernel_bounds.h).
+    auto exponent = [&](const Vec3<double>& n) {
+      const double r2 = StdSlope2(n, ax, ay);
+      return beck ? r2 : gamma * std::log1p(r2 / (gamma - 1));
+    };
+    const double e_m = exponent(m), e_h = exponent(Half(a, b));
+    const double lref = nd.Lambda(a);
+    const double l_bound =
+        std::isinf(lref) ? 1.0 : bounds::SlopeLambdaAbs(LambdaArg(a, ax, ay), lref) / (1 + lref);
+    sb = {bounds::SlopeD(e_m, slope), l_bound, bounds::SlopeBrdf(e_h, brdf_slope)};
+    Record(&rows[0], d, nd.D(m), false, sb.d, e_m > bounds::kFlushExponent);
+    Record(&rows[1], l, lref, true, sb.lambda);
+    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
+           sb.brdf, e_h > bounds::kFlushExponent);
+  } else {
+    EllipsoidBatchParams bp;
+    bp.alpha_x = ax;
+    bp.alpha_y = ay;
+    bp.theta_x = static_cast<float>(p.tx);
+    bp.theta_y = static_cast<float>(p.ty);
+    bp.theta_z = static_cast<float>(p.tz);
+    EllipsoidDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
+    EllipsoidLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
+    EllipsoidBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
+    const EllipsoidNdf<double> nd(bp.alpha_x, bp.alpha_y, bp.theta_x, bp.theta_y, bp.theta_z);
+    const Mat3<double>& m_a = nd.shape_matrix();
+    // A^-T = S^-1 R, as the kernels build it.
+    const Mat3<double> m_ait =
+        Mat3<double>::Diagonal(1.0 / std::max<double>(ax, 1e-4), 1.0 / std::max<double>(ay, 1e-4),
+                               1.0) *
+        (Mat3<double>::RotX(bp.theta_x) * Mat3<double>::RotY(bp.theta_y) *
+         Mat3<double>::RotZ(bp.theta_z));
+    const double li = nd.Lambda(a), lo = nd.Lambda(b);
+    const double l_bound = std::isinf(li) ? 1.0
+                                          : bounds::kEllipsoidLambdaRel * bounds::Kappa(m_a, a) *
+                                                bounds::EllipsoidLambdaScale(m_a, a, li) / (1 + li);
+    sb = {bounds::kEllipsoidDRel * bounds::Kappa(m_ait, m), l_bound,
+          bounds::kEllipsoidBrdfRel * bounds::EllipsoidBrdfCondition(m_a, m_ait, a, b, li, lo)};
+    Record(&rows[0], d, nd.D(m), false, sb.d);
+    Record(&rows[1], l, li, true, sb.lambda);
+    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
+           sb.brdf);
+  }
+  return sb;
+}
+
+// Float instantiation of the scalar reference against double, at the same
+// float inputs, bounded by kFloatReferenceBound or the SIMD kernel's bound
+// at the same sample (the same arithmetic, conditioned by the same inputs),
+// whichever is larger.
+template <class NdfD, class NdfF>
+void MeasureFloat(const NdfD& nd, const NdfF& nf, const Vec3<double>& m, const Vec3<double>& a,
+                  const Vec3<double>& b, const SampleBounds& sb, StabilityRow* rows) {
+  const Vec3<float> af = RoundToFloat(a), bf = RoundToFloat(b), mf = RoundToFloat(m);
+  const Vec3<double> ad(af), bd(bf), md(mf);
+  const double vals_f[4] = {nf.D(mf), nf.Lambda(af), nf.G1(af),
+                            Brdf(nf, Fresnel::One(), af, bf, Masking::kHeightCorrelated)};
+  const double vals_d[4] = {nd.D(md), nd.Lambda(ad), nd.G1(ad),
+                            Brdf(nd, Fresnel::One(), ad, bd, Masking::kHeightCorrelated)};
+  // G1 = 1 / (1 + Lambda): its relative error is that of 1 + Lambda.
+  const double kernel_bound[4] = {sb.d, sb.lambda, sb.lambda, sb.brdf};
+  for (int q = 0; q < 4; ++q) {
+    Record(&rows[q], vals_f[q], vals_d[q], q == 1,
+           std::max(kFloatReferenceBound, kernel_bound[q]));
   }
 }
 
@@ -120,93 +272,80 @@ void Measure(const NdfD& nd, const NdfF& nf, const Vec3<double>& a, const Vec3<d
 
 std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
   std::vector<StabilityRow> out;
-  static const char* kQuantities[4] = {"D", "Lambda", "G1", "brdf"};
+  static const char* kFloatQuantities[4] = {"D", "Lambda", "G1", "brdf"};
+  static const char* kSimdQuantities[3] = {"D", "Lambda", "brdf"};
   const std::string simd_kernel = "simd:" + BatchTarget();
   for (const Region& region : Regions()) {
     for (const char* model : region.models) {
       std::mt19937_64 rng(seed ^ std::hash<std::string>()(std::string(region.name) + model));
-      StabilityRow rows[4];
+      StabilityRow rows[4], srows[3];
       for (int q = 0; q < 4; ++q) {
         rows[q].region = region.name;
         rows[q].model = model;
-        rows[q].quantity = kQuantities[q];
+        rows[q].quantity = kFloatQuantities[q];
         rows[q].kernel = "float";
       }
-      // SIMD rows (GGX D, Lambda, brdf), batched per region.
-      std::vector<float> ix, iy, iz, ox, oy, oz;
-      std::vector<Params> ps;
+      for (int q = 0; q < 3; ++q) {
+        srows[q].region = region.name;
+        srows[q].model = model;
+        srows[q].quantity = kSimdQuantities[q];
+        srows[q].kernel = simd_kernel;
+      }
+      const std::string name = model;
       for (int i = 0; i < samples_per_region; ++i) {
         Params p{0.25, 0.25, 2.0, 0, 0, 0};
         double mu;
         region.draw(rng, &p, &mu);
-        const Vec3<double> a = FromMuPhi(mu, 2 * 3.141592653589793 * U(rng));
-        const Vec3<double> b = FromMuPhi(U(rng), 2 * 3.141592653589793 * U(rng));
-        const std::string m = model;
-        if (m == "ggx") {
-          Measure(GgxNdf<double>(p.ax, p.ay), GgxNdf<float>(float(p.ax), float(p.ay)), a, b, rows);
-          ps.push_back(p);
-          ix.push_back(float(a.x)); iy.push_back(float(a.y)); iz.push_back(float(a.z));
-          ox.push_back(float(b.x)); oy.push_back(float(b.y)); oz.push_back(float(b.z));
-        } else if (m == "beckmann") {
-          Measure(BeckmannNdf<double>(p.ax, p.ay), BeckmannNdf<float>(float(p.ax), float(p.ay)), a,
-                  b, rows);
-        } else if (m == "std") {
-          Measure(StdNdf<double>(p.ax, p.ay, p.gamma),
-                  StdNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), a, b, rows);
+        const double phi_a = 2 * 3.141592653589793 * U(rng);
+        const double mu_b = U(rng);
+        const double phi_b = 2 * 3.141592653589793 * U(rng);
+        Vec3<double> a = FromMuPhi(mu, phi_a);
+        const Vec3<double> b = FromMuPhi(mu_b, phi_b);
+        // Every other sample in the lobe: a normal m tilted by 0.01 to 30
+        // alpha (where D and the BRDF are large, and most sensitive to the
+        // rounding of their inputs), and a = reflect(b, m), so that m is
+        // the half vector of the BRDF pair; otherwise m = a.
+        Vec3<double> m = a;
+        if (i % 2 == 1) {
+          const double tilt = std::min(1.5, std::min(p.ax, p.ay) * LogU(rng, 0.01, 30));
+          m = FromMuPhi(std::cos(tilt), 2 * 3.141592653589793 * U(rng));
+          const Vec3<double> r = Reflect(b, m);
+          if (r.z > 0) a = r;
+        }
+        const SampleBounds sb = MeasureSimd(name, p, m, a, b, srows);
+        if (name == "ggx") {
+          MeasureFloat(GgxNdf<double>(p.ax, p.ay), GgxNdf<float>(float(p.ax), float(p.ay)), m, a, b,
+                       sb, rows);
+        } else if (name == "beckmann") {
+          MeasureFloat(BeckmannNdf<double>(p.ax, p.ay),
+                       BeckmannNdf<float>(float(p.ax), float(p.ay)), m, a, b, sb, rows);
+        } else if (name == "std") {
+          MeasureFloat(StdNdf<double>(p.ax, p.ay, p.gamma),
+                       StdNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), m, a, b, sb, rows);
         } else {
-          Measure(EllipsoidNdf<double>(p.ax, p.ay, p.tx, p.ty, p.tz),
-                  EllipsoidNdf<float>(float(p.ax), float(p.ay), float(p.tx), float(p.ty),
-                                      float(p.tz)),
-                  a, b, rows);
+          MeasureFloat(EllipsoidNdf<double>(p.ax, p.ay, p.tx, p.ty, p.tz),
+                       EllipsoidNdf<float>(float(p.ax), float(p.ay), float(p.tx), float(p.ty),
+                                           float(p.tz)),
+                       m, a, b, sb, rows);
         }
       }
       for (const StabilityRow& r : rows) out.push_back(r);
-      if (!ps.empty()) {
-        StabilityRow srows[3];
-        const char* names[3] = {"D", "Lambda", "brdf"};
-        for (int q = 0; q < 3; ++q) {
-          srows[q].region = region.name;
-          srows[q].model = model;
-          srows[q].quantity = names[q];
-          srows[q].kernel = simd_kernel;
-        }
-        float val[3];
-        for (size_t i = 0; i < ps.size(); ++i) {
-          GgxBatchParams bp;
-          bp.alpha_x = float(ps[i].ax);
-          bp.alpha_y = float(ps[i].ay);
-          GgxDBatch(bp, &ix[i], &iy[i], &iz[i], &val[0], 1);
-          GgxLambdaBatch(bp, &ix[i], &iy[i], &iz[i], &val[1], 1);
-          GgxBrdfBatch(bp, &ix[i], &iy[i], &iz[i], &ox[i], &oy[i], &oz[i], &val[2], 1);
-          const GgxNdf<double> nd(bp.alpha_x, bp.alpha_y);
-          const Vec3<double> a(ix[i], iy[i], iz[i]), b(ox[i], oy[i], oz[i]);
-          const double ref[3] = {nd.D(a), nd.Lambda(a),
-                                 Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated)};
-          for (int q = 0; q < 3; ++q) {
-            ++srows[q].samples;
-            if (!std::isfinite(val[q])) {
-              ++srows[q].non_finite;
-              continue;
-            }
-            const double err = q == 1 ? std::abs(val[q] - ref[q]) / (1 + ref[q])
-                                      : RelErr(val[q], ref[q]);
-            srows[q].max_rel_error = std::max(srows[q].max_rel_error, err);
-          }
-        }
-        for (const StabilityRow& r : srows) out.push_back(r);
-      }
+      for (const StabilityRow& r : srows) out.push_back(r);
     }
   }
   return out;
 }
 
 void WriteStabilityCsv(const std::vector<StabilityRow>& rows, std::ostream& out) {
-  out << "region,model,quantity,kernel,samples,non_finite,max_rel_error\n";
+  out << "region,model,quantity,kernel,samples,non_finite,max_rel_error,max_error_over_bound,"
+         "within_bound\n";
   for (const StabilityRow& r : rows) {
-    char err[32];
+    char err[32], ratio[32];
     std::snprintf(err, sizeof(err), "%.3g", r.max_rel_error);
+    std::snprintf(ratio, sizeof(ratio), "%.3g", r.max_error_over_bound);
     out << r.region << "," << r.model << "," << r.quantity << "," << r.kernel << "," << r.samples
-        << "," << r.non_finite << "," << err << "\n";
+        << "," << r.non_finite << "," << err << "," << ratio << "," << (r.Within() ? "yes" : "NO")
+        << "\n";
   }
 }
 

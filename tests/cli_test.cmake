@@ -120,8 +120,9 @@ expect_one_line_error(eval --grid cube -o "${out_dir}/bad.exr")
 message(STATUS "cli grid: all checks passed")
 
 run_tool(TRUE out err stability --samples 200)
-if(NOT out MATCHES "^region,model,quantity,kernel,samples,non_finite,max_rel_error\n")
-  message(FATAL_ERROR "stability: '${out}'")
+if(NOT out MATCHES "^region,model,quantity,kernel,samples,non_finite,max_rel_error,max_error_over_bound,within_bound\n"
+   OR out MATCHES ",NO\n" OR NOT err MATCHES "0 non-finite outputs, 0 rows outside")
+  message(FATAL_ERROR "stability: '${out}' '${err}'")
 endif()
 expect_one_line_error(stability --samples 0)
 message(STATUS "cli stability: all checks passed")

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/kernel_bounds.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/std_ndf.h"
@@ -44,16 +45,21 @@ constexpr double kErfcRel = 3.5e-7;     // Erfc where erfc(x) >= FLT_MIN
 constexpr double kErfcxRel = 3e-7;      // Erfcx on [0, inf)
 constexpr double kIerfcRel = 3e-7;     // IerfcScaled
 constexpr double kExpNegSqRel = 1.5e-7; // ExpNegSquare where normal
+// (bounds:: in include/brdfbake/kernel_bounds.h states them for the library.)
 constexpr double kBeckDRel = 1e-6, kBeckLambda = 1e-6, kBeckBrdfRel = 2e-6;
 constexpr double kStdDRel = 1e-6, kStdLambda = 1e-6, kStdBrdfRel = 2e-6;
 // Relative error per unit of the exponent (Beckmann r2 and a^2, STD E).
-constexpr double kExpSlope = 3e-7, kStdExpSlope = 4.5e-7;
+constexpr double kExpSlope = bounds::kBeckmannExpSlope, kStdExpSlope = bounds::kStdExpSlope;
+constexpr double kBrdfExpSlope = bounds::kBeckmannBrdfExpSlope;
+static_assert(kBeckDRel + kExpSlope == bounds::SlopeD(1, bounds::kBeckmannExpSlope) &&
+                  kBeckBrdfRel + kBrdfExpSlope == bounds::SlopeBrdf(1, kBrdfExpSlope),
+              "the test's bounds are the library's");
 constexpr double kSampleAbs = 1e-6;     // sampled normals, per component
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // The batch calls flush subnormals to zero (src/batch_beckmann_std.cc):
 // results whose exponential factor exp(-E) is below FLT_MIN (E > 87.3, with
 // some slack for the rounding of E) or whose value is below FLT_MIN may be 0.
-constexpr double kFlushExponent = 87.0;
+constexpr double kFlushExponent = bounds::kFlushExponent;
 
 struct Dirs {
   std::vector<float> x, y, z;
@@ -321,11 +327,11 @@ void CheckBeckmannBrdf() {
       p.masking = masking;
       BeckmannBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
                         wo.z.data(), out, wi.size());
-    }, wi, wo, kBeckBrdfRel, kExpSlope, worst);
+    }, wi, wo, kBeckBrdfRel, kBrdfExpSlope, worst);
     if (::testing::Test::HasFailure()) return;
   }
   std::printf("%s: Beckmann BRDF max rel error %.3g at r2 <= 1, %.3g at r2 <= 87 (bound %.1g + %.2g r2)\n",
-              hwy::TargetName(HWY_TARGET), worst[1], worst[0], kBeckBrdfRel, kExpSlope);
+              hwy::TargetName(HWY_TARGET), worst[1], worst[0], kBeckBrdfRel, kBrdfExpSlope);
 }
 
 void CheckStdBrdf() {

@@ -19,6 +19,7 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/batch_extra.h"
+#include "brdfbake/kernel_bounds.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ellipsoid.h"
 #include "brdfbake/fresnel.h"
@@ -46,9 +47,9 @@ constexpr double kGgxSampleAbs = 2e-6;        // unit-roughness normal, max comp
 constexpr double kGgxPdfRel = 2e-6;           // plus 2e-7 / (w.m) from the dot product
 constexpr double kGgxPdfDot = 2e-7;
 // Ellipsoid: times the condition number kappa of the matrix products.
-constexpr double kEllDRel = 3e-6;
-constexpr double kEllLambdaRel = 2e-6;        // relative to LambdaScale
-constexpr double kEllBrdfRel = 4e-6;
+constexpr double kEllDRel = bounds::kEllipsoidDRel;
+constexpr double kEllLambdaRel = bounds::kEllipsoidLambdaRel;  // relative to LambdaScale
+constexpr double kEllBrdfRel = bounds::kEllipsoidBrdfRel;
 constexpr double kEllPdfRel = 4e-6;           // plus 2e-7 / (u.m)
 constexpr double kEllSampleAbs = 2e-6;        // sphere-space normal
 
@@ -102,35 +103,8 @@ double MaxAbsDiff(const Vec3<double>& a, const Vec3<double>& b) {
   return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
 }
 
-// Componentwise condition number of M v: | |M| |v| | / |M v| >= 1. It is 1
-// for a diagonal M and grows as the rows of M cancel against v.
-double Kappa(const Mat3<double>& m, const Vec3<double>& v) {
-  double num = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double s = std::abs(m.m[i][0] * v.x) + std::abs(m.m[i][1] * v.y) +
-                     std::abs(m.m[i][2] * v.z);
-    num += s * s;
-  }
-  const Vec3<double> mv = m * v;
-  return std::max(1.0, std::sqrt(num / std::max(Dot(mv, mv), 1e-300)));
-}
-
-// Skeel condition number of the round trip p -> q = A^T p -> A^-T q:
-// | |A^-T| |A^T| |p| | / |p| >= 1, which bounds how much the componentwise
-// rounding of q (the sampler's last step) moves the sphere-space normal.
-// It is 1 for diagonal A and grows to ~1/alpha for tilted, thin ellipsoids.
-double KappaRoundTrip(const Mat3<double>& a, const Mat3<double>& ait, const Vec3<double>& p) {
-  double tv[3], r2 = 0;  // tv = |A^T| |p|
-  for (int j = 0; j < 3; ++j) {
-    tv[j] = std::abs(a.m[0][j] * p.x) + std::abs(a.m[1][j] * p.y) + std::abs(a.m[2][j] * p.z);
-  }
-  for (int i = 0; i < 3; ++i) {
-    const double r = std::abs(ait.m[i][0]) * tv[0] + std::abs(ait.m[i][1]) * tv[1] +
-                     std::abs(ait.m[i][2]) * tv[2];
-    r2 += r * r;
-  }
-  return std::max(1.0, std::sqrt(r2 / std::max(Dot(p, p), 1e-300)));
-}
+using bounds::Kappa;
+using bounds::KappaRoundTrip;
 
 const char* Target() { return hwy::TargetName(HWY_TARGET); }
 
@@ -379,15 +353,8 @@ Mat3<double> InvT(const EllipsoidBatchParams& p) {
          r;
 }
 
-// The size of the two terms of 1 + Lambda = A_l(u, n) / u.z before they
-// cancel: |Au| / (||An|| u.z) >= A_l / u.z. Near the cone where the min of
-// eq. 6 switches on (Lambda -> 0) the float product Au is only known to
-// ~1 ulp of |Au|, so Lambda is only known to ~1 ulp of this scale; it
-// exceeds 1 + Lambda by orders of magnitude only for thin lunes (tilted
-// ellipsoids seen at grazing angles from the side opposite the tilt).
 double LambdaScale(const Mat3<double>& a, const Vec3<double>& u, double lambda) {
-  const Vec3<double> an(a.m[0][2], a.m[1][2], a.m[2][2]);
-  return std::max({1.0, lambda, Length(a * u) / (Length(an) * u.z)});
+  return bounds::EllipsoidLambdaScale(a, u, lambda);
 }
 
 // k x A with k = An / ||An||, the matrix the sampler builds its basis from.

@@ -403,8 +403,18 @@ int main(int argc, char** argv) {
         throw std::invalid_argument("--samples must be in [1, 100000000]");
       }
       std::ostringstream out;
-      brdfbake::WriteStabilityCsv(brdfbake::RunStability(stability_samples, stability_seed), out);
+      const std::vector<brdfbake::StabilityRow> rows =
+          brdfbake::RunStability(stability_samples, stability_seed);
+      brdfbake::WriteStabilityCsv(rows, out);
       std::cout << out.str();
+      int64_t outside = 0, non_finite = 0;
+      for (const brdfbake::StabilityRow& r : rows) {
+        outside += r.Within() ? 0 : 1;
+        non_finite += r.non_finite;
+      }
+      std::cerr << rows.size() << " rows: " << non_finite << " non-finite outputs, " << outside
+                << " rows outside their stated bound\n";
+      if (outside > 0) return 1;
     }
     if (*eval && !grid_kind.empty()) {
       brdfbake::ForceTarget(target);

@@ -34,6 +34,12 @@ class BeckmannNdf : public SlopeNdf<T, BeckmannNdf<T>> {
     if (a > T(26)) return T(0);  // exp(-a^2) underflows double here
     return T(0.5) * (std::exp(-a * a) / (a * kSqrtPi<T>) - std::erfc(a));
   }
+  // D = exp(-r^2 - log(ax ay z2^2)) / pi: one exponential of the whole
+  // exponent, so D is accurate wherever it is representable (the quotient
+  // form underflows exp(-r^2) first at tiny alpha).
+  T DFromStretched(T s2, T z2) const {
+    return kInvPi<T> * std::exp(-s2 / z2 - this->LogAreaScale(z2));
+  }
   // Radial CDF 1 - exp(-r^2)  =>  r^2 = -log(1 - u).
   T StdSampleR2(T u) const { return -std::log1p(-std::min(u, T(1) - std::numeric_limits<T>::epsilon() / 2)); }
 

@@ -32,6 +32,12 @@ class GgxNdf : public SlopeNdf<T, GgxNdf<T>> {
     const T inv_a2 = T(1) / (a * a);
     return inv_a2 / (T(2) * (T(1) + std::sqrt(T(1) + inv_a2)));
   }
+  // D = 1 / (pi ax ay z2^2 (1 + s2/z2)^2) = 1 / (pi ax ay (z2 + s2)^2): no
+  // division by z2, no overflow of (1 + r^2)^2 at grazing normals.
+  T DFromStretched(T s2, T z2) const {
+    const T q = z2 + s2;
+    return kInvPi<T> / (this->ax_ * this->ay_ * q * q);
+  }
   // Radial CDF 1 - 1/(1 + r^2)  =>  r^2 = u / (1 - u).
   T StdSampleR2(T u) const { return u / std::max(T(1) - u, std::numeric_limits<T>::min()); }
 

@@ -42,6 +42,7 @@ T ClampAlpha(T alpha) {
 //   T StdP22(T r2) const       standard isotropic slope density
 //   T StdLambda(T a) const     Smith Lambda at a = cot(theta), a > 0
 //   T StdSampleR2(T u) const   inverse radial CDF of the standard slopes
+// and may shadow DFromStretched (below) with a form that keeps D's range.
 template <typename T, class Derived>
 class SlopeNdf {
  public:
@@ -55,9 +56,17 @@ class SlopeNdf {
   T D(const Vec3<T>& m) const {
     if (!(m.z > T(0))) return T(0);
     const T z2 = m.z * m.z;
+    if (!(z2 > T(0))) return T(0);
     const T sx = m.x / ax_, sy = m.y / ay_;
-    const T r2 = (sx * sx + sy * sy) / z2;
-    return self().StdP22(r2) / (ax_ * ay_ * z2 * z2);
+    return self().DFromStretched(sx * sx + sy * sy, z2);
+  }
+
+  // D from the stretched tangential length s2 = (m.x/ax)^2 + (m.y/ay)^2 and
+  // z2 = m.z^2 > 0: P22(s2 / z2) / (ax ay z2^2). A model overrides this when
+  // the quotient form loses range: P22 can underflow (float: below 1e-38)
+  // where D itself, divided by a tiny ax ay z2^2, is still representable.
+  T DFromStretched(T s2, T z2) const {
+    return self().StdP22(s2 / z2) / (ax_ * ay_ * z2 * z2);
   }
 
   // Smith Lambda; +inf for directions on or below the horizon.
@@ -98,6 +107,11 @@ class SlopeNdf {
   T PdfNdf(const Vec3<T>& m) const { return m.z > T(0) ? D(m) * m.z : T(0); }
 
  protected:
+  // log(ax ay z2^2) as a sum of logs: finite even where the product
+  // underflows (z2 > 0 is denormal-safe).
+  T LogAreaScale(T z2) const {
+    return std::log(ax_) + std::log(ay_) + T(2) * std::log(z2);
+  }
   const Derived& self() const { return static_cast<const Derived&>(*this); }
 
   T ax_, ay_;

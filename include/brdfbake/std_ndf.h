@@ -354,6 +354,14 @@ class StdNdf : public SlopeNdf<T, StdNdf<T>> {
     return kInvPi<T> * std::exp(-gamma_ * std::log1p(r2 / (gamma_ - T(1))));
   }
 
+  // D = exp(-gamma log1p(r^2 / (gamma - 1)) - log(ax ay z2^2)) / pi: one
+  // exponential of the whole exponent (see BeckmannNdf::DFromStretched).
+  T DFromStretched(T s2, T z2) const {
+    if (beckmann_inf_) return beckmann_.DFromStretched(s2, z2);
+    return kInvPi<T> *
+           std::exp(-gamma_ * std::log1p(s2 / z2 / (gamma_ - T(1))) - this->LogAreaScale(z2));
+  }
+
   // Smith Lambda at a = cot(theta), unit roughness (seed 004 eq. 17 / 21);
   // see the header comment for the method and its measured accuracy.
   T StdLambda(T a) const {

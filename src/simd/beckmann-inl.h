@@ -38,7 +38,9 @@
 //   Lambda: |err| <= 1e-6 max(1, Lambda) + 3e-7 a^2 Lambda [4.4e-7 relative
 //           to max(1, Lambda)] (the a^2 term is the same amplification of
 //           the rounding of a);
-//   BRDF:   relative 2e-6 + 3e-7 r2 [9e-7 at r2 <= 1, 2.4e-5 at r2 <= 87].
+//   BRDF:   relative 2e-6 + 3.6e-7 r2 [9e-7 at r2 <= 1, 2.4e-5 at r2 <= 87;
+//           2.18e-5 at r2 = 65.5 in `brdfbake stability`'s lobe samples]
+//           (the exponent is formed from s = wi + wo: one ulp more).
 // Where exp(-r2) is below FLT_MIN (r2 > 87.3) it is a subnormal, and 0 for
 // r2 > 104; the batch functions flush subnormals to zero, so their D and BRDF
 // are 0 there (src/batch_beckmann_std.cc).
