@@ -1,0 +1,127 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Dynamic dispatch of the Beckmann and STD visible-normal samplers and their
+// densities (src/simd/beckmann_sampling-inl.h, std_sampling-inl.h): compiled
+// once per Highway target by foreach_target.h.
+
+#include "brdfbake/batch_sampling.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/batch_sampling.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/beckmann_sampling-inl.h"
+#include "simd/foreach-inl.h"
+#include "simd/foreach_out-inl.h"
+#include "simd/std_sampling-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+void BeckmannSampleVisibleRow(const BeckmannBatchParams& p, const float* const* in,
+                              float* const* out, size_t n) {
+  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
+  ForEachVectorOut<5, 3>(in, 0.5f, out, n, [&](auto d, const auto* v, auto* r) {
+    BeckmannSampleVisible(d, c, v[0], v[1], v[2], v[3], v[4], &r[0], &r[1], &r[2]);
+  });
+}
+
+void BeckmannPdfVisibleRow(const BeckmannBatchParams& p, const float* const* in, float* out,
+                           size_t n) {
+  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
+  ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    return BeckmannPdfVisible(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
+  });
+}
+
+void StdSamplePseudoVnisRow(const StdBatchParams& p, const float* const* in, float* const* out,
+                            size_t n) {
+  const StdSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
+  ForEachVectorOut<5, 3>(in, 0.5f, out, n, [&](auto d, const auto* v, auto* r) {
+    StdSamplePseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], &r[0], &r[1], &r[2]);
+  });
+}
+
+void StdPdfPseudoVnisRow(const StdBatchParams& p, const float* const* in, float* out,
+                         size_t n) {
+  const StdSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
+  ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    return StdPdfPseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
+  });
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+#if HWY_ARCH_X86
+#include <xmmintrin.h>
+#endif
+
+namespace brdfbake {
+namespace {
+
+// Subnormals flushed to zero (MXCSR FTZ and DAZ) for the duration of one
+// batch call, the caller's mode restored on return: the same guard, for the
+// same reason (the exponentials of D and Lambda pass through the subnormal
+// range, which x86 handles in microcode), as in src/batch_beckmann_std.cc.
+class FlushSubnormals {
+ public:
+#if HWY_ARCH_X86
+  FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
+  ~FlushSubnormals() { _mm_setcsr(saved_); }
+
+ private:
+  unsigned saved_;
+#endif
+};
+
+}  // namespace
+
+HWY_EXPORT(BeckmannSampleVisibleRow);
+HWY_EXPORT(BeckmannPdfVisibleRow);
+HWY_EXPORT(StdSamplePseudoVnisRow);
+HWY_EXPORT(StdPdfPseudoVnisRow);
+
+void BeckmannSampleVisibleBatch(const BeckmannBatchParams& p, const float* wo_x,
+                                const float* wo_y, const float* wo_z, const float* u1,
+                                const float* u2, float* m_x, float* m_y, float* m_z, size_t n) {
+  const float* in[5] = {wo_x, wo_y, wo_z, u1, u2};
+  float* out[3] = {m_x, m_y, m_z};
+  const FlushSubnormals ftz;
+  HWY_DYNAMIC_DISPATCH(BeckmannSampleVisibleRow)(p, in, out, n);
+}
+
+void BeckmannPdfVisibleBatch(const BeckmannBatchParams& p, const float* wo_x, const float* wo_y,
+                             const float* wo_z, const float* m_x, const float* m_y,
+                             const float* m_z, float* out, size_t n) {
+  const float* in[6] = {wo_x, wo_y, wo_z, m_x, m_y, m_z};
+  const FlushSubnormals ftz;
+  HWY_DYNAMIC_DISPATCH(BeckmannPdfVisibleRow)(p, in, out, n);
+}
+
+void StdSamplePseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
+                              const float* wo_z, const float* u1, const float* u2, float* m_x,
+                              float* m_y, float* m_z, size_t n) {
+  const float* in[5] = {wo_x, wo_y, wo_z, u1, u2};
+  float* out[3] = {m_x, m_y, m_z};
+  const FlushSubnormals ftz;
+  HWY_DYNAMIC_DISPATCH(StdSamplePseudoVnisRow)(p, in, out, n);
+}
+
+void StdPdfPseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
+                           const float* wo_z, const float* m_x, const float* m_y,
+                           const float* m_z, float* out, size_t n) {
+  const float* in[6] = {wo_x, wo_y, wo_z, m_x, m_y, m_z};
+  const FlushSubnormals ftz;
+  HWY_DYNAMIC_DISPATCH(StdPdfPseudoVnisRow)(p, in, out, n);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE

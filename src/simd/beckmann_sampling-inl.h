@@ -1,0 +1,255 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Beckmann visible-normal sampling and its density, float lanes; the scalar
+// twins (double reference) are BeckmannNdf::SampleVisible and ::PdfVisible in
+// include/brdfbake/beckmann.h, which this kernel follows step by step: for
+// the same (u1, u2) it returns the same normal.
+//
+// The method (Heitz and d'Eon 2014, the stretch of seed 003 section 3.2):
+// in the unit-roughness configuration the view is (s, 0, c) after a rotation
+// by its azimuth, c = cos(theta), s = sin(theta), mu = c / s = cot(theta). The
+// visible slope x along the view azimuth has density (c - s x)^+ exp(-x^2),
+// whose CDF up to normalization is
+//   F(x) = c erfc(-x) / 2 + s exp(-x^2) / (2 sqrt(pi)),   x <= mu,
+// and y given x is N(0, 1/2). x solves F(x) = u1 F(mu) on [-9, min(mu, 9)]
+// (the scalar search interval), y = erf^-1(2 u2 - 1).
+//
+// Solving for x in float, without losing the tails:
+//  - The equation is written as log F(x) = log(u1 F(mu)) for u1 <= 1/2 and
+//    as log U(x) = log((1 - u1) F(mu)) for u1 > 1/2, U(x) = F(mu) - F(x) the
+//    upper tail (1 - u1 is exact there). Both sides are log-concave in x
+//    (a CDF and a survival function of the log-concave density), so Newton
+//    on them is globally convergent; 4 steps from the initial guess below,
+//    safeguarded by a bracket [lo, hi] that falls back to bisection when a
+//    step leaves it, the same on every lane.
+//  - F and V(x) = c - F(x) = c erfc(x) / 2 - s exp(-x^2) / (2 sqrt(pi)) are
+//    built from E = exp(-x^2) and R = erfcx(|x|) (simd/math-inl.h) so that
+//    the smaller of the two is a sum of positive terms or one subtraction
+//    at relative precision: F = E (c R + s/sqrt(pi)) / 2 for x <= 0,
+//    V = E (c R - s/sqrt(pi)) / 2 for x > 0, and U = V(x) - V(mu).
+//  - Near the top of the interval (r = mu - x small) V(x) - V(mu) cancels to
+//    first order while U is of second order, U ~ s r^2 exp(-mu^2) / (2
+//    sqrt(pi)), and the error of x would grow like 1e-7 / r. There U comes
+//    from its Taylor series in r instead: with t = mu - z,
+//      U = s exp(-mu^2) / sqrt(pi) int_0^r z exp(2 mu z - z^2) dz
+//        = s exp(-mu^2) / sqrt(pi) sum_n H_n(mu) r^(n+2) / (n! (n+2)),
+//    by the generating function of the Hermite polynomials H_n; 9 terms
+//    reach 2e-8 relative where 2 mu r < 1/2 and r < 1/10 (used there).
+//  - Initial guess: the empirical fit of pbrt-v3's BeckmannSample11 (from
+//    Mitsuba), erf(x0) = erf(mu) - (1 + erf(mu)) (1 - u1)^p(theta) with
+//    p(theta) = 1 - 0.876 theta + 0.4265 theta^2 - 0.0594 theta^3, written as
+//    x0 = erf^-1(2 v - 1), v = erfc(-mu) / 2 (-expm1(p log1p(-u1))), which
+//    keeps its relative precision for small u1. Measured in double over
+//    mu in [1e-4, 1e4] and u1 in [1e-12, 1 - 2^-24], the error of x after
+//    4 steps is below 1e-7 (1 + x^2).
+//
+// Error, in the unit-roughness configuration where the map from (u1, u2) to
+// the normal does not depend on alpha (nh = normalize(m.x / ax, m.y / ay,
+// m.z), as for GGX in ggx_sampling-inl.h): |nh - nh_ref| <= 2e-6 (max
+// component) against the double reference at the same float inputs, for
+// any u1, u2 in [0, 1] (tests/simd_sampling_test.cc; measured maxima
+// there). Views with w.z <= 0 give m = (0, 0, 0).
+// PdfVisible: relative error 2e-6 + 3e-7 r2 + 2e-7 / (w.m), r2 the exponent
+// of D at m (beckmann-inl.h) and the last term the rounding of w.m; 0 where
+// exp(-r2) is below FLT_MIN and the batch call flushes it.
+//
+// Cost per lane: 4 Newton steps of one exp, one log, two divisions and ~60
+// FMA each, plus the guess (atan, log1p, expm1, one erf^-1) and erf^-1(2 u2 -
+// 1).
+
+#if defined(BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_
+#undef BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_
+#else
+#define BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_
+#endif
+
+#include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+
+#include "simd/beckmann-inl.h"
+#include "simd/ggx-inl.h"
+#include "simd/math-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// erf^-1(2u - 1) for u in [0, 1], with the tail mass q = min(u, 1 - u)
+// clamped below at 2^-53 (|result| <= 5.86), as the scalar reference's clamp
+// of 2u - 1 to +-(1 - 2^-52) does in double. With w = -log(4 q (1 - q)) =
+// -log(1 - (2u - 1)^2) (accurate in both tails: q and 1 - q are exact or at
+// relative precision),
+//   erf^-1(2u - 1) = (2u - 1) P(w),
+// P fitted here (mpmath chebyfit, 40 digits) on w in [0, 5] in the variable
+// w - 2.5 (degree 9, fit error 6e-9 relative) and on [5, 35.36] in
+// sqrt(w) - 4 (degree 12, 3e-8), the split and the variables of Giles,
+// "Approximating the erfinv function" (GPU Computing Gems, 2011).
+// Error: 2.5e-7 relative for any u in [0, 1] (measured max in
+// tests/simd_sampling_test.cc, SimdBeckmannSamplingTest.CheckErfInv).
+template <class D, class V>
+HWY_INLINE V ErfInvCentered(D d, V u) {
+  static constexpr float kCentral[10] = {
+      -8.931926310e-09f, 2.333596782e-08f,  4.681313612e-07f,  -3.463985195e-06f,
+      -4.972419902e-06f, 2.183493925e-04f,  -1.252726419e-03f, -4.177392926e-03f,
+      2.466402799e-01f,  1.501409411e+00f};
+  static constexpr float kTail[13] = {
+      -4.602292165e-07f, 1.621187948e-06f, 2.140182687e-06f,  -1.575197530e-05f,
+      2.306117131e-05f,  -2.063626016e-05f, 4.839427129e-05f, -1.284933533e-04f,
+      3.260869416e-04f,  -8.647334762e-04f, 1.258546021e-03f, 1.009492755e+00f,
+      3.839783907e+00f};
+  const V one = hn::Set(d, 1.0f);
+  const V q = hn::Max(hn::Min(u, hn::Sub(one, u)), hn::Set(d, 0x1p-53f));
+  const V w = hn::Neg(hn::Log(d, hn::Mul(hn::Mul(hn::Set(d, 4.0f), q), hn::Sub(one, q))));
+  const V p_central = HornerHighFirst(d, kCentral, hn::Sub(w, hn::Set(d, 2.5f)));
+  const V p_tail = HornerHighFirst(d, kTail, hn::Sub(hn::Sqrt(w), hn::Set(d, 4.0f)));
+  const V p = hn::IfThenElse(hn::Lt(w, hn::Set(d, 5.0f)), p_central, p_tail);
+  const V abs_x = hn::NegMulAdd(hn::Set(d, 2.0f), q, one);  // |2u - 1| = 1 - 2q
+  return hn::CopySign(hn::Mul(p, abs_x), hn::Sub(u, hn::Set(d, 0.5f)));
+}
+
+// The scalar search interval of the visible slope is [-kBeckmannSlopeMax,
+// min(mu, kBeckmannSlopeMax)]; Newton steps of the kernel.
+constexpr float kBeckmannSlopeMax = 9.0f;
+constexpr int kBeckmannNewtonSteps = 4;
+// Terms of the Taylor series of U near the top of the interval.
+constexpr int kBeckmannTaylorTerms = 9;
+
+// F(x) and V(x) = c - F(x) of the header, from E = exp(-x^2) and
+// R = erfcx(|x|) (also returned: erfc(|x|) = E R).
+template <class D, class V>
+HWY_INLINE void BeckmannSlopeCdf(D d, V c, V s_pi, V x, V* f, V* v, V* e, V* r) {
+  *e = ExpNegSquare(d, x);
+  *r = Erfcx(d, hn::Abs(x));
+  const auto neg = hn::Le(x, hn::Zero(d));
+  // x <= 0: F = E (c R + s/sqrt(pi)) / 2;  x > 0: V = E (c R - s/sqrt(pi)) / 2.
+  const V small = hn::Mul(hn::Mul(*e, hn::Set(d, 0.5f)),
+                          hn::MulAdd(c, *r, hn::IfThenElse(neg, s_pi, hn::Neg(s_pi))));
+  const V large = hn::Sub(c, small);
+  *f = hn::IfThenElse(neg, small, large);
+  *v = hn::IfThenElse(neg, large, small);
+}
+
+// BeckmannNdf::SampleVisible (see the header): the visible normal of
+// Beckmann for the view w and (u1, u2); m = 0 for w.z <= 0.
+template <class D, class V>
+HWY_INLINE void BeckmannSampleVisible(D d, const BeckmannConsts<D>& k, V wx, V wy, V wz, V u1,
+                                      V u2, V* mx, V* my, V* mz) {
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
+  const V inv_sqrt_pi = hn::Set(d, 0.56418958354775628f);
+  const V slope_max = hn::Set(d, kBeckmannSlopeMax);
+  // Stretch: the view (gx, gy, w.z), its azimuth (cos_phi, sin_phi) ((1, 0)
+  // at the pole, as in the scalar code) and c, s of the unit-roughness view.
+  const V gx = hn::Mul(k.ax, wx), gy = hn::Mul(k.ay, wy);
+  const V g2 = hn::MulAdd(gx, gx, hn::Mul(gy, gy));
+  const auto off_pole = hn::Gt(g2, hn::Set(d, 1.2e-38f));
+  const V inv_g = RsqrtNewton(d, hn::IfThenElse(off_pole, g2, one));
+  const V cos_phi = hn::IfThenElse(off_pole, hn::Mul(gx, inv_g), one);
+  const V sin_phi = hn::IfThenElseZero(off_pole, hn::Mul(gy, inv_g));
+  const V g = hn::IfThenElseZero(off_pole, hn::Mul(g2, inv_g));
+  const V inv_len = RsqrtNewton(d, hn::MulAdd(wz, wz, hn::Mul(g, g)));
+  const V c = hn::Mul(wz, inv_len), s = hn::Mul(g, inv_len);
+  const V s_pi = hn::Mul(s, inv_sqrt_pi);
+  const V mu_raw = hn::Div(c, s);  // +inf at the pole
+  const V mu = hn::Min(mu_raw, slope_max);
+
+  // The target of each form: u1 F(mu) (lower) or (1 - u1) F(mu) (upper).
+  V f_mu, v_mu, e_mu, r_mu;
+  BeckmannSlopeCdf(d, c, s_pi, mu, &f_mu, &v_mu, &e_mu, &r_mu);
+  const auto upper = hn::Gt(u1, half);
+  const V sign = hn::IfThenElse(upper, hn::Set(d, -1.0f), one);
+  const V tail = hn::IfThenElse(upper, hn::Sub(one, u1), u1);
+  const V target = hn::Max(hn::Mul(tail, f_mu), hn::Set(d, 1e-37f));
+  const V log_target = hn::Log(d, target);
+
+  // Taylor coefficients of U in r = mu - x: b_n = s E(mu) / sqrt(pi) h_n /
+  // (n + 2), h_n = H_n(mu) / n! from h_(n+1) = (2 mu h_n - 2 h_(n-1)) / (n + 1).
+  // Used where r max(mu, 2.5) < 1/4 and mu is not clamped.
+  V b[kBeckmannTaylorTerms];
+  {
+    const V scale = hn::Mul(s_pi, e_mu), two_mu = hn::Add(mu, mu);
+    V h_prev = one, h = two_mu;
+    b[0] = hn::Mul(scale, half);
+    for (int n = 1; n < kBeckmannTaylorTerms; ++n) {
+      b[n] = hn::Mul(scale, hn::Mul(h, hn::Set(d, 1.0f / static_cast<float>(n + 2))));
+      const V h_next = hn::Mul(hn::MulSub(two_mu, h, hn::Add(h_prev, h_prev)),
+                               hn::Set(d, 1.0f / static_cast<float>(n + 1)));
+      h_prev = h;
+      h = h_next;
+    }
+  }
+  const V taylor_scale = hn::IfThenElse(hn::Lt(mu_raw, slope_max),
+                                        hn::Max(mu, hn::Set(d, 2.5f)), hn::Set(d, 1e30f));
+
+  // Initial guess x0 = erf^-1(2 v - 1), v = erfc(-mu)/2 (-expm1(p log1p(-u1))).
+  const V theta = hn::Atan(d, hn::Div(s, c));
+  const V p = hn::MulAdd(
+      theta,
+      hn::MulAdd(theta, hn::MulAdd(theta, hn::Set(d, -0.0594f), hn::Set(d, 0.4265f)),
+                 hn::Set(d, -0.876f)),
+      one);
+  const V log_1mu = hn::Log1p(d, hn::Neg(hn::Min(u1, hn::Set(d, 0.99999994f))));
+  const V cdf_mu = hn::NegMulAdd(hn::Mul(e_mu, r_mu), half, one);  // erfc(-mu) / 2
+  const V v0 = hn::Mul(cdf_mu, hn::Neg(hn::Expm1(d, hn::Mul(p, log_1mu))));
+  V lo = hn::Neg(slope_max), hi = mu;
+  V x = hn::Min(hn::Max(ErfInvCentered(d, v0), lo), hi);
+
+  // Safeguarded Newton on log F (sign = 1) or log U (sign = -1).
+  for (int step = 0; step < kBeckmannNewtonSteps; ++step) {
+    V f, v, e, r;
+    BeckmannSlopeCdf(d, c, s_pi, x, &f, &v, &e, &r);
+    const V dist = hn::Sub(mu, x);
+    V series = b[kBeckmannTaylorTerms - 1];
+    for (int n = kBeckmannTaylorTerms - 2; n >= 0; --n) series = hn::MulAdd(series, dist, b[n]);
+    const auto near_top = hn::Lt(hn::Mul(dist, taylor_scale), hn::Set(d, 0.25f));
+    const V u_tail = hn::IfThenElse(near_top, hn::Mul(hn::Mul(dist, dist), series),
+                                    hn::Sub(v, v_mu));
+    const V val = hn::IfThenElse(upper, u_tail, f);
+    // x is above the root where sign (val - target) > 0.
+    const auto above = hn::Gt(hn::Mul(sign, hn::Sub(val, target)), zero);
+    hi = hn::IfThenElse(above, x, hi);
+    lo = hn::IfThenElse(above, lo, x);
+    // F'(x) = (c - s x) E / sqrt(pi); the step is sign (log val - log target) val / F'.
+    const V dens = hn::Mul(hn::Mul(hn::NegMulAdd(s, x, c), e), inv_sqrt_pi);
+    const auto val_ok = hn::Gt(val, zero);
+    const V log_val = hn::Log(d, hn::IfThenElse(val_ok, val, one));
+    const V next = hn::NegMulAdd(
+        sign, hn::Div(hn::Mul(hn::Sub(log_val, log_target), val), dens), x);
+    const auto inside = hn::And(val_ok, hn::And(hn::Ge(next, lo), hn::Le(next, hi)));
+    x = hn::IfThenElse(inside, next, hn::Mul(half, hn::Add(lo, hi)));
+  }
+
+  // y = erf^-1(2 u2 - 1); rotate back to the view azimuth, unstretch, and
+  // m = normalize(-slope, 1).
+  const V y = ErfInvCentered(d, u2);
+  const V sx = hn::Mul(k.ax, hn::MulSub(cos_phi, x, hn::Mul(sin_phi, y)));
+  const V sy = hn::Mul(k.ay, hn::MulAdd(sin_phi, x, hn::Mul(cos_phi, y)));
+  const V inv_m = RsqrtNewton(d, hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, one)));
+  const auto valid = hn::Gt(wz, zero);
+  *mx = hn::IfThenElseZero(valid, hn::Neg(hn::Mul(sx, inv_m)));
+  *my = hn::IfThenElseZero(valid, hn::Neg(hn::Mul(sy, inv_m)));
+  *mz = hn::IfThenElseZero(valid, inv_m);
+}
+
+// BeckmannNdf::PdfVisible = DVisible: G1(w) max(0, w.m) D(m) / w.z with
+// Lambda = N / M (beckmann-inl.h), G1 = M / (M + N). Zero unless w.z and w.m
+// are positive (D is zero for m.z <= 0).
+template <class D, class V>
+HWY_INLINE V BeckmannPdfVisible(D d, const BeckmannConsts<D>& k, V wx, V wy, V wz, V mx, V my,
+                                V mz) {
+  const V zero = hn::Zero(d);
+  V num, den;
+  BeckmannLambdaParts(d, k, wx, wy, wz, &num, &den);
+  const V wm = hn::MulAdd(wx, mx, hn::MulAdd(wy, my, hn::Mul(wz, mz)));
+  const V pdf = hn::Mul(hn::Div(hn::Mul(den, wm), hn::Mul(hn::Add(den, num), wz)),
+                        BeckmannD(d, k, mx, my, mz));
+  return hn::IfThenElseZero(hn::And(hn::Gt(wz, zero), hn::Gt(wm, zero)), pdf);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#endif  // BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_

@@ -1,0 +1,103 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// STD pseudo visible-normal importance sampling (seed 004 section 7.2,
+// Algorithm 1) and its density, float lanes; the scalar twins (double
+// reference) are StdNdf::SamplePseudoVnis and ::PdfPseudoVnis in
+// include/brdfbake/std_ndf.h.
+//
+// Algorithm 1 picks one proposal per material, from sigma = sqrt(alpha_x
+// alpha_y) and gamma alone: NDF sampling of the STD itself (seed 004
+// section 6, eq. 11-12 and 42), the GGX visible normals (seed 003) or the
+// Beckmann visible normals, the last two with the STD's alpha_x, alpha_y.
+// The choice is a per-call constant, so it is made once per call by the
+// scalar StdNdf::PseudoVnisBranch (one definition of the thresholds, with
+// the seed's comparisons as std_ndf.h documents them), and every lane runs
+// the same existing kernel:
+//   branch 0: StdSampleNdf (std-inl.h; BeckmannSampleNdf for gamma >= 1e10),
+//             density D(m) m.z (StdD or BeckmannD);
+//   branch 1: GgxSampleVisible and GgxPdfVisible (ggx_sampling-inl.h);
+//   branch 2: BeckmannSampleVisible and BeckmannPdfVisible
+//             (beckmann_sampling-inl.h).
+// The density is the proposal's, not the STD's visible-normal density: the
+// Monte Carlo weight is f cos(theta_i) / pdf (std_ndf.h corrects eq. 43).
+//
+// Error: that of the kernel of the branch (stated in its file): normals
+// within 2e-6 (max component) of the reference in the unit-roughness
+// configuration for branches 1 and 2, within 2e-6 absolute for branch 0;
+// densities within 2e-6 + 4.5e-7 E + 2e-7 / (w.m) relative, E the exponent
+// of D at m (r2 for Beckmann; the w.m term only for the visible-normal
+// densities), 0 where the batch call flushes exp(-E) below FLT_MIN.
+
+#if defined(BRDFBAKE_SIMD_STD_SAMPLING_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef BRDFBAKE_SIMD_STD_SAMPLING_INL_H_
+#undef BRDFBAKE_SIMD_STD_SAMPLING_INL_H_
+#else
+#define BRDFBAKE_SIMD_STD_SAMPLING_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include "brdfbake/std_ndf.h"
+#include "simd/beckmann-inl.h"
+#include "simd/beckmann_sampling-inl.h"
+#include "simd/ggx_sampling-inl.h"
+#include "simd/std-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// Per-call constants: the STD's (with its Beckmann constants, which the
+// Beckmann branch and gamma >= 1e10 use), GGX's, and the branch.
+template <class D>
+struct StdSamplingConsts {
+  StdConsts<D> std;
+  GgxSamplingConsts<D> ggx;
+  int branch;  // StdNdf::PseudoVnisBranch(): 0 NDF, 1 GGX VNDF, 2 Beckmann VNDF
+  StdSamplingConsts(D d, float ax, float ay, float gamma)
+      : std(d, ax, ay, 1.0f, gamma),
+        ggx(d, ax, ay),
+        branch(StdNdf<double>(ax, ay, gamma).PseudoVnisBranch()) {}
+};
+
+template <class D, class V>
+HWY_INLINE void StdSamplePseudoVnis(D d, const StdSamplingConsts<D>& c, V wx, V wy, V wz, V u1,
+                                    V u2, V* mx, V* my, V* mz) {
+  switch (c.branch) {
+    case 1:
+      GgxSampleVisible(d, c.ggx, wx, wy, wz, u1, u2, mx, my, mz);
+      return;
+    case 2:
+      BeckmannSampleVisible(d, c.std.b, wx, wy, wz, u1, u2, mx, my, mz);
+      return;
+    default:
+      if (c.std.beckmann) {
+        BeckmannSampleNdf(d, c.std.b, u1, u2, mx, my, mz);
+      } else {
+        StdSampleNdf(d, c.std, u1, u2, mx, my, mz);
+      }
+  }
+}
+
+template <class D, class V>
+HWY_INLINE V StdPdfPseudoVnis(D d, const StdSamplingConsts<D>& c, V wx, V wy, V wz, V mx, V my,
+                              V mz) {
+  switch (c.branch) {
+    case 1:
+      return GgxPdfVisible(d, c.ggx, wx, wy, wz, mx, my, mz);
+    case 2:
+      return BeckmannPdfVisible(d, c.std.b, wx, wy, wz, mx, my, mz);
+    default: {
+      const V dm = c.std.beckmann ? BeckmannD(d, c.std.b, mx, my, mz) : StdD(d, c.std, mx, my, mz);
+      return hn::Mul(dm, hn::Max(mz, hn::Zero(d)));
+    }
+  }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#endif  // BRDFBAKE_SIMD_STD_SAMPLING_INL_H_
