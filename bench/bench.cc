@@ -158,8 +158,12 @@ void BM_BrdfBatch(benchmark::State& state, std::string target) {
   state.SetItemsProcessed(state.iterations() * kN);
 }
 
-// The other models' BRDF kernels and the visible-normal samplers, per target.
-enum class Kernel { kBeckmannBrdf, kStdBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible };
+// D, G2, the other models' BRDF kernels and the visible-normal samplers, per
+// target. D takes the wi array as normals, G2 the (wi, wo) pairs.
+enum class Kernel {
+  kBeckmannBrdf, kStdBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible,
+  kGgxD, kBeckmannD, kStdD, kEllipsoidD, kGgxG2, kBeckmannG2, kStdG2, kEllipsoidG2
+};
 void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) {
   ForceTarget(target);
   FloatInputs& in = FIn();
@@ -208,6 +212,34 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
         EllipsoidSampleVisibleBatch(ep, in.ox.data(), in.oy.data(), in.oz.data(), u1.data(),
                                     u2.data(), mx.data(), my.data(), mz.data(), kN);
         break;
+      case Kernel::kGgxD:
+        GgxDBatch(gp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kBeckmannD:
+        BeckmannDBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kStdD:
+        StdDBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kEllipsoidD:
+        EllipsoidDBatch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kGgxG2:
+        GgxG2Batch(gp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
+                   in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kBeckmannG2:
+        BeckmannG2Batch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
+                        in.oy.data(), in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kStdG2:
+        StdG2Batch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
+                   in.oz.data(), in.out.data(), kN);
+        break;
+      case Kernel::kEllipsoidG2:
+        EllipsoidG2Batch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
+                         in.oy.data(), in.oz.data(), in.out.data(), kN);
+        break;
     }
     benchmark::DoNotOptimize(in.out.data());
     benchmark::DoNotOptimize(mz.data());
@@ -251,8 +283,6 @@ void BM_Grid(benchmark::State& state) {
 BENCHMARK(BM_Grid)->Name("BM_Grid/hemisphere/ggx")->Arg(1)->Arg(2)->UseRealTime()
     ->Unit(benchmark::kMillisecond);
 
-// Whole-table bakes (GGX E, height-correlated, edges placement, all cores):
-// items = texels. Arguments: entries per axis, integrator, samples.
 // The E table of the default GGX (edges placement, size NxN): the bake
 // alone, or the bake and the EXR file written (`write`). Counters: the
 // claimed maximum error and the true one against a reference baked at
@@ -318,6 +348,14 @@ int main(int argc, char** argv) {
                                  Kernel::kGgxSampleVisible, t);
     benchmark::RegisterBenchmark(("BM_SampleVisible/ellipsoid/" + t).c_str(),
                                  brdfbake::BM_KernelBatch, Kernel::kEllipsoidSampleVisible, t);
+    const std::pair<const char*, Kernel> per_model[] = {
+        {"BM_D/ggx/", Kernel::kGgxD},          {"BM_D/beckmann/", Kernel::kBeckmannD},
+        {"BM_D/std/", Kernel::kStdD},          {"BM_D/ellipsoid/", Kernel::kEllipsoidD},
+        {"BM_G2/ggx/", Kernel::kGgxG2},        {"BM_G2/beckmann/", Kernel::kBeckmannG2},
+        {"BM_G2/std/", Kernel::kStdG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2}};
+    for (const auto& [prefix, kernel] : per_model) {
+      benchmark::RegisterBenchmark((prefix + t).c_str(), brdfbake::BM_KernelBatch, kernel, t);
+    }
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -16,6 +16,7 @@
 
 #include "simd/beckmann-inl.h"
 #include "simd/foreach-inl.h"
+#include "simd/fresnel-inl.h"
 #include "simd/std-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -57,9 +58,45 @@ void BeckmannBrdfRow(const BeckmannBatchParams& p, const float* const* in, float
                      size_t n) {
   const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
   const bool separable = p.masking == Masking::kSeparable;
-  ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    return BeckmannBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5]);
+  WithFresnel(DF(), p, [&](const auto& fresnel) {
+    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+      return BeckmannBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    });
   });
+}
+
+// G1, G2 and the NDF sampling density D(m) m.z of a Beckmann constant set
+// (also the STD rows' gamma = inf branch).
+void BeckmannG1With(const BeckmannConsts<DF>& c, const float* const* in, float* out, size_t n) {
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    const auto lambda = [&](auto x, auto y, auto z) { return BeckmannLambda(d, c, x, y, z); };
+    return G1FromLambda(d, lambda, v[0], v[1], v[2]);
+  });
+}
+void BeckmannG2With(const BeckmannConsts<DF>& c, bool separable, const float* const* in,
+                    float* out, size_t n) {
+  ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    const auto lambda = [&](auto x, auto y, auto z) { return BeckmannLambda(d, c, x, y, z); };
+    return G2FromLambda(d, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
+  });
+}
+void BeckmannPdfNdfWith(const BeckmannConsts<DF>& c, const float* const* in, float* out,
+                        size_t n) {
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    return hn::Mul(BeckmannD(d, c, v[0], v[1], v[2]), hn::Max(v[2], hn::Zero(d)));
+  });
+}
+
+void BeckmannG1Row(const BeckmannBatchParams& p, const float* const* in, float* out, size_t n) {
+  BeckmannG1With(BeckmannConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.f0), in, out, n);
+}
+void BeckmannG2Row(const BeckmannBatchParams& p, const float* const* in, float* out, size_t n) {
+  BeckmannG2With(BeckmannConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.f0),
+                 p.masking == Masking::kSeparable, in, out, n);
+}
+void BeckmannPdfNdfRow(const BeckmannBatchParams& p, const float* const* in, float* out,
+                       size_t n) {
+  BeckmannPdfNdfWith(BeckmannConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.f0), in, out, n);
 }
 
 void BeckmannDRow(const BeckmannBatchParams& p, const float* const* in, float* out, size_t n) {
@@ -88,14 +125,41 @@ void BeckmannSampleRow(const BeckmannBatchParams& p, const float* u1, const floa
 void StdBrdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
   const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   const bool separable = p.masking == Masking::kSeparable;
-  if (c.beckmann) {
+  WithFresnel(DF(), p, [&](const auto& fresnel) {
+    if (c.beckmann) {
+      ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+        return BeckmannBrdf(d, c.b, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+      });
+      return;
+    }
     ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-      return BeckmannBrdf(d, c.b, separable, v[0], v[1], v[2], v[3], v[4], v[5]);
+      return StdBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
     });
-    return;
-  }
+  });
+}
+
+void StdG1Row(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+  if (c.beckmann) return BeckmannG1With(c.b, in, out, n);
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    const auto lambda = [&](auto x, auto y, auto z) { return StdLambda(d, c, x, y, z); };
+    return G1FromLambda(d, lambda, v[0], v[1], v[2]);
+  });
+}
+void StdG2Row(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+  const bool separable = p.masking == Masking::kSeparable;
+  if (c.beckmann) return BeckmannG2With(c.b, separable, in, out, n);
   ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    return StdBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5]);
+    const auto lambda = [&](auto x, auto y, auto z) { return StdLambda(d, c, x, y, z); };
+    return G2FromLambda(d, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
+  });
+}
+void StdPdfNdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+  if (c.beckmann) return BeckmannPdfNdfWith(c.b, in, out, n);
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    return hn::Mul(StdD(d, c, v[0], v[1], v[2]), hn::Max(v[2], hn::Zero(d)));
   });
 }
 
@@ -178,6 +242,12 @@ HWY_EXPORT(StdBrdfRow);
 HWY_EXPORT(StdDRow);
 HWY_EXPORT(StdLambdaRow);
 HWY_EXPORT(StdSampleRow);
+HWY_EXPORT(BeckmannG1Row);
+HWY_EXPORT(BeckmannG2Row);
+HWY_EXPORT(BeckmannPdfNdfRow);
+HWY_EXPORT(StdG1Row);
+HWY_EXPORT(StdG2Row);
+HWY_EXPORT(StdPdfNdfRow);
 
 void BeckmannBrdfBatch(const BeckmannBatchParams& p, const float* wi_x, const float* wi_y,
                        const float* wi_z, const float* wo_x, const float* wo_y,
@@ -236,6 +306,29 @@ void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2
   const FlushSubnormals ftz;
   HWY_DYNAMIC_DISPATCH(StdSampleRow)(p, u1, u2, out, n);
 }
+
+#define BRDFBAKE_BATCH_3(Name, Params, Row)                                              \
+  void Name(const Params& p, const float* x, const float* y, const float* z, float* out,   \
+            size_t n) {                                                                     \
+    const float* in[3] = {x, y, z};                                                         \
+    const FlushSubnormals ftz;                                                              \
+    HWY_DYNAMIC_DISPATCH(Row)(p, in, out, n);                                               \
+  }
+#define BRDFBAKE_BATCH_6(Name, Params, Row)                                                 \
+  void Name(const Params& p, const float* ix, const float* iy, const float* iz,            \
+            const float* ox, const float* oy, const float* oz, float* out, size_t n) {     \
+    const float* in[6] = {ix, iy, iz, ox, oy, oz};                                          \
+    const FlushSubnormals ftz;                                                              \
+    HWY_DYNAMIC_DISPATCH(Row)(p, in, out, n);                                               \
+  }
+BRDFBAKE_BATCH_3(BeckmannG1Batch, BeckmannBatchParams, BeckmannG1Row)
+BRDFBAKE_BATCH_6(BeckmannG2Batch, BeckmannBatchParams, BeckmannG2Row)
+BRDFBAKE_BATCH_3(BeckmannPdfNdfBatch, BeckmannBatchParams, BeckmannPdfNdfRow)
+BRDFBAKE_BATCH_3(StdG1Batch, StdBatchParams, StdG1Row)
+BRDFBAKE_BATCH_6(StdG2Batch, StdBatchParams, StdG2Row)
+BRDFBAKE_BATCH_3(StdPdfNdfBatch, StdBatchParams, StdPdfNdfRow)
+#undef BRDFBAKE_BATCH_3
+#undef BRDFBAKE_BATCH_6
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -96,8 +96,20 @@ void EllipsoidBrdfRow(const EllipsoidBatchParams& p, const float* const* in, flo
                       size_t n) {
   const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
   const bool separable = p.masking == Masking::kSeparable;
+  WithFresnel(DF(), p, [&](const auto& fresnel) {
+    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+      return EllipsoidBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    });
+  });
+}
+
+void EllipsoidG2Row(const EllipsoidBatchParams& p, const float* const* in, float* out,
+                    size_t n) {
+  const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
+  const bool separable = p.masking == Masking::kSeparable;
   ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    return EllipsoidBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5]);
+    const auto lambda = [&](auto x, auto y, auto z) { return EllipsoidLambda(d, c, x, y, z); };
+    return G2FromLambda(d, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
   });
 }
 
@@ -134,6 +146,7 @@ HWY_EXPORT(EllipsoidDRow);
 HWY_EXPORT(EllipsoidLambdaRow);
 HWY_EXPORT(EllipsoidG1Row);
 HWY_EXPORT(EllipsoidBrdfRow);
+HWY_EXPORT(EllipsoidG2Row);
 HWY_EXPORT(EllipsoidPdfVisibleRow);
 HWY_EXPORT(EllipsoidSampleVisibleRow);
 
@@ -213,6 +226,13 @@ void EllipsoidPdfVisibleBatch(const EllipsoidBatchParams& p, const float* wo_x,
                               const float* m_y, const float* m_z, float* out, size_t n) {
   const float* in[6] = {wo_x, wo_y, wo_z, m_x, m_y, m_z};
   HWY_DYNAMIC_DISPATCH(EllipsoidPdfVisibleRow)(p, in, out, n);
+}
+
+void EllipsoidG2Batch(const EllipsoidBatchParams& p, const float* wi_x, const float* wi_y,
+                      const float* wi_z, const float* wo_x, const float* wo_y,
+                      const float* wo_z, float* out, size_t n) {
+  const float* in[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
+  HWY_DYNAMIC_DISPATCH(EllipsoidG2Row)(p, in, out, n);
 }
 
 }  // namespace brdfbake

@@ -16,6 +16,7 @@
 #include <hwy/highway.h>
 
 #include "simd/foreach-inl.h"
+#include "simd/fresnel-inl.h"
 #include "simd/ggx-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -28,8 +29,31 @@ void GgxBrdfRow(const GgxBatchParams& p, const float* const* in, float* out, siz
   const D d;
   const GgxConsts<D> c(d, p.alpha_x, p.alpha_y, p.f0);
   const bool separable = p.masking == Masking::kSeparable;
+  WithFresnel(d, p, [&](const auto& fresnel) {
+    ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
+      return GgxBrdf(dd, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    });
+  });
+}
+
+void GgxG1Row(const GgxBatchParams& p, const float* const* in, float* out, size_t n) {
+  using D = hn::ScalableTag<float>;
+  const D d;
+  const GgxConsts<D> c(d, p.alpha_x, p.alpha_y, p.f0);
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
+    const auto lambda = [&](auto x, auto y, auto z) { return GgxLambda(dd, c, x, y, z); };
+    return G1FromLambda(dd, lambda, v[0], v[1], v[2]);
+  });
+}
+
+void GgxG2Row(const GgxBatchParams& p, const float* const* in, float* out, size_t n) {
+  using D = hn::ScalableTag<float>;
+  const D d;
+  const GgxConsts<D> c(d, p.alpha_x, p.alpha_y, p.f0);
+  const bool separable = p.masking == Masking::kSeparable;
   ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
-    return GgxBrdf(dd, c, separable, v[0], v[1], v[2], v[3], v[4], v[5]);
+    const auto lambda = [&](auto x, auto y, auto z) { return GgxLambda(dd, c, x, y, z); };
+    return G2FromLambda(dd, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
   });
 }
 
@@ -61,6 +85,8 @@ namespace brdfbake {
 HWY_EXPORT(GgxBrdfRow);
 HWY_EXPORT(GgxDRow);
 HWY_EXPORT(GgxLambdaRow);
+HWY_EXPORT(GgxG1Row);
+HWY_EXPORT(GgxG2Row);
 HWY_EXPORT(ThisTarget);
 
 void GgxBrdfBatch(const GgxBatchParams& p, const float* wi_x, const float* wi_y,
@@ -80,6 +106,19 @@ void GgxLambdaBatch(const GgxBatchParams& p, const float* w_x, const float* w_y,
                     const float* w_z, float* out, size_t n) {
   const float* in[3] = {w_x, w_y, w_z};
   HWY_DYNAMIC_DISPATCH(GgxLambdaRow)(p, in, out, n);
+}
+
+void GgxG1Batch(const GgxBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
+                float* out, size_t n) {
+  const float* in[3] = {w_x, w_y, w_z};
+  HWY_DYNAMIC_DISPATCH(GgxG1Row)(p, in, out, n);
+}
+
+void GgxG2Batch(const GgxBatchParams& p, const float* wi_x, const float* wi_y,
+                const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
+                float* out, size_t n) {
+  const float* in[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
+  HWY_DYNAMIC_DISPATCH(GgxG2Row)(p, in, out, n);
 }
 
 std::string BatchTarget() { return hwy::TargetName(HWY_DYNAMIC_DISPATCH(ThisTarget)()); }

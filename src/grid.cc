@@ -91,6 +91,28 @@ RowDirs MakeRow(const GridRequest& req, int y) {
 
 }  // namespace
 
+// The batch kernels' Fresnel from a grey Fresnel (channel 0).
+template <class P>
+void SetBatchFresnel(const Fresnel& f, P* p) {
+  switch (f.kind) {
+    case FresnelKind::kOne:
+      p->f0 = 1.0f;
+      return;
+    case FresnelKind::kSchlick:
+      p->f0 = float(f.f0[0]);
+      return;
+    case FresnelKind::kDielectric:
+      p->fresnel = BatchFresnel::kDielectric;
+      p->eta = float(f.eta);
+      return;
+    case FresnelKind::kConductor:
+      p->fresnel = BatchFresnel::kConductor;
+      p->eta = float(f.n[0]);
+      p->k = float(f.k[0]);
+      return;
+  }
+}
+
 Grid EvalGrid(const GridRequest& req) {
   ValidateGridRequest(req);
   std::unique_ptr<tbb::global_control> limit;
@@ -102,44 +124,40 @@ Grid EvalGrid(const GridRequest& req) {
   g.width = req.width;
   g.height = req.height;
   g.values.assign(size_t(req.width) * req.height, 0.0f);
-  // The SIMD kernels take F = 1 or a grey Schlick F0; other Fresnel models
-  // go through the scalar reference.
-  const bool simd = req.fresnel.kind == FresnelKind::kOne ||
-                    (req.fresnel.kind == FresnelKind::kSchlick && req.fresnel.IsGrey());
+  // The SIMD kernels take one channel of each Fresnel kind; a coloured
+  // Fresnel (one grid, three channels) goes through the scalar reference.
+  const bool simd = req.fresnel.IsGrey();
   g.path = simd ? "simd:" + BatchTarget() : "scalar";
   const std::unique_ptr<Model> model = simd ? nullptr : MakeModel(req.model);
   tbb::parallel_for(0, req.height, [&](int y) {
     const RowDirs r = MakeRow(req, y);
     float* out = g.values.data() + size_t(y) * req.width;
     const std::string& name = req.model.name;
-    const float f0 = req.fresnel.kind == FresnelKind::kOne ? 1.0f : float(req.fresnel.f0[0]);
     if (req.kind == GridKind::kG1) {
       const double rough = (y + 0.5) / req.height;
       const float a = float(std::max(rough * rough, 1e-4));
       if (simd) {
-        // G1 = 1 / (1 + Lambda) from each model's Lambda kernel.
         if (name == "ggx") {
           GgxBatchParams p;
           p.alpha_x = p.alpha_y = a;
-          GgxLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+          GgxG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
         } else if (name == "beckmann") {
           BeckmannBatchParams p;
           p.alpha_x = p.alpha_y = a;
-          BeckmannLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+          BeckmannG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
         } else if (name == "std") {
           StdBatchParams p;
           p.alpha_x = p.alpha_y = a;
           p.gamma = float(req.model.gamma);
-          StdLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+          StdG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
         } else {
           EllipsoidBatchParams p;
           p.alpha_x = p.alpha_y = a;
           p.theta_x = float(req.model.theta_x);
           p.theta_y = float(req.model.theta_y);
           p.theta_z = float(req.model.theta_z);
-          EllipsoidLambdaBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+          EllipsoidG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
         }
-        for (int x = 0; x < req.width; ++x) out[x] = 1.0f / (1.0f + out[x]);
       } else {
         ModelParams mp = req.model;
         mp.alpha_x = mp.alpha_y = a;
@@ -156,7 +174,7 @@ Grid EvalGrid(const GridRequest& req) {
         GgxBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;
-        p.f0 = f0;
+        SetBatchFresnel(req.fresnel, &p);
         p.masking = req.masking;
         GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
@@ -164,7 +182,7 @@ Grid EvalGrid(const GridRequest& req) {
         BeckmannBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;
-        p.f0 = f0;
+        SetBatchFresnel(req.fresnel, &p);
         p.masking = req.masking;
         BeckmannBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                           r.oz.data(), out, req.width);
@@ -173,7 +191,7 @@ Grid EvalGrid(const GridRequest& req) {
         p.alpha_x = ax;
         p.alpha_y = ay;
         p.gamma = float(req.model.gamma);
-        p.f0 = f0;
+        SetBatchFresnel(req.fresnel, &p);
         p.masking = req.masking;
         StdBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
@@ -184,7 +202,7 @@ Grid EvalGrid(const GridRequest& req) {
         p.theta_x = float(req.model.theta_x);
         p.theta_y = float(req.model.theta_y);
         p.theta_z = float(req.model.theta_z);
-        p.f0 = f0;
+        SetBatchFresnel(req.fresnel, &p);
         p.masking = req.masking;
         EllipsoidBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                            r.oz.data(), out, req.width);

@@ -17,6 +17,15 @@ namespace brdfbake {
 namespace {
 
 TEST(GridTest, SimdSliceMatchesScalarModel) {
+ // Each Fresnel kind: grey on the SIMD path, coloured (channel 0 the same)
+ // on the scalar one.
+ struct FresnelPair {
+  Fresnel grey, coloured;
+ };
+ const FresnelPair fresnels[] = {
+     {Fresnel::Schlick({0.04, 0.04, 0.04}), Fresnel::Schlick({0.04, 0.5, 0.5})},
+     {Fresnel::Conductor({0.2, 0.2, 0.2}, {3, 3, 3}), Fresnel::Conductor({0.2, 1, 1}, {3, 2, 2})}};
+ for (const FresnelPair& fp : fresnels) {
  for (const char* model : {"ggx", "beckmann", "std", "ellipsoid"}) {
   GridRequest req;
   req.model.name = model;
@@ -24,15 +33,15 @@ TEST(GridTest, SimdSliceMatchesScalarModel) {
   req.model.theta_x = 0.3;
   req.model.alpha_x = 0.2;
   req.model.alpha_y = 0.45;
-  req.fresnel = Fresnel::Schlick({0.04, 0.04, 0.04});
+  req.fresnel = fp.grey;
   req.width = 64;
   req.height = 48;
   const Grid simd = EvalGrid(req);
   EXPECT_EQ(simd.path.rfind("simd:", 0), 0u);
-  // Same request through the scalar path: a non-grey Schlick forces it, and
+  // Same request through the scalar path: a coloured Fresnel forces it, and
   // channel 0 of it equals the grey one.
   GridRequest scalar_req = req;
-  scalar_req.fresnel = Fresnel::Schlick({0.04, 0.5, 0.5});
+  scalar_req.fresnel = fp.coloured;
   const Grid scalar = EvalGrid(scalar_req);
   EXPECT_EQ(scalar.path, "scalar");
   double worst = 0;
@@ -47,6 +56,7 @@ TEST(GridTest, SimdSliceMatchesScalarModel) {
   }
   std::printf("slice %s: SIMD (%s) vs scalar max relative difference %.3g\n", model,
               simd.path.c_str(), worst);
+ }
  }
 }
 

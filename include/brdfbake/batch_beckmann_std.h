@@ -15,6 +15,7 @@
 
 #include <cstddef>
 
+#include "brdfbake/batch.h"
 #include "brdfbake/brdf.h"
 
 namespace brdfbake {
@@ -23,6 +24,8 @@ struct BeckmannBatchParams {
   float alpha_x = 0.25f, alpha_y = 0.25f;  // clamped below at 1e-4
   float f0 = 1.0f;                         // Schlick F0; 1 means F = 1
   Masking masking = Masking::kHeightCorrelated;
+  BatchFresnel fresnel = BatchFresnel::kSchlick;  // see batch.h
+  float eta = 1.5f, k = 0.0f;
 };
 
 struct StdBatchParams {
@@ -30,9 +33,11 @@ struct StdBatchParams {
   float gamma = 2.0f;  // clamped below at 1.5 + 1e-6; +inf (and >= 1e10) is Beckmann
   float f0 = 1.0f;     // Schlick F0; 1 means F = 1
   Masking masking = Masking::kHeightCorrelated;
+  BatchFresnel fresnel = BatchFresnel::kSchlick;  // see batch.h
+  float eta = 1.5f, k = 0.0f;
 };
 
-// f(wi, wo) with Schlick Fresnel for n pairs of unit directions given as
+// f(wi, wo) with the Fresnel of p (batch.h) for n pairs of unit directions given as
 // separate x, y, z arrays. Zero when either direction is on or below the
 // horizon.
 void BeckmannBrdfBatch(const BeckmannBatchParams& p, const float* wi_x, const float* wi_y,
@@ -49,7 +54,18 @@ void BeckmannLambdaBatch(const BeckmannBatchParams& p, const float* w_x, const f
 void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const float* u2,
                             float* m_x, float* m_y, float* m_z, size_t n);
 
-// The same four for STD.
+// Smith G1(w) = 1 / (1 + Lambda(w)) (0 on and below the horizon); G2 of the
+// reflection pairs (wi, wo) with p.masking (0 when either direction is on or
+// below the horizon); the density D(m) m.z of BeckmannSampleNdfBatch.
+void BeckmannG1Batch(const BeckmannBatchParams& p, const float* w_x, const float* w_y,
+                     const float* w_z, float* out, size_t n);
+void BeckmannG2Batch(const BeckmannBatchParams& p, const float* wi_x, const float* wi_y,
+                     const float* wi_z, const float* wo_x, const float* wo_y,
+                     const float* wo_z, float* out, size_t n);
+void BeckmannPdfNdfBatch(const BeckmannBatchParams& p, const float* m_x, const float* m_y,
+                         const float* m_z, float* out, size_t n);
+
+// The same seven for STD.
 void StdBrdfBatch(const StdBatchParams& p, const float* wi_x, const float* wi_y,
                   const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
                   float* out, size_t n);
@@ -59,6 +75,14 @@ void StdLambdaBatch(const StdBatchParams& p, const float* w_x, const float* w_y,
                     const float* w_z, float* out, size_t n);
 void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2, float* m_x,
                        float* m_y, float* m_z, size_t n);
+
+void StdG1Batch(const StdBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
+                float* out, size_t n);
+void StdG2Batch(const StdBatchParams& p, const float* wi_x, const float* wi_y,
+                const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
+                float* out, size_t n);
+void StdPdfNdfBatch(const StdBatchParams& p, const float* m_x, const float* m_y,
+                    const float* m_z, float* out, size_t n);
 
 }  // namespace brdfbake
 

@@ -51,6 +51,8 @@ struct EllipsoidBatchParams {
   float theta_x = 0, theta_y = 0, theta_z = 0;
   float f0 = 1.0f;  // Schlick F0 of EllipsoidBrdfBatch; 1 means F = 1
   Masking masking = Masking::kHeightCorrelated;
+  BatchFresnel fresnel = BatchFresnel::kSchlick;  // see batch.h
+  float eta = 1.5f, k = 0.0f;
 };
 
 // D(m) (zero for m.z <= 0).
@@ -62,8 +64,13 @@ void EllipsoidLambdaBatch(const EllipsoidBatchParams& p, const float* w_x, const
 // G1(w) (zero for w.z <= 0).
 void EllipsoidG1Batch(const EllipsoidBatchParams& p, const float* w_x, const float* w_y,
                       const float* w_z, float* out, size_t n);
-// f(wi, wo) with Schlick F(wo.h) and p.masking; zero unless both are above
+// f(wi, wo) with the Fresnel of p (batch.h) at wo.h and p.masking; zero unless both are above
 // the horizon.
+// G2 of the reflection pairs (wi, wo) with p.masking (0 when either direction
+// is on or below the horizon).
+void EllipsoidG2Batch(const EllipsoidBatchParams& p, const float* wi_x, const float* wi_y,
+                      const float* wi_z, const float* wo_x, const float* wo_y,
+                      const float* wo_z, float* out, size_t n);
 void EllipsoidBrdfBatch(const EllipsoidBatchParams& p, const float* wi_x, const float* wi_y,
                         const float* wi_z, const float* wo_x, const float* wo_y,
                         const float* wo_z, float* out, size_t n);

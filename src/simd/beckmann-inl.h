@@ -86,7 +86,7 @@ struct BeckmannConsts {
   }
 };
 
-// RsqrtNewton and SchlickAtHalf come from simd/ggx-inl.h.
+// RsqrtNewton, CosAtHalf and SchlickFresnel come from simd/ggx-inl.h.
 
 template <class D, class V>
 HWY_INLINE V BeckmannD(D d, const BeckmannConsts<D>& c, V mx, V my, V mz) {
@@ -123,9 +123,9 @@ HWY_INLINE V BeckmannLambda(D d, const BeckmannConsts<D>& c, V wx, V wy, V wz) {
   return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), hn::Div(num, den), hn::Set(d, HUGE_VALF));
 }
 
-template <class D, class V>
-HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix, V iy, V iz,
-                          V ox, V oy, V oz) {
+template <class D, class V, class Fr>
+HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
+                          V oz, const Fr& fresnel) {
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
   const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(sz, sz));
@@ -146,7 +146,7 @@ HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix,
   } else {
     g_den = hn::MulAdd(ni, mo, hn::MulAdd(no, mi, mm));
   }
-  const V f = SchlickAtHalf(d, c.f0, ox, oy, oz, sx, sy, sz, len2);
+  const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
   const V four_zz = hn::Mul(hn::Set(d, 4.0f), hn::Mul(iz, oz));
   // The exponential multiplies last (see BeckmannD).
   const V val = hn::Mul(hn::Mul(hn::Div(hn::Mul(f, mm), hn::Mul(g_den, four_zz)), d_rest), e);
@@ -154,6 +154,12 @@ HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix,
                              hn::And(hn::Gt(len2, hn::Set(d, 1e-30f)),
                                      hn::Lt(r2, hn::Set(d, 104.0f))));
   return hn::IfThenElseZero(valid, val);
+}
+
+// With Schlick's Fresnel at the constants' F0.
+template <class D, class V>
+HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
+  return BeckmannBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 // cos(2 pi u), sin(2 pi u) for any float u. u is reduced exactly, in turns,

@@ -253,9 +253,9 @@ HWY_INLINE V EllipsoidG1(D d, const EllipsoidConsts<D>& c, V ux, V uy, V uz) {
   return hn::IfThenElseZero(hn::Gt(uz, hn::Zero(d)), g1);
 }
 
-template <class D, class V>
-HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V ix, V iy, V iz,
-                           V ox, V oy, V oz) {
+template <class D, class V, class Fr>
+HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
+                           V oz, const Fr& fresnel) {
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   V d_num, d_den;
   EllipsoidDParts(c, sx, sy, sz, &d_num, &d_den);
@@ -273,10 +273,16 @@ HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V i
   const V num = hn::Mul(d_num, hn::Mul(dni, dno));
   const V dv = hn::Div(num, hn::Mul(hn::Mul(hn::Set(d, 4.0f), d_den), g_den));
   const V len2 = Dot3(sx, sy, sz, sx, sy, sz);
-  const V f = SchlickAtHalf(d, c.f0, ox, oy, oz, sx, sy, sz, len2);
+  const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
+}
+
+// With Schlick's Fresnel at the constants' F0.
+template <class D, class V>
+HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
+  return EllipsoidBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 // Seed eq. 30: D(m) (u.m) / A_l(u, n); zero unless u.z, m.z, u.m > 0.

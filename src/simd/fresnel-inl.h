@@ -52,6 +52,9 @@
 
 #include <hwy/highway.h>
 
+#include "brdfbake/batch.h"
+#include "simd/ggx-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
 namespace HWY_NAMESPACE {
@@ -159,6 +162,42 @@ HWY_INLINE V FresnelConductor(D d, const FresnelConductorConsts<D>& k, V cos_i) 
   // F = (|r_perp|^2 + |r_parl|^2) / 2 = n1 (d2 + n2) / (2 d1 d2).
   const V f = hn::Div(hn::Mul(n1, hn::Add(d2, n2)), hn::Mul(hn::Set(d, 2.0f), hn::Mul(d1, d2)));
   return hn::Min(f, one);
+}
+
+// The two as functors F(d, cos) for the BRDF kernels (see SchlickFresnel in
+// simd/ggx-inl.h).
+template <class D>
+struct DielectricFresnel {
+  FresnelDielectricConsts<D> k;
+  template <class V>
+  HWY_INLINE V operator()(D d, V cos_i) const {
+    return FresnelDielectric(d, k, cos_i);
+  }
+};
+template <class D>
+struct ConductorFresnel {
+  FresnelConductorConsts<D> k;
+  template <class V>
+  HWY_INLINE V operator()(D d, V cos_i) const {
+    return FresnelConductor(d, k, cos_i);
+  }
+};
+
+// Calls f(fresnel) with the functor that the batch parameters select: one
+// branch per call, none per lane.
+template <class D, class Params, class F>
+HWY_INLINE void WithFresnel(D d, const Params& p, const F& f) {
+  switch (p.fresnel) {
+    case BatchFresnel::kDielectric:
+      f(DielectricFresnel<D>{FresnelDielectricConsts<D>(d, p.eta)});
+      return;
+    case BatchFresnel::kConductor:
+      f(ConductorFresnel<D>{FresnelConductorConsts<D>(d, p.eta, p.k)});
+      return;
+    case BatchFresnel::kSchlick:
+      break;
+  }
+  f(SchlickFresnel<D>{hn::Set(d, p.f0)});
 }
 
 }  // namespace HWY_NAMESPACE

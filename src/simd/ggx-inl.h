@@ -62,16 +62,45 @@ HWY_INLINE V RsqrtNewton(D d, V x) {
 #endif
 }
 
-// Schlick Fresnel at wo.h with h = s / |s|, len2 = |s|^2 (shared by every
+// wo.h with h = s / |s|, len2 = |s|^2, clamped to [0, 1] (shared by every
 // model's BRDF kernel).
 template <class D, class V>
-HWY_INLINE V SchlickAtHalf(D d, V f0, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
+HWY_INLINE V CosAtHalf(D d, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
   const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
   const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  const V cos_d = hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
-  const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
-  const V m2 = hn::Mul(m, m);
-  return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
+  return hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
+}
+
+// Schlick's Fresnel F0 + (1 - F0)(1 - c)^5 of a cosine: the default
+// Fresnel of the BRDF kernels, which take any functor F(d, cos) (the
+// dielectric and conductor ones are in simd/fresnel-inl.h).
+template <class D>
+struct SchlickFresnel {
+  hn::Vec<D> f0;
+  template <class V>
+  HWY_INLINE V operator()(D d, V cos_d) const {
+    const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
+    const V m2 = hn::Mul(m, m);
+    return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
+  }
+};
+
+// Smith masking from a Lambda kernel `lambda(w_x, w_y, w_z)` (+inf on and
+// below the horizon): G1 = 1 / (1 + Lambda), and for a reflection pair G2 =
+// 1 / (1 + Lambda_i + Lambda_o) (height-correlated) or G1(wi) G1(wo)
+// (separable); wi.h = wo.h = |wi + wo| / 2 >= 0 for every pair, and wi = -wo
+// puts both on the horizon, where Lambda = +inf makes G2 = 0.
+template <class D, class V, class L>
+HWY_INLINE V G1FromLambda(D d, const L& lambda, V wx, V wy, V wz) {
+  return hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Set(d, 1.0f), lambda(wx, wy, wz)));
+}
+template <class D, class V, class L>
+HWY_INLINE V G2FromLambda(D d, bool separable, const L& lambda, V ix, V iy, V iz, V ox, V oy,
+                          V oz) {
+  const V one = hn::Set(d, 1.0f);
+  const V li = lambda(ix, iy, iz), lo = lambda(ox, oy, oz);
+  if (separable) return hn::Div(one, hn::Mul(hn::Add(one, li), hn::Add(one, lo)));
+  return hn::Div(one, hn::Add(one, hn::Add(li, lo)));
 }
 
 template <class D, class V>
@@ -93,9 +122,9 @@ HWY_INLINE V GgxLambda(D d, const GgxConsts<D>& c, V wx, V wy, V wz) {
   return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), lambda, hn::Set(d, HUGE_VALF));
 }
 
-template <class D, class V>
+template <class D, class V, class Fr>
 HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
-                     V oz) {
+                     V oz, const Fr& fresnel) {
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
   const V q = hn::MulAdd(hn::Mul(sx, sx), c.inv_ax2,
@@ -112,10 +141,16 @@ HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V i
   }
   const V num = hn::Mul(hn::Mul(len2, len2), c.inv_pi_axay);
   const V dv = hn::Div(num, hn::Mul(hn::Mul(q, q), vis_den));
-  const V f = SchlickAtHalf(d, c.f0, ox, oy, oz, sx, sy, sz, len2);
+  const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
+}
+
+// With Schlick's Fresnel at the constants' F0.
+template <class D, class V>
+HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
+  return GgxBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 }  // namespace HWY_NAMESPACE

@@ -203,9 +203,9 @@ HWY_INLINE V StdLambda(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
                         hn::Set(d, HUGE_VALF));
 }
 
-template <class D, class V>
+template <class D, class V, class Fr>
 HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
-                     V oz) {
+                     V oz, const Fr& fresnel) {
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
   const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(sz, sz));
@@ -222,12 +222,18 @@ HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V i
   const V one = hn::Set(d, 1.0f);
   const V g_den = separable ? hn::Mul(hn::Add(one, li), hn::Add(one, lo))
                             : hn::Add(one, hn::Add(li, lo));
-  const V f = SchlickAtHalf(d, c.b.f0, ox, oy, oz, sx, sy, sz, len2);
+  const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
   const V four_zz = hn::Mul(hn::Set(d, 4.0f), hn::Mul(iz, oz));
   const V val = hn::Mul(d_h, hn::Div(f, hn::Mul(g_den, four_zz)));
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, val);
+}
+
+// With Schlick's Fresnel at the constants' F0.
+template <class D, class V>
+HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
+  return StdBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.b.f0});
 }
 
 // NDF sampling (slope_ndf.h SampleNdf with StdNdf::StdSampleR2): the
