@@ -60,30 +60,9 @@ void StdPdfPseudoVnisRow(const StdBatchParams& p, const float* const* in, float*
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
-#if HWY_ARCH_X86
-#include <xmmintrin.h>
-#endif
+#include "flush_subnormals.h"
 
 namespace brdfbake {
-namespace {
-
-// Subnormals flushed to zero (MXCSR FTZ and DAZ) for the duration of one
-// batch call, the caller's mode restored on return: the same guard, for the
-// same reason (the exponentials of D and Lambda pass through the subnormal
-// range, which x86 handles in microcode), as in src/batch_beckmann_std.cc.
-class FlushSubnormals {
- public:
-#if HWY_ARCH_X86
-  FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-  ~FlushSubnormals() { _mm_setcsr(saved_); }
-
- private:
-  unsigned saved_;
-#endif
-};
-
-}  // namespace
-
 HWY_EXPORT(BeckmannSampleVisibleRow);
 HWY_EXPORT(BeckmannPdfVisibleRow);
 HWY_EXPORT(StdSamplePseudoVnisRow);

@@ -30,33 +30,46 @@
 //    V = E (c R - s/sqrt(pi)) / 2 for x > 0, and U = V(x) - V(mu).
 //  - Near the top of the interval (r = mu - x small) V(x) - V(mu) cancels to
 //    first order while U is of second order, U ~ s r^2 exp(-mu^2) / (2
-//    sqrt(pi)), and the error of x would grow like 1e-7 / r. There U comes
-//    from its Taylor series in r instead: with t = mu - z,
+//    sqrt(pi)), and the error of x would grow like 1e-7 / r (1.7e-4 in the
+//    normal without the remedy). There U comes from its Taylor series in r:
+//    with t = mu - z in U = s / sqrt(pi) int_x^mu (mu - t) exp(-t^2) dt,
 //      U = s exp(-mu^2) / sqrt(pi) int_0^r z exp(2 mu z - z^2) dz
-//        = s exp(-mu^2) / sqrt(pi) sum_n H_n(mu) r^(n+2) / (n! (n+2)),
-//    by the generating function of the Hermite polynomials H_n; 9 terms
-//    reach 2e-8 relative where 2 mu r < 1/2 and r < 1/10 (used there).
+//        = s exp(-mu^2) / sqrt(pi) sum_n H_n(mu) r^(n+2) / (n! (n+2))
+//    by the generating function of the Hermite polynomials H_n. It is used
+//    where r max(mu, 2.5) < 1/4 (2 mu r < 1/2, r < 1/10) and mu is not
+//    clamped; 7 terms leave 2.3e-7 relative there (mpmath, mu in [0, 9]),
+//    which moves x by at most 1.2e-8 (U / U' ~ r / 2).
 //  - Initial guess: the empirical fit of pbrt-v3's BeckmannSample11 (from
 //    Mitsuba), erf(x0) = erf(mu) - (1 + erf(mu)) (1 - u1)^p(theta) with
 //    p(theta) = 1 - 0.876 theta + 0.4265 theta^2 - 0.0594 theta^3, written as
 //    x0 = erf^-1(2 v - 1), v = erfc(-mu) / 2 (-expm1(p log1p(-u1))), which
-//    keeps its relative precision for small u1. Measured in double over
-//    mu in [1e-4, 1e4] and u1 in [1e-12, 1 - 2^-24], the error of x after
-//    4 steps is below 1e-7 (1 + x^2).
+//    keeps its relative precision for small u1. Its error is up to 0.03
+//    (1 + x^2); in double, over mu in [1e-4, 1e4] and u1 in [1e-12, 1 -
+//    2^-24], 3 Newton steps leave 7e-6 (1 + x^2), 4 steps 1e-7 (1 + x^2).
+//  - The ends u1 = 0 and u1 = 1 (target 0) return the ends of the interval,
+//    -9 and min(mu, 9).
 //
 // Error, in the unit-roughness configuration where the map from (u1, u2) to
 // the normal does not depend on alpha (nh = normalize(m.x / ax, m.y / ay,
 // m.z), as for GGX in ggx_sampling-inl.h): |nh - nh_ref| <= 2e-6 (max
 // component) against the double reference at the same float inputs, for
-// any u1, u2 in [0, 1] (tests/simd_sampling_test.cc; measured maxima
-// there). Views with w.z <= 0 give m = (0, 0, 0).
+// any u1, u2 in [0, 1]: no range is excluded (tests/simd_sampling_test.cc,
+// alpha 1e-4 to 1 and 1000:1, mu down to 1e-4, 1 - u1 down to 2^-24 and u1
+// down to 2^-40; measured max 9e-7 on AVX3, AVX2, SSE4, SSSE3 and SCALAR;
+// 3 Newton steps would give 6e-6). At u1 = 1 the reference itself stops
+// short of the end for mu >~ 3 (its forward CDF difference F(mu) - F(x) is
+// below double rounding there), so the test checks the end instead.
+// wo.m >= -2e-7 (the rounding of m at the edge u1 = 1, where wo.m = 0).
+// Views with w.z <= 0 give m = (0, 0, 0).
 // PdfVisible: relative error 2e-6 + 3e-7 r2 + 2e-7 / (w.m), r2 the exponent
 // of D at m (beckmann-inl.h) and the last term the rounding of w.m; 0 where
-// exp(-r2) is below FLT_MIN and the batch call flushes it.
+// exp(-r2) is below FLT_MIN and the batch call flushes it (measured 0.67 of
+// the bound at most).
 //
-// Cost per lane: 4 Newton steps of one exp, one log, two divisions and ~60
+// Cost per lane: 4 Newton steps of one exp, one log, two divisions and ~50
 // FMA each, plus the guess (atan, log1p, expm1, one erf^-1) and erf^-1(2 u2 -
-// 1).
+// 1). The steps form one dependency chain, so a vector takes about the same
+// time on every target (latency-bound).
 
 #if defined(BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef BRDFBAKE_SIMD_BECKMANN_SAMPLING_INL_H_
@@ -87,8 +100,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 // w - 2.5 (degree 9, fit error 6e-9 relative) and on [5, 35.36] in
 // sqrt(w) - 4 (degree 12, 3e-8), the split and the variables of Giles,
 // "Approximating the erfinv function" (GPU Computing Gems, 2011).
-// Error: 2.5e-7 relative for any u in [0, 1] (measured max in
-// tests/simd_sampling_test.cc, SimdBeckmannSamplingTest.CheckErfInv).
+// Error: 3e-7 relative for any u in [0, 1] (tests/simd_sampling_test.cc,
+// SimdBeckmannSamplingTest.CheckErfInv: measured max 2.1e-7 with FMA (AVX2,
+// AVX3), 2.7e-7 without (SSE4, SSSE3, SCALAR)).
 template <class D, class V>
 HWY_INLINE V ErfInvCentered(D d, V u) {
   static constexpr float kCentral[10] = {
@@ -115,7 +129,7 @@ HWY_INLINE V ErfInvCentered(D d, V u) {
 constexpr float kBeckmannSlopeMax = 9.0f;
 constexpr int kBeckmannNewtonSteps = 4;
 // Terms of the Taylor series of U near the top of the interval.
-constexpr int kBeckmannTaylorTerms = 9;
+constexpr int kBeckmannTaylorTerms = 7;
 
 // F(x) and V(x) = c - F(x) of the header, from E = exp(-x^2) and
 // R = erfcx(|x|) (also returned: erfc(|x|) = E R).
@@ -220,6 +234,8 @@ HWY_INLINE void BeckmannSampleVisible(D d, const BeckmannConsts<D>& k, V wx, V w
     const auto inside = hn::And(val_ok, hn::And(hn::Ge(next, lo), hn::Le(next, hi)));
     x = hn::IfThenElse(inside, next, hn::Mul(half, hn::Add(lo, hi)));
   }
+  // The ends u1 = 0 and 1 (target 0) map to the ends of the interval.
+  x = hn::IfThenElse(hn::Eq(tail, zero), hn::IfThenElse(upper, mu, hn::Neg(slope_max)), x);
 
   // y = erf^-1(2 u2 - 1); rotate back to the view azimuth, unstretch, and
   // m = normalize(-slope, 1).
