@@ -57,10 +57,11 @@ HWY_INLINE void ForEachSample(const float* u1, const float* u2, float* const* ou
 void BeckmannBrdfRow(const BeckmannBatchParams& p, const float* const* in, float* out,
                      size_t n) {
   const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  const bool separable = p.masking == Masking::kSeparable;
   WithFresnel(DF(), p, [&](const auto& fresnel) {
-    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-      return BeckmannBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    WithMasking(p.masking, [&](auto separable) {
+      ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+        return BeckmannBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+      });
     });
   });
 }
@@ -124,16 +125,17 @@ void BeckmannSampleRow(const BeckmannBatchParams& p, const float* u1, const floa
 // The STD rows run the Beckmann kernels when gamma >= kStdBeckmannGamma.
 void StdBrdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
   const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
-  const bool separable = p.masking == Masking::kSeparable;
   WithFresnel(DF(), p, [&](const auto& fresnel) {
-    if (c.beckmann) {
+    WithMasking(p.masking, [&](auto separable) {
+      if (c.beckmann) {
+        ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+          return BeckmannBrdf(d, c.b, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+        });
+        return;
+      }
       ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-        return BeckmannBrdf(d, c.b, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+        return StdBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
       });
-      return;
-    }
-    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-      return StdBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
     });
   });
 }

@@ -95,10 +95,11 @@ void EllipsoidG1Row(const EllipsoidBatchParams& p, const float* const* in, float
 void EllipsoidBrdfRow(const EllipsoidBatchParams& p, const float* const* in, float* out,
                       size_t n) {
   const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
-  const bool separable = p.masking == Masking::kSeparable;
   WithFresnel(DF(), p, [&](const auto& fresnel) {
-    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-      return EllipsoidBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    WithMasking(p.masking, [&](auto separable) {
+      ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+        return EllipsoidBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+      });
     });
   });
 }

@@ -28,10 +28,11 @@ void GgxBrdfRow(const GgxBatchParams& p, const float* const* in, float* out, siz
   using D = hn::ScalableTag<float>;
   const D d;
   const GgxConsts<D> c(d, p.alpha_x, p.alpha_y, p.f0);
-  const bool separable = p.masking == Masking::kSeparable;
   WithFresnel(d, p, [&](const auto& fresnel) {
-    ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
-      return GgxBrdf(dd, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+    WithMasking(p.masking, [&](auto separable) {
+      ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
+        return GgxBrdf(dd, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+      });
     });
   });
 }
@@ -50,10 +51,11 @@ void GgxG2Row(const GgxBatchParams& p, const float* const* in, float* out, size_
   using D = hn::ScalableTag<float>;
   const D d;
   const GgxConsts<D> c(d, p.alpha_x, p.alpha_y, p.f0);
-  const bool separable = p.masking == Masking::kSeparable;
-  ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
-    const auto lambda = [&](auto x, auto y, auto z) { return GgxLambda(dd, c, x, y, z); };
-    return G2FromLambda(dd, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
+  WithMasking(p.masking, [&](auto separable) {
+    ForEachVector<6>(in, 0.5f, out, n, [&](auto dd, const auto* v) {
+      const auto lambda = [&](auto x, auto y, auto z) { return GgxLambda(dd, c, x, y, z); };
+      return G2FromLambda(dd, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
+    });
   });
 }
 

@@ -25,6 +25,8 @@
 #define BRDFBAKE_SIMD_GGX_INL_H_
 #endif
 
+#include <type_traits>
+
 #include <hwy/highway.h>
 
 HWY_BEFORE_NAMESPACE();
@@ -84,6 +86,19 @@ struct SchlickFresnel {
     return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
   }
 };
+
+// Calls f(separable) with separable a std::true_type or std::false_type, so
+// that a kernel's `if (separable)` is resolved at compile time and the loop
+// around it has no branch (GCC does not unswitch these loops by itself once
+// the Fresnel functor is a template argument: 15% of the GGX BRDF on AVX3).
+template <class F>
+HWY_INLINE void WithMasking(Masking masking, const F& f) {
+  if (masking == Masking::kSeparable) {
+    f(std::true_type());
+  } else {
+    f(std::false_type());
+  }
+}
 
 // Smith masking from a Lambda kernel `lambda(w_x, w_y, w_z)` (+inf on and
 // below the horizon): G1 = 1 / (1 + Lambda), and for a reflection pair G2 =
