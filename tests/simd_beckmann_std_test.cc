@@ -26,6 +26,8 @@
 #include "brdfbake/brdf.h"
 #include "brdfbake/std_ndf.h"
 
+#include "simd_test_util.h"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tests/simd_beckmann_std_test.cc"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -39,6 +41,8 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 namespace {  // internal linkage: other test files define their own helpers
+
+using test_util::Dirs;
 
 // Documented bounds (src/simd/math-inl.h, beckmann-inl.h, std-inl.h).
 constexpr double kErfcRel = 3.5e-7;     // Erfc where erfc(x) >= FLT_MIN
@@ -61,16 +65,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // some slack for the rounding of E) or whose value is below FLT_MIN may be 0.
 constexpr double kFlushExponent = bounds::kFlushExponent;
 
-struct Dirs {
-  std::vector<float> x, y, z;
-  void Push(const Vec3<double>& w) {
-    x.push_back(static_cast<float>(w.x));
-    y.push_back(static_cast<float>(w.y));
-    z.push_back(static_cast<float>(w.z));
-  }
-  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
-  size_t size() const { return x.size(); }
-};
 
 // Directions with mu spread log-uniformly down to 1e-6 plus exact poles, then
 // directions whose isotropic a = cot(theta) runs log-uniformly over

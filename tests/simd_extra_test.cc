@@ -25,6 +25,8 @@
 #include "brdfbake/fresnel.h"
 #include "brdfbake/ggx.h"
 
+#include "simd_test_util.h"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tests/simd_extra_test.cc"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -37,6 +39,10 @@ HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace {
+
+using test_util::Dirs;
+using test_util::RandomDirs;
+using test_util::RelErr;
 
 // Documented bounds (src/simd/fresnel-inl.h, ggx_sampling-inl.h,
 // ellipsoid-inl.h), against the double reference at the same float inputs.
@@ -55,29 +61,7 @@ constexpr double kEllSampleAbs = 2e-6;        // sphere-space normal
 
 constexpr double kDeg = 3.141592653589793 / 180;
 
-struct Dirs {
-  std::vector<float> x, y, z;
-  void Push(const Vec3<double>& w) {
-    x.push_back(static_cast<float>(w.x));
-    y.push_back(static_cast<float>(w.y));
-    z.push_back(static_cast<float>(w.z));
-  }
-  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
-  size_t size() const { return x.size(); }
-};
 
-// Directions with mu spread log-uniformly down to 1e-6 plus exact poles.
-Dirs RandomDirs(size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
-  Dirs d;
-  for (size_t i = 0; i < n; ++i) {
-    double mu = i % 7 == 0 ? std::pow(10.0, -6 * uni(rng)) : uni(rng);
-    if (i % 97 == 0) mu = 1.0;
-    d.Push(FromMuPhi(mu, 2 * 3.141592653589793 * uni(rng)));
-  }
-  return d;
-}
 
 // Uniform floats in [0, 1) with the edges 0, 1 - 2^-24, 0.25, 0.5, 0.75 and
 // values within 1e-6 of 1 mixed in.
@@ -94,10 +78,6 @@ std::vector<float> RandomUniforms(size_t n, uint64_t seed) {
   return u;
 }
 
-double RelErr(double got, double ref) {
-  if (std::isinf(ref)) return std::isinf(got) ? 0.0 : 1.0;
-  return std::abs(got - ref) / std::max(std::abs(ref), 1e-30);
-}
 
 double MaxAbsDiff(const Vec3<double>& a, const Vec3<double>& b) {
   return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});

@@ -17,6 +17,8 @@
 #include "brdfbake/brdf.h"
 #include "brdfbake/ggx.h"
 
+#include "simd_test_util.h"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tests/simd_ggx_test.cc"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -27,38 +29,16 @@ HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
 namespace HWY_NAMESPACE {
 
+using test_util::Dirs;
+using test_util::RandomDirs;
+using test_util::RelErr;
+
 // Documented bound (src/simd/ggx-inl.h): relative error of the float kernels
 // against the double reference at the same float inputs.
 constexpr double kMaxRelError = 2e-6;
 
-struct Dirs {
-  std::vector<float> x, y, z;
-  void Push(const Vec3<double>& w) {
-    x.push_back(static_cast<float>(w.x));
-    y.push_back(static_cast<float>(w.y));
-    z.push_back(static_cast<float>(w.z));
-  }
-  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
-};
 
-// Directions with mu spread log-uniformly down to 1e-6 plus exact poles.
-Dirs RandomDirs(size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
-  Dirs d;
-  for (size_t i = 0; i < n; ++i) {
-    double mu = i % 7 == 0 ? std::pow(10.0, -6 * uni(rng)) : uni(rng);
-    if (i % 97 == 0) mu = 1.0;
-    d.Push(FromMuPhi(mu, 2 * 3.141592653589793 * uni(rng)));
-  }
-  return d;
-}
 
-double RelErr(double got, double ref) {
-  if (std::isinf(ref)) return std::isinf(got) ? 0.0 : 1.0;
-  const double scale = std::max(std::abs(ref), 1e-30);
-  return std::abs(got - ref) / scale;
-}
 
 void CheckTargetIsUsed() {
   EXPECT_EQ(BatchTarget(), hwy::TargetName(HWY_TARGET));

@@ -27,6 +27,8 @@
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/std_ndf.h"
 
+#include "simd_test_util.h"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tests/simd_masking_fresnel_test.cc"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -38,6 +40,10 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace {  // internal linkage: other test files define their own helpers
 
+using test_util::Dirs;
+Dirs RandomDirs(size_t n, uint64_t seed) { return test_util::RandomDirs(n, seed, 53); }
+using test_util::RelErr;
+
 // The rounding of the final division and sum of G2, and of the Fresnel
 // factor's product with the rest of the BRDF.
 constexpr double kG2Rounding = 4e-7;
@@ -48,34 +54,8 @@ constexpr double kFresnelRel = 2e-6, kConductorAbs = 1e-7;
 // reciprocal square root and a dot product): 4 ulp.
 constexpr double kCosAbs = 2.4e-7;
 
-struct Dirs {
-  std::vector<float> x, y, z;
-  void Push(const Vec3<double>& w) {
-    x.push_back(static_cast<float>(w.x));
-    y.push_back(static_cast<float>(w.y));
-    z.push_back(static_cast<float>(w.z));
-  }
-  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
-};
 
-// Directions with mu log-uniform down to 1e-6 for one in seven, some below
-// the horizon, and exact poles.
-Dirs RandomDirs(size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> uni(0.0, 1.0);
-  Dirs d;
-  for (size_t i = 0; i < n; ++i) {
-    double mu = i % 7 == 0 ? std::pow(10.0, -6 * uni(rng)) : uni(rng);
-    if (i % 97 == 0) mu = 1.0;
-    if (i % 53 == 0) mu = -uni(rng);
-    d.Push(FromMuPhi(mu, 2 * 3.141592653589793 * uni(rng)));
-  }
-  return d;
-}
 
-double RelErr(double got, double ref) {
-  return std::abs(got - ref) / std::max(std::abs(ref), 1e-30);
-}
 
 // One model: its batch calls and its double reference, plus the per-sample
 // bound of 1 + Lambda (relative) and of the BRDF (relative).

@@ -29,6 +29,8 @@
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/std_ndf.h"
 
+#include "simd_test_util.h"
+
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tests/simd_sampling_test.cc"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -42,6 +44,8 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 namespace {  // internal linkage: other test files define their own helpers
+
+using test_util::Dirs;
 
 // Documented bounds (src/simd/beckmann_sampling-inl.h, std_sampling-inl.h,
 // and the kernels these reuse), against the double reference at the same
@@ -57,16 +61,6 @@ constexpr double kFlushExponent = bounds::kFlushExponent;
 
 const char* Target() { return hwy::TargetName(HWY_TARGET); }
 
-struct Dirs {
-  std::vector<float> x, y, z;
-  void Push(const Vec3<double>& w) {
-    x.push_back(static_cast<float>(w.x));
-    y.push_back(static_cast<float>(w.y));
-    z.push_back(static_cast<float>(w.z));
-  }
-  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
-  size_t size() const { return x.size(); }
-};
 
 // Views: mu uniform, or log-uniform down to 1e-4 (grazing), or the pole.
 Dirs Views(size_t n, uint64_t seed) {

@@ -1,0 +1,61 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Helpers shared by the per-target SIMD tests (tests/simd_*_test.cc):
+// direction sets in structure-of-arrays float form and the relative error
+// used against the double reference. Included before foreach_target.h, so it
+// is compiled once; each test brings the names into its HWY_NAMESPACE.
+
+#ifndef BRDFBAKE_TESTS_SIMD_TEST_UTIL_H_
+#define BRDFBAKE_TESTS_SIMD_TEST_UTIL_H_
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "brdfbake/vec3.h"
+
+namespace brdfbake {
+namespace test_util {
+
+// Unit directions as separate float arrays (the batch API's layout); At()
+// returns the float-rounded direction in double, the reference's input.
+struct Dirs {
+  std::vector<float> x, y, z;
+  void Push(const Vec3<double>& w) {
+    x.push_back(static_cast<float>(w.x));
+    y.push_back(static_cast<float>(w.y));
+    z.push_back(static_cast<float>(w.z));
+  }
+  Vec3<double> At(size_t i) const { return {x[i], y[i], z[i]}; }
+  size_t size() const { return x.size(); }
+};
+
+// n directions: mu uniform, log-uniform down to 1e-6 for one in seven, the
+// pole for one in 97, and (when below_every > 0) below the horizon for one in
+// below_every.
+inline Dirs RandomDirs(size_t n, uint64_t seed, size_t below_every = 0) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  Dirs d;
+  for (size_t i = 0; i < n; ++i) {
+    double mu = i % 7 == 0 ? std::pow(10.0, -6 * uni(rng)) : uni(rng);
+    if (i % 97 == 0) mu = 1.0;
+    if (below_every > 0 && i % below_every == 0) mu = -uni(rng);
+    d.Push(FromMuPhi(mu, 2 * 3.141592653589793 * uni(rng)));
+  }
+  return d;
+}
+
+// |got - ref| / max(|ref|, 1e-30); an infinite reference must be matched.
+inline double RelErr(double got, double ref) {
+  if (std::isinf(ref)) return std::isinf(got) ? 0.0 : 1.0;
+  return std::abs(got - ref) / std::max(std::abs(ref), 1e-30);
+}
+
+}  // namespace test_util
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_TESTS_SIMD_TEST_UTIL_H_
