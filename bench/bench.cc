@@ -21,6 +21,7 @@
 #include "brdfbake/brdf.h"
 #include "brdfbake/ellipsoid.h"
 #include "brdfbake/ggx.h"
+#include "brdfbake/sel.h"
 #include "brdfbake/std_ndf.h"
 
 namespace brdfbake {
@@ -114,6 +115,17 @@ BENCHMARK_CAPTURE(BM_G2, ggx/scalar, GgxNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_G2, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_G2, std/scalar, StdNdf<double>(0.3, 0.3, 3.3));
 BENCHMARK_CAPTURE(BM_G2, ellipsoid/scalar, EllipsoidNdf<double>(0.3, 0.5, 0.2, 0.1, 0.4));
+void BM_SelK(benchmark::State& state) {
+  const Inputs& in = In();
+  const SelLobe<double> lobe = SelLobe<double>::FromAngles(0.3, 0.5, 0.2, 0, 0);
+  for (auto _ : state) {
+    double acc = 0;
+    for (int i = 0; i < kN; ++i) acc += lobe.K(in.wi[i]);
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(state.iterations() * kN);
+}
+BENCHMARK(BM_SelK)->Name("BM_K/sel/scalar");
 BENCHMARK_CAPTURE(BM_Brdf, ggx/scalar, GgxNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_Brdf, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_Brdf, std/scalar, StdNdf<double>(0.3, 0.3, 3.3));
@@ -162,7 +174,7 @@ void BM_BrdfBatch(benchmark::State& state, std::string target) {
 // target. D takes the wi array as normals, G2 the (wi, wo) pairs.
 enum class Kernel {
   kBeckmannBrdf, kStdBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible,
-  kGgxD, kBeckmannD, kStdD, kEllipsoidD, kGgxG2, kBeckmannG2, kStdG2, kEllipsoidG2
+  kGgxD, kBeckmannD, kStdD, kEllipsoidD, kGgxG2, kBeckmannG2, kStdG2, kEllipsoidG2, kSelK
 };
 void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) {
   ForceTarget(target);
@@ -236,6 +248,14 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
         StdG2Batch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
                    in.oz.data(), in.out.data(), kN);
         break;
+      case Kernel::kSelK: {
+        SelBatchParams sel;
+        sel.alpha_x = 0.3f;
+        sel.alpha_y = 0.5f;
+        sel.theta_x = 0.2f;
+        SelKBatch(sel, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+        break;
+      }
       case Kernel::kEllipsoidG2:
         EllipsoidG2Batch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
                          in.oy.data(), in.oz.data(), in.out.data(), kN);
@@ -352,7 +372,8 @@ int main(int argc, char** argv) {
         {"BM_D/ggx/", Kernel::kGgxD},          {"BM_D/beckmann/", Kernel::kBeckmannD},
         {"BM_D/std/", Kernel::kStdD},          {"BM_D/ellipsoid/", Kernel::kEllipsoidD},
         {"BM_G2/ggx/", Kernel::kGgxG2},        {"BM_G2/beckmann/", Kernel::kBeckmannG2},
-        {"BM_G2/std/", Kernel::kStdG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2}};
+        {"BM_G2/std/", Kernel::kStdG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2},
+        {"BM_K/sel/", Kernel::kSelK}};
     for (const auto& [prefix, kernel] : per_model) {
       benchmark::RegisterBenchmark((prefix + t).c_str(), brdfbake::BM_KernelBatch, kernel, t);
     }

@@ -17,6 +17,7 @@
 #include "simd/foreach_out-inl.h"
 #include "simd/fresnel-inl.h"
 #include "simd/ggx_sampling-inl.h"
+#include "simd/sel-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -69,6 +70,12 @@ void GgxPdfNdfRow(const GgxBatchParams& p, const float* const* in, float* out, s
 
 EllipsoidConsts<DF> MakeEllipsoidConsts(const EllipsoidBatchParams& p) {
   return EllipsoidConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z, p.f0);
+}
+
+void SelKRow(const SelBatchParams& p, const float* const* in, float* out, size_t n) {
+  const SelConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
+  ForEachVector<3>(in, 0.5f, out, n,
+                   [&](auto d, const auto* v) { return SelK(d, c, v[0], v[1], v[2]); });
 }
 
 void EllipsoidDRow(const EllipsoidBatchParams& p, const float* const* in, float* out, size_t n) {
@@ -143,6 +150,7 @@ HWY_EXPORT(GgxSampleVisibleRow);
 HWY_EXPORT(GgxPdfVisibleRow);
 HWY_EXPORT(GgxSampleNdfRow);
 HWY_EXPORT(GgxPdfNdfRow);
+HWY_EXPORT(SelKRow);
 HWY_EXPORT(EllipsoidDRow);
 HWY_EXPORT(EllipsoidLambdaRow);
 HWY_EXPORT(EllipsoidG1Row);
@@ -234,6 +242,12 @@ void EllipsoidG2Batch(const EllipsoidBatchParams& p, const float* wi_x, const fl
                       const float* wo_z, float* out, size_t n) {
   const float* in[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
   HWY_DYNAMIC_DISPATCH(EllipsoidG2Row)(p, in, out, n);
+}
+
+void SelKBatch(const SelBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
+               float* out, size_t n) {
+  const float* in[3] = {w_x, w_y, w_z};
+  HWY_DYNAMIC_DISPATCH(SelKRow)(p, in, out, n);
 }
 
 }  // namespace brdfbake

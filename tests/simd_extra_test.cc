@@ -20,6 +20,7 @@
 #include "brdfbake/batch.h"
 #include "brdfbake/batch_extra.h"
 #include "brdfbake/kernel_bounds.h"
+#include "brdfbake/sel.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ellipsoid.h"
 #include "brdfbake/fresnel.h"
@@ -566,6 +567,62 @@ void CheckExtraCountsAndSentinels() {
     EllipsoidSampleVisibleBatch(ep, in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2],
                                 n);
   });
+  SelBatchParams sp;
+  sp.alpha_x = 0.1f;
+  sp.theta_y = 0.5f;
+  CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
+    SelKBatch(sp, in[0], in[1], in[2], out[0], n);
+  });
+}
+
+// SEL K against the double SelLobe::K at the same float inputs: 2e-6
+// relative plus the change of the exact K when v = Q w moves by the float
+// rounding of the rotation (see src/simd/sel-inl.h).
+void CheckSelK() {
+  const size_t n = 20000;
+  const Dirs w = RandomDirs(n, 41);
+  std::vector<float> out(n);
+  struct Cfg {
+    float ax, ay, tx, ty, tz;
+  };
+  const Cfg cfgs[] = {{0.3f, 0.3f, 0, 0, 0},       {1e-4f, 1e-4f, 0, 0, 0},
+                      {0.5f, 0.01f, 0, 0, 0},      {0.2f, 0.6f, 0.4f, -0.3f, 1.0f},
+                      {1e-3f, 0.05f, 1.2f, 0.7f, -0.5f}, {1.0f, 1.0f, 0.1f, 0.2f, 0.3f}};
+  double worst = 0, worst_raw = 0;
+  for (const Cfg& c : cfgs) {
+    SelBatchParams p;
+    p.alpha_x = c.ax;
+    p.alpha_y = c.ay;
+    p.theta_x = c.tx;
+    p.theta_y = c.ty;
+    p.theta_z = c.tz;
+    SelKBatch(p, w.x.data(), w.y.data(), w.z.data(), out.data(), n);
+    const SelLobe<double> lobe = SelLobe<double>::FromAngles(c.ax, c.ay, c.tx, c.ty, c.tz);
+    const SelLobe<double> in_lobe_space(c.ax, c.ay, Mat3<double>::Diagonal(1, 1, 1));
+    const Mat3<double>& q = lobe.q();
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3<double> wi = w.At(i);
+      const double ref = lobe.K(wi);
+      const Vec3<double> v = q * wi;
+      double sens = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double mag = std::abs(q.m[k][0] * wi.x) + std::abs(q.m[k][1] * wi.y) +
+                           std::abs(q.m[k][2] * wi.z);
+        for (double sgn : {-1.0, 1.0}) {
+          Vec3<double> vp = v;
+          (k == 0 ? vp.x : k == 1 ? vp.y : vp.z) += sgn * 3 * 0x1p-24 * mag;
+          sens = std::max(sens, std::abs(in_lobe_space.K(vp) - ref) / ref);
+        }
+      }
+      const double err = RelErr(out[i], ref);
+      worst_raw = std::max(worst_raw, err);
+      worst = std::max(worst, err / (2e-6 + sens));
+      ASSERT_LE(err, 2e-6 + sens) << "cfg " << c.ax << "," << c.ay << "," << c.tx << " i=" << i
+                                  << " got " << out[i] << " ref " << ref;
+    }
+  }
+  std::printf("%s: SEL K max error / bound %.3g (max relative error %.3g)\n", Target(), worst,
+              worst_raw);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -587,6 +644,7 @@ HWY_EXPORT_AND_TEST_P(SimdGgxSamplingTest, CheckGgxSampleNdf);
 
 HWY_BEFORE_TEST(SimdEllipsoidTest);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidDLambdaG1);
+HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckSelK);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidBrdf);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidSampleVisible);
 }  // namespace brdfbake

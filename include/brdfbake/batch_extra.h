@@ -83,6 +83,16 @@ void EllipsoidPdfVisibleBatch(const EllipsoidBatchParams& p, const float* wo_x,
                               const float* wo_y, const float* wo_z, const float* m_x,
                               const float* m_y, const float* m_z, float* out, size_t n);
 
+// The squared ellipsoidal lobe of sel.h: Q = Rx(theta_x) Ry(theta_y)
+// Rz(theta_z), angles in radians, alphas clamped below at 1e-4.
+struct SelBatchParams {
+  float alpha_x = 0.25f, alpha_y = 0.25f;
+  float theta_x = 0, theta_y = 0, theta_z = 0;
+};
+// K(w) (SelLobe::K) for n unit directions.
+void SelKBatch(const SelBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
+               float* out, size_t n);
+
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_BATCH_EXTRA_H_
