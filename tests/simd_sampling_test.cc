@@ -150,16 +150,6 @@ double CheckNormal(const Vec3<double>& wo, const Vec3<double>& got, const Vec3<d
   return err;
 }
 
-// The Beckmann visible normal at u1 = 1, slope x = min(mu, 9) in the
-// unit-roughness configuration (beckmann.h, SampleVisible).
-Vec3<double> BeckmannEnd(const Vec3<double>& w, double ax, double ay, double u2) {
-  const double gx = ax * w.x, gy = ay * w.y, g = std::hypot(gx, gy);
-  const double x = g > 0 ? std::min(w.z / g, 9.0) : 9.0;
-  const double cos_phi = g > 0 ? gx / g : 1.0, sin_phi = g > 0 ? gy / g : 0.0;
-  const double y = boost::math::erf_inv(std::clamp(2 * u2 - 1, -1 + DBL_EPSILON, 1 - DBL_EPSILON));
-  return Normalize(Vec3<double>(-ax * (cos_phi * x - sin_phi * y), -ay * (sin_phi * x + cos_phi * y), 1.0));
-}
-
 // Applies a vector function to every element of x on this target.
 template <class Fn>
 std::vector<float> Map(const std::vector<float>& x, const Fn& fn) {
@@ -228,11 +218,7 @@ void CheckBeckmannSampleVisible() {
                             mz.data(), pdf.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> w = wo.At(i), got(mx[i], my[i], mz[i]);
-      // At u1 = 1 the slope is the end of the interval, min(mu, 9); the
-      // reference stops short of it for mu >~ 3 (its CDF difference is below
-      // double rounding there), so the end is checked instead.
-      const Vec3<double> ref = u1[i] == 1.0f ? BeckmannEnd(w, a[0], a[1], u2[i])
-                                             : ndf.SampleVisible(w, u1[i], u2[i]);
+      const Vec3<double> ref = ndf.SampleVisible(w, u1[i], u2[i]);
       const double err = CheckNormal(w, got, ref, a[0], a[1], true, &worst_dot);
       worst = std::max(worst, err);
       worst_raw = std::max(worst_raw, MaxAbsDiff(got, ref));
@@ -285,13 +271,10 @@ void CheckStdPseudoVnis() {
       const double slope = branch == 1 ? 0.0 : branch == 2 ? kBeckSlope : kStdSlope;
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> w = wo.At(i), got(mx[i], my[i], mz[i]);
-        // The ends: u1 = 1 for Beckmann as above; u2 = 1 is outside the NDF sampler's
-        // [0, 1) (StdSampleNdf clamps it to 1 - 2^-24, the reference to
-        // 1 - 2^-53).
+        // u2 = 1 is outside the NDF sampler's [0, 1) (StdSampleNdf clamps it
+        // to 1 - 2^-24, the reference to 1 - 2^-53).
         if (branch == 0 && u2[i] == 1.0f) continue;
-        const Vec3<double> ref = branch == 2 && u1[i] == 1.0f
-                                     ? BeckmannEnd(w, ndf.alpha_x(), ndf.alpha_y(), u2[i])
-                                     : ndf.SamplePseudoVnis(w, u1[i], u2[i]);
+        const Vec3<double> ref = ndf.SamplePseudoVnis(w, u1[i], u2[i]);
         const double err = CheckNormal(w, got, ref, a[0], a[1], visible, &worst_dot);
         worst[branch] = std::max(worst[branch], err);
         ASSERT_LE(err, kSampleAbs) << "gamma " << gamma << " alpha " << a[0] << "," << a[1]

@@ -56,9 +56,8 @@
 // any u1, u2 in [0, 1]: no range is excluded (tests/simd_sampling_test.cc,
 // alpha 1e-4 to 1 and 1000:1, mu down to 1e-4, 1 - u1 down to 2^-24 and u1
 // down to 2^-40; measured max 9e-7 on AVX3, AVX2, SSE4, SSSE3 and SCALAR;
-// 3 Newton steps would give 6e-6). At u1 = 1 the reference itself stops
-// short of the end for mu >~ 3 (its forward CDF difference F(mu) - F(x) is
-// below double rounding there), so the test checks the end instead.
+// 3 Newton steps would give 6e-6), u1 = 1 included (the reference solves on
+// its upper tail as well, so it reaches the end min(mu, 9) exactly).
 // wo.m >= -2e-7 (the rounding of m at the edge u1 = 1, where wo.m = 0).
 // Views with w.z <= 0 give m = (0, 0, 0).
 // PdfVisible: relative error 2e-6 + 3e-7 r2 + 2e-7 / (w.m), r2 the exponent
