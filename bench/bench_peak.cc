@@ -34,6 +34,8 @@ enum PeakOp { kFma, kDiv, kSqrt, kRsqrt };
 // room to spare, and still fit the 32 AVX-512 registers (16 on AVX2).
 constexpr int kChains = 12;
 
+// (Not MixRun below with one kind: MixRun's runtime-count inner loops put
+// scalar branch work on the FMA ports and measured the FMA peak 40% low.)
 // Runs `iters` rounds of the op on kChains chains; returns a checksum (so the work
 // is kept) and the lanes per vector in *lanes.
 float PeakRun(int op, int64_t iters, size_t* lanes) {

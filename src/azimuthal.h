@@ -71,7 +71,6 @@ class GgxAzimuthalE {
  public:
   GgxAzimuthalE(double alpha, double mu_o, Masking masking)
       : a2_(alpha * alpha), b_(1 - alpha * alpha), separable_(masking == Masking::kSeparable) {
-    mu_o_ = mu_o;
     const double s_o = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
     theta_o_ = std::atan2(s_o, mu_o);
     eps_o_ = std::atan2(mu_o, s_o);
@@ -122,7 +121,7 @@ class GgxAzimuthalE {
   bool grazing_o_ = false;  // theta_o > pi/4
   static constexpr double kHalfPiHi = 1.5707963267948966;
   static constexpr double kHalfPiLo = 6.123233995736766e-17;  // pi/2 - kHalfPiHi
-  double mu_o_ = 1, theta_o_ = 0, eps_o_ = 1.5707963267948966, lambda_o_ = 0, scale_ = 0.25;
+  double theta_o_ = 0, eps_o_ = 1.5707963267948966, lambda_o_ = 0, scale_ = 0.25;
 };
 
 // The 15-point Kronrod rule on [-1, 1] with its embedded 7-point Gauss rule

@@ -225,55 +225,11 @@ HWY_EXPORT(StdG1Row);
 HWY_EXPORT(StdG2Row);
 HWY_EXPORT(StdPdfNdfRow);
 
-void BeckmannBrdfBatch(const BeckmannBatchParams& p, const float* wi_x, const float* wi_y,
-                       const float* wi_z, const float* wo_x, const float* wo_y,
-                       const float* wo_z, float* out, size_t n) {
-  const float* in[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(BeckmannBrdfRow)(p, in, out, n);
-}
-
-void BeckmannDBatch(const BeckmannBatchParams& p, const float* m_x, const float* m_y,
-                    const float* m_z, float* out, size_t n) {
-  const float* in[3] = {m_x, m_y, m_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(BeckmannDRow)(p, in, out, n);
-}
-
-void BeckmannLambdaBatch(const BeckmannBatchParams& p, const float* w_x, const float* w_y,
-                         const float* w_z, float* out, size_t n) {
-  const float* in[3] = {w_x, w_y, w_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(BeckmannLambdaRow)(p, in, out, n);
-}
-
 void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const float* u2,
                             float* m_x, float* m_y, float* m_z, size_t n) {
   float* out[3] = {m_x, m_y, m_z};
   const FlushSubnormals ftz;
   HWY_DYNAMIC_DISPATCH(BeckmannSampleRow)(p, u1, u2, out, n);
-}
-
-void StdBrdfBatch(const StdBatchParams& p, const float* wi_x, const float* wi_y,
-                  const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
-                  float* out, size_t n) {
-  const float* in[6] = {wi_x, wi_y, wi_z, wo_x, wo_y, wo_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdBrdfRow)(p, in, out, n);
-}
-
-void StdDBatch(const StdBatchParams& p, const float* m_x, const float* m_y, const float* m_z,
-               float* out, size_t n) {
-  const float* in[3] = {m_x, m_y, m_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdDRow)(p, in, out, n);
-}
-
-void StdLambdaBatch(const StdBatchParams& p, const float* w_x, const float* w_y,
-                    const float* w_z, float* out, size_t n) {
-  const float* in[3] = {w_x, w_y, w_z};
-  const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdLambdaRow)(p, in, out, n);
 }
 
 void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2, float* m_x,
@@ -297,9 +253,17 @@ void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2
     const FlushSubnormals ftz;                                                              \
     HWY_DYNAMIC_DISPATCH(Row)(p, in, out, n);                                               \
   }
+// The batch functions of the 3-component (one direction) and 6-component
+// (a pair) rows, each under the subnormal flush.
+BRDFBAKE_BATCH_6(BeckmannBrdfBatch, BeckmannBatchParams, BeckmannBrdfRow)
+BRDFBAKE_BATCH_3(BeckmannDBatch, BeckmannBatchParams, BeckmannDRow)
+BRDFBAKE_BATCH_3(BeckmannLambdaBatch, BeckmannBatchParams, BeckmannLambdaRow)
 BRDFBAKE_BATCH_3(BeckmannG1Batch, BeckmannBatchParams, BeckmannG1Row)
 BRDFBAKE_BATCH_6(BeckmannG2Batch, BeckmannBatchParams, BeckmannG2Row)
 BRDFBAKE_BATCH_3(BeckmannPdfNdfBatch, BeckmannBatchParams, BeckmannPdfNdfRow)
+BRDFBAKE_BATCH_6(StdBrdfBatch, StdBatchParams, StdBrdfRow)
+BRDFBAKE_BATCH_3(StdDBatch, StdBatchParams, StdDRow)
+BRDFBAKE_BATCH_3(StdLambdaBatch, StdBatchParams, StdLambdaRow)
 BRDFBAKE_BATCH_3(StdG1Batch, StdBatchParams, StdG1Row)
 BRDFBAKE_BATCH_6(StdG2Batch, StdBatchParams, StdG2Row)
 BRDFBAKE_BATCH_3(StdPdfNdfBatch, StdBatchParams, StdPdfNdfRow)

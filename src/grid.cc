@@ -89,8 +89,6 @@ RowDirs MakeRow(const GridRequest& req, int y) {
   return r;
 }
 
-}  // namespace
-
 // The batch kernels' Fresnel from a grey Fresnel (channel 0).
 template <class P>
 void SetBatchFresnel(const Fresnel& f, P* p) {
@@ -112,6 +110,8 @@ void SetBatchFresnel(const Fresnel& f, P* p) {
       return;
   }
 }
+
+}  // namespace
 
 Grid EvalGrid(const GridRequest& req) {
   ValidateGridRequest(req);

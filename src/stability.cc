@@ -227,12 +227,8 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
     EllipsoidBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     const EllipsoidNdf<double> nd(bp.alpha_x, bp.alpha_y, bp.theta_x, bp.theta_y, bp.theta_z);
     const Mat3<double>& m_a = nd.shape_matrix();
-    // A^-T = S^-1 R, as the kernels build it.
     const Mat3<double> m_ait =
-        Mat3<double>::Diagonal(1.0 / std::max<double>(ax, 1e-4), 1.0 / std::max<double>(ay, 1e-4),
-                               1.0) *
-        (Mat3<double>::RotX(bp.theta_x) * Mat3<double>::RotY(bp.theta_y) *
-         Mat3<double>::RotZ(bp.theta_z));
+        bounds::EllipsoidKernelInvT(ax, ay, bp.theta_x, bp.theta_y, bp.theta_z);
     const double li = nd.Lambda(a), lo = nd.Lambda(b);
     const double l_bound = std::isinf(li) ? 1.0
                                           : bounds::kEllipsoidLambdaRel * bounds::Kappa(m_a, a) *

@@ -325,13 +325,8 @@ EllipsoidNdf<double> ToNdf(const EllipsoidBatchParams& p) {
   return EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
 }
 
-// A^-T = S^-1 R, as the kernels build it.
 Mat3<double> InvT(const EllipsoidBatchParams& p) {
-  const Mat3<double> r = Mat3<double>::RotX(p.theta_x) * Mat3<double>::RotY(p.theta_y) *
-                         Mat3<double>::RotZ(p.theta_z);
-  return Mat3<double>::Diagonal(1.0 / std::max(double(p.alpha_x), 1e-4),
-                                1.0 / std::max(double(p.alpha_y), 1e-4), 1.0) *
-         r;
+  return bounds::EllipsoidKernelInvT(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
 }
 
 double LambdaScale(const Mat3<double>& a, const Vec3<double>& u, double lambda) {
@@ -501,7 +496,7 @@ namespace {
 // Every count from 0 to 2N + 3 at several misalignments: results equal the
 // full-array results and the sentinels around every output are untouched.
 // `call(in, out, n)` reads kIn of the 8 input arrays and writes kOut arrays.
-using BatchCall = std::function<void(const float* const*, float* const*, size_t)>;
+using test_util::BatchCall;
 
 void CheckCounts(int n_out, const BatchCall& call) {
   const size_t lanes = hwy::HWY_NAMESPACE::Lanes(hwy::HWY_NAMESPACE::ScalableTag<float>());
@@ -510,28 +505,7 @@ void CheckCounts(int n_out, const BatchCall& call) {
   const std::vector<float> u1 = RandomUniforms(len, 33), u2 = RandomUniforms(len, 34);
   const float* in[8] = {wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(),
                         wo.y.data(), wo.z.data(), u1.data(),   u2.data()};
-  std::vector<std::vector<float>> full(n_out, std::vector<float>(len));
-  float* full_ptr[3];
-  for (int k = 0; k < n_out; ++k) full_ptr[k] = full[k].data();
-  call(in, full_ptr, len);
-  const float kSentinel = -12345.0f;
-  for (size_t misalign = 0; misalign < 4; ++misalign) {
-    for (size_t n = 0; n <= max_n; ++n) {
-      const float* in_o[8];
-      for (int k = 0; k < 8; ++k) in_o[k] = in[k] + misalign;
-      std::vector<std::vector<float>> out(n_out, std::vector<float>(n + 8, kSentinel));
-      float* dst[3];
-      for (int k = 0; k < n_out; ++k) dst[k] = out[k].data() + 1 + misalign % 2;
-      call(in_o, dst, n);
-      for (int k = 0; k < n_out; ++k) {
-        for (size_t i = 0; i < n; ++i) ASSERT_EQ(dst[k][i], full[k][i + misalign]) << n << " " << i;
-        for (float* s = out[k].data(); s < dst[k]; ++s) ASSERT_EQ(*s, kSentinel);
-        for (float* s = dst[k] + n; s < out[k].data() + out[k].size(); ++s) {
-          ASSERT_EQ(*s, kSentinel) << "output " << k << " n " << n;
-        }
-      }
-    }
-  }
+  test_util::CheckCountsAndSentinels(in, len, max_n, n_out, call);
 }
 
 }  // namespace

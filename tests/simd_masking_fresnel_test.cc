@@ -216,11 +216,7 @@ Model Ellipsoid(float ax, float ay, float tx, float ty, float tz) {
   p.theta_z = tz;
   const EllipsoidNdf<double> ndf(ax, ay, tx, ty, tz);
   const Mat3<double> a = ndf.shape_matrix();
-  // A^-T = S^-1 R, as the kernels build it.
-  const Mat3<double> ait =
-      Mat3<double>::Diagonal(1.0 / std::max<double>(ax, 1e-4), 1.0 / std::max<double>(ay, 1e-4),
-                             1.0) *
-      (Mat3<double>::RotX(tx) * Mat3<double>::RotY(ty) * Mat3<double>::RotZ(tz));
+  const Mat3<double> ait = bounds::EllipsoidKernelInvT(ax, ay, tx, ty, tz);
   Model m;
   m.name = "ellipsoid";
   m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {

@@ -307,7 +307,7 @@ namespace {
 // full-array results and the sentinels around every output are untouched.
 // `call(in, out, n)` reads the views (in[0..2]), normals (in[3..5]) and
 // uniforms (in[6..7]) it needs and writes n_out arrays.
-using BatchCall = std::function<void(const float* const*, float* const*, size_t)>;
+using test_util::BatchCall;
 
 void CheckCounts(int n_out, const BatchCall& call) {
   const size_t lanes = hn::Lanes(hn::ScalableTag<float>());
@@ -316,28 +316,7 @@ void CheckCounts(int n_out, const BatchCall& call) {
   const std::vector<float> u1 = Uniforms(len, 33), u2 = Uniforms(len, 34);
   const float* in[8] = {wo.x.data(), wo.y.data(), wo.z.data(), m.x.data(),
                         m.y.data(),  m.z.data(),  u1.data(),   u2.data()};
-  std::vector<std::vector<float>> full(n_out, std::vector<float>(len));
-  float* full_ptr[3];
-  for (int k = 0; k < n_out; ++k) full_ptr[k] = full[k].data();
-  call(in, full_ptr, len);
-  const float kSentinel = -12345.0f;
-  for (size_t misalign = 0; misalign < 4; ++misalign) {
-    for (size_t n = 0; n <= max_n; ++n) {
-      const float* in_o[8];
-      for (int k = 0; k < 8; ++k) in_o[k] = in[k] + misalign;
-      std::vector<std::vector<float>> out(n_out, std::vector<float>(n + 8, kSentinel));
-      float* dst[3];
-      for (int k = 0; k < n_out; ++k) dst[k] = out[k].data() + 1 + misalign % 2;
-      call(in_o, dst, n);
-      for (int k = 0; k < n_out; ++k) {
-        for (size_t i = 0; i < n; ++i) ASSERT_EQ(dst[k][i], full[k][i + misalign]) << n << " " << i;
-        for (float* s = out[k].data(); s < dst[k]; ++s) ASSERT_EQ(*s, kSentinel);
-        for (float* s = dst[k] + n; s < out[k].data() + out[k].size(); ++s) {
-          ASSERT_EQ(*s, kSentinel) << "output " << k << " n " << n;
-        }
-      }
-    }
-  }
+  test_util::CheckCountsAndSentinels(in, len, max_n, n_out, call);
 }
 
 }  // namespace

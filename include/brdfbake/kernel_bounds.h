@@ -50,6 +50,14 @@ inline constexpr double kEllipsoidDRel = 3e-6;       // times Kappa(A^-T, m)
 inline constexpr double kEllipsoidLambdaRel = 2e-6;  // times Kappa(A, u), of EllipsoidLambdaScale
 inline constexpr double kEllipsoidBrdfRel = 4e-6;    // see EllipsoidBrdfCondition
 
+// A^-T = S^-1 R of the ellipsoid as the SIMD kernels build it (alphas
+// clamped at 1e-4, R = Rx Ry Rz, radians), the matrix whose products with
+// m the D bound is conditioned by.
+inline Mat3<double> EllipsoidKernelInvT(double ax, double ay, double tx, double ty, double tz) {
+  return Mat3<double>::Diagonal(1.0 / std::max(ax, 1e-4), 1.0 / std::max(ay, 1e-4), 1.0) *
+         (Mat3<double>::RotX(tx) * Mat3<double>::RotY(ty) * Mat3<double>::RotZ(tz));
+}
+
 // Componentwise condition number of M v: | |M| |v| | / |M v| >= 1; 1 for a
 // diagonal M, growing as the rows of M cancel against v.
 inline double Kappa(const Mat3<double>& m, const Vec3<double>& v) {
