@@ -3,13 +3,18 @@
 
 #include "brdfbake/bake.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <limits>
 #include <cmath>
+#include <cstdio>
+#include <memory>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 
+#include <Imath/half.h>
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -120,10 +125,20 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (m != "ggx" && m != "beckmann" && m != "std") {
     Bad("--model: tables are baked for ggx, beckmann and std (got '" + m + "')");
   }
-  for (const Axis* a : {&spec.mu, &spec.roughness}) {
+  std::vector<const Axis*> axes = {&spec.roughness};
+  if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
+  for (const Axis* a : axes) {
     if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (a->placement == Placement::kEdges && a->size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
+    }
+    // One entry may sit at one value (min = max), as the report's probes do.
+    const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
+    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 || a->max > 1) {
+      std::ostringstream os;
+      os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= 1 (got " << a->min
+         << ":" << a->max << ")";
+      Bad(os.str());
     }
   }
   if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");
@@ -133,8 +148,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (spec.integrator == IntegratorKind::kQmc && spec.samples != 0 && spec.samples < 16) {
     Bad("--samples: qmc needs at least 16 samples (8 replicas of 2)");
   }
-  if (spec.complement && spec.table != TableKind::kE) Bad("--complement applies to the E table only");
-  if (spec.threads < 0) Bad("--threads must be >= 0");
+  if (spec.threads < 0 || spec.threads > kMaxThreads) {
+    Bad("--threads must be in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores)");
+  }
   if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance)) Bad("--tolerance must be a finite number >= 0");
 }
 
@@ -272,99 +288,240 @@ std::string IntegratorJson(const BakeSpec& spec) {
 
 }  // namespace
 
+EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
+  const double alpha = roughness * roughness;
+  static const GaussLegendre fine(32), coarse(16);
+  // E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds.
+  auto rule = [&](const GaussLegendre& gl, uint64_t salt, double* err) {
+    double acc = 0, acc_err = 0;
+    for (size_t k = 0; k < gl.x.size(); ++k) {
+      const double s = gl.x[k];
+      const TexelValue v =
+          Texel(spec, alpha, s * s, Mix64(spec.seed ^ Mix64((index << 20) + k + salt)));
+      const double wk = 4 * gl.w[k] * s * s * s;
+      acc += wk * v.e;
+      acc_err += wk * v.err_e;
+    }
+    *err = acc_err;
+    return acc;
+  };
+  double err_f, err_c;
+  const double f = rule(fine, 0, &err_f);
+  const double c = rule(coarse, 1 << 10, &err_c);
+  return {f, std::abs(f - c) + err_f};
+}
+
+namespace {
+
+int ValueChannels(const BakeSpec& spec) {
+  return spec.table == TableKind::kDfg ? (spec.complement ? 3 : 2) : 1;
+}
+
+int64_t TexelCount(const BakeSpec& spec) {
+  return spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
+                                        : int64_t(spec.mu.size) * spec.roughness.size;
+}
+
+// The pixel type's value nearest to v, and the next one towards zero.
+double RoundToPixel(double v, bool half) {
+  return half ? double(float(Imath::half(float(v)))) : double(float(v));
+}
+double PixelTowardsZero(double stored, bool half) {
+  if (stored <= 0) return 0;
+  if (!half) return double(std::nextafter(float(stored), 0.0f));
+  Imath::half h{float(stored)};
+  h.setBits(static_cast<uint16_t>(h.bits() - 1));
+  return double(float(h));
+}
+
+const char* Definition(const std::string& meaning) {
+  if (meaning == "E") return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
+  if (meaning == "1-E") return "1 - E(mu), computed in double before rounding";
+  if (meaning == "E_avg") return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
+  if (meaning == "1-E_avg") return "1 - E_avg, computed in double before rounding";
+  if (meaning == "dfg.scale") {
+    return "integral of (f/F) (1 - Fc) cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
+           "the specular albedo is F0 scale + F90 bias";
+  }
+  if (meaning == "dfg.bias") {
+    return "integral of (f/F) Fc cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
+           "the specular albedo is F0 scale + F90 bias";
+  }
+  return "the integrator's estimate of the absolute error of this texel before storage";
+}
+
+}  // namespace
+
+const char* const kStoredRange =
+    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1]; dfg.scale and dfg.bias clamped to >= 0 with "
+    "scale + bias <= 1 in the stored precision; brdfbake.max_abs_error covers the clamp and the "
+    "rounding to the pixel type";
+
+const char* const kLayoutText =
+    "axes fastest first: x = columns, then y = rows, then slices (a 3D table stores its 2D "
+    "slices stacked vertically); row 0 is the first row of the data window; channels in the "
+    "order of brdfbake.channel_order; axis i of size N: t = (i + 0.5) / N (centers) or "
+    "t = i / (N - 1) (edges), value = min + (max - min) w(t), w(t) = t (linear), t^2 (square), "
+    "sqrt(t) (sqrt)";
+
+size_t BakeOutputBytes(const BakeSpec& spec) {
+  const size_t n = size_t(TexelCount(spec));
+  const size_t channels = size_t(ValueChannels(spec)) + (spec.error_channel ? 1 : 0);
+  // values (double), stored (float) and half bits per channel, plus the
+  // error vector.
+  const size_t half = spec.half ? sizeof(uint16_t) : 0;
+  return n * (channels * (sizeof(double) + sizeof(float) + half) + sizeof(double));
+}
+
 Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   ValidateBakeSpec(spec);
   const auto start = std::chrono::steady_clock::now();
+  Table t;
+  t.spec = spec;
+  t.model_json = ModelJson(spec);
+  t.integrator_json = IntegratorJson(spec);
+  const Axis& ax_mu = spec.mu;
+  const Axis& ax_r = spec.roughness;
+  const bool eavg = spec.table == TableKind::kEavg;
+  if (eavg) {
+    t.axes = {ax_r};
+    t.width = ax_r.size;
+    t.height = 1;
+  } else {
+    t.axes = {ax_mu, ax_r};
+    t.width = ax_mu.size;
+    t.height = ax_r.size;
+  }
+  std::vector<std::string> meanings;
+  if (spec.table == TableKind::kE) {
+    meanings = {spec.complement ? "1-E" : "E"};
+  } else if (eavg) {
+    meanings = {spec.complement ? "1-E_avg" : "E_avg"};
+  } else {
+    meanings = {"dfg.scale", "dfg.bias"};
+    if (spec.complement) meanings.push_back("1-E");
+  }
+  const int64_t total = TexelCount(spec);
+  std::vector<double> error;
+  // Every output buffer is allocated before the bake: a memory failure
+  // comes first, not after the work.
+  try {
+    for (size_t c = 0; c < meanings.size(); ++c) {
+      std::string name = meanings[c];
+      if (spec.table == TableKind::kDfg) {
+        name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
+      }
+      t.channels.push_back({name, meanings[c], Definition(meanings[c]), {}, {}, {}});
+    }
+    if (spec.error_channel) t.channels.push_back({"error", "error", Definition("error"), {}, {}, {}});
+    for (Channel& c : t.channels) {
+      c.values.resize(size_t(total));
+      c.stored.resize(size_t(total));
+      if (spec.half) c.half_bits.resize(size_t(total));
+    }
+    error.resize(size_t(total));
+  } catch (const std::bad_alloc&) {
+    char msg[160];
+    std::snprintf(msg, sizeof(msg), "cannot allocate %.1f MiB for the %dx%d %s table (out of memory)",
+                  double(BakeOutputBytes(spec)) / (1 << 20), t.width, t.height,
+                  TableName(spec.table));
+    throw std::runtime_error(msg);
+  }
+
   std::unique_ptr<tbb::global_control> limit;
   if (spec.threads > 0) {
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                   spec.threads);
   }
-  Table t;
-  t.spec = spec;
-  t.integrator_json = IntegratorJson(spec);
-  const Axis& ax_mu = spec.mu;
-  const Axis& ax_r = spec.roughness;
   std::atomic<int64_t> done{0};
-
-  if (spec.table == TableKind::kEavg) {
-    t.axes = {ax_r};
-    t.width = ax_r.size;
-    t.height = 1;
-    std::vector<double> value(t.width), error(t.width);
-    const GaussLegendre fine(32), coarse(16);
-    const int64_t total = t.width;
+  std::vector<double>& v0 = t.channels[0].values;
+  if (eavg) {
     tbb::parallel_for(0, t.width, [&](int i) {
-      const double r = ax_r.Value(i);
-      const double alpha = r * r;
-      // E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds.
-      auto rule = [&](const GaussLegendre& gl, uint64_t salt, double* err) {
-        double acc = 0, acc_err = 0;
-        for (size_t k = 0; k < gl.x.size(); ++k) {
-          const double s = gl.x[k];
-          const TexelValue v = Texel(spec, alpha, s * s,
-                                     Mix64(spec.seed ^ Mix64((uint64_t(i) << 20) + k + salt)));
-          const double wk = 4 * gl.w[k] * s * s * s;
-          acc += wk * v.e;
-          acc_err += wk * v.err_e;
-        }
-        *err = acc_err;
-        return acc;
-      };
-      double err_f, err_c;
-      const double f = rule(fine, 0, &err_f);
-      const double c = rule(coarse, 1 << 10, &err_c);
-      value[i] = f;
-      error[i] = std::abs(f - c) + err_f;
+      const EavgEstimate e = IntegrateEavg(spec, ax_r.Value(i), uint64_t(i));
+      const double value = std::clamp(e.value, 0.0, 1.0);
+      v0[i] = spec.complement ? 1.0 - value : value;
+      error[i] = e.error;
       if (progress) progress(++done, total);
     });
-    t.channels.push_back({"E_avg", "E_avg", value});
-    t.max_abs_error = 0;
-    for (double e : error) t.max_abs_error = std::max(t.max_abs_error, e);
-    if (spec.error_channel) t.channels.push_back({"error", "error", error});
   } else {
-    t.axes = {ax_mu, ax_r};
-    t.width = ax_mu.size;
-    t.height = ax_r.size;
-    const int64_t total = int64_t(t.width) * t.height;
-    std::vector<TexelValue> texels(total);
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
       const double r = ax_r.Value(y);
-      texels[idx] = Texel(spec, r * r, ax_mu.Value(x), Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+      const TexelValue v =
+          Texel(spec, r * r, ax_mu.Value(x), Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+      if (spec.table == TableKind::kE) {
+        const double e = std::clamp(v.e, 0.0, 1.0);  // ClampToRange's E
+        v0[idx] = spec.complement ? 1.0 - e : e;
+        error[idx] = v.err_e;
+      } else {
+        const TexelEstimate c = ClampToRange({v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias});
+        v0[idx] = c.scale;
+        t.channels[1].values[idx] = c.bias;
+        error[idx] = std::max(c.err_scale, c.err_bias);
+        if (spec.complement) {
+          t.channels[2].values[idx] = 1.0 - c.e;
+          error[idx] = std::max(error[idx], c.err_e);
+        }
+      }
       if (progress) progress(++done, total);
     });
-    std::vector<double> error(total);
-    if (spec.table == TableKind::kE) {
-      std::vector<double> v(total);
-      for (int64_t i = 0; i < total; ++i) {
-        v[i] = spec.complement ? 1.0 - texels[i].e : texels[i].e;
-        error[i] = texels[i].err_e;
+  }
+  for (double e : error) t.integration_error = std::max(t.integration_error, e);
+  if (spec.error_channel) t.channels.back().values = error;
+
+  // Rounding to the pixel type, with dfg's scale + bias <= 1 kept in the
+  // stored precision; the claim adds each texel's rounding to its error.
+  const size_t nv = meanings.size();
+  double claim = 0;
+  for (int64_t i = 0; i < total; ++i) {
+    double worst = 0;
+    double stored[3];
+    for (size_t c = 0; c < nv; ++c) stored[c] = RoundToPixel(t.channels[c].values[i], spec.half);
+    if (spec.table == TableKind::kDfg) {
+      while (stored[0] + stored[1] > 1.0) {
+        const int c = stored[0] >= stored[1] ? 0 : 1;
+        stored[c] = PixelTowardsZero(stored[c], spec.half);
       }
-      t.channels.push_back({spec.complement ? "1-E" : "E", spec.complement ? "1-E" : "E", v});
-    } else {
-      std::vector<double> s(total), b(total);
-      for (int64_t i = 0; i < total; ++i) {
-        s[i] = texels[i].scale;
-        b[i] = texels[i].bias;
-        error[i] = std::max(texels[i].err_scale, texels[i].err_bias);
-      }
-      t.channels.push_back({"dfg.scale", "dfg.scale", s});
-      t.channels.push_back({"dfg.bias", "dfg.bias", b});
     }
-    for (double e : error) t.max_abs_error = std::max(t.max_abs_error, e);
-    if (spec.error_channel) t.channels.push_back({"error", "error", error});
+    for (size_t c = 0; c < nv; ++c) {
+      t.channels[c].stored[i] = float(stored[c]);
+      worst = std::max(worst, std::abs(stored[c] - t.channels[c].values[i]));
+    }
+    claim = std::max(claim, error[i] + worst);
   }
-  t.integration_error = t.max_abs_error;
-  // Storing the values adds the rounding error of the pixel type.
-  double max_value = 0;
-  for (const Channel& c : t.channels) {
-    if (c.meaning == "error") continue;
-    for (double v : c.values) max_value = std::max(max_value, std::abs(v));
+  if (spec.error_channel) {
+    Channel& ce = t.channels.back();
+    for (int64_t i = 0; i < total; ++i) ce.stored[i] = float(RoundToPixel(ce.values[i], spec.half));
   }
-  t.max_abs_error += max_value * (spec.half ? 0x1p-11 : 0x1p-24);
+  if (spec.half) {
+    for (Channel& c : t.channels) {
+      for (int64_t i = 0; i < total; ++i) c.half_bits[i] = Imath::half(c.stored[i]).bits();
+    }
+  }
+  t.max_abs_error = claim;
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
+}
+
+TexelEstimate ClampToRange(const TexelEstimate& v) {
+  TexelEstimate c = v;
+  // E: the true value lies in [0, 1], so the clamp only moves towards it.
+  c.e = std::clamp(v.e, 0.0, 1.0);
+  // scale, bias >= 0 likewise; scale + bias <= 1 is kept by moving both
+  // down by half the excess, and the move is added to their errors.
+  double s = std::max(v.scale, 0.0), b = std::max(v.bias, 0.0);
+  const double excess = s + b - 1.0;
+  if (excess > 0) {
+    s -= excess / 2;
+    b -= excess / 2;
+    if (s < 0) { b += s; s = 0; }
+    if (b < 0) { s += b; b = 0; }
+    c.err_scale += excess;
+    c.err_bias += excess;
+  }
+  c.scale = s;
+  c.bias = b;
+  return c;
 }
 
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
@@ -373,8 +530,5 @@ TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
   const TexelValue v = Texel(spec, roughness * roughness, mu, Mix64(spec.seed ^ texel_seed));
   return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
 }
-
-// Shared helpers for the EXR writer (exr.cc).
-std::string BakeModelJson(const BakeSpec& spec) { return ModelJson(spec); }
 
 }  // namespace brdfbake

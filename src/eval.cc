@@ -3,11 +3,14 @@
 
 #include "brdfbake/eval.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+
+#include "brdfbake/bake.h"
 
 namespace brdfbake {
 namespace {
@@ -23,9 +26,12 @@ std::string Fmt(double v) {
 }  // namespace
 
 const std::vector<std::string>& EvalQuantities() {
-  static const std::vector<std::string> kQ = {"D", "Lambda", "G1", "G2", "brdf", "pdf", "K"};
+  static const std::vector<std::string> kQ = {"D",   "Lambda", "G1", "G2",   "brdf",
+                                              "pdf", "K",      "E",  "dfg", "E_avg"};
   return kQ;
 }
+
+bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg"; }
 
 void ValidateEvalRequest(const EvalRequest& req) {
   ValidateModelParams(req.model);
@@ -33,7 +39,29 @@ void ValidateEvalRequest(const EvalRequest& req) {
   for (const std::string& q : req.quantities) {
     bool ok = false;
     for (const std::string& k : EvalQuantities()) ok |= q == k;
-    if (!ok) Bad("--quantity: unknown quantity '" + q + "' (expected D, Lambda, G1, G2, brdf, pdf or K)");
+    if (!ok) {
+      Bad("--quantity: unknown quantity '" + q +
+          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg or E_avg)");
+    }
+    const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
+    if (IsTableQuantity(q)) {
+      const std::string& m = req.model.name;
+      if (m != "ggx" && m != "beckmann" && m != "std") {
+        Bad("--quantity: " + q + " is baked for ggx, beckmann and std only (got '" + m + "')");
+      }
+      if (req.model.alpha_x != req.model.alpha_y) {
+        Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
+            "not --alpha-x/--alpha-y");
+      }
+      if (std::sqrt(req.model.alpha_x) > 1) {
+        Bad("--quantity: " + q + " is tabulated for roughness in [0, 1] (alpha <= 1)");
+      }
+      continue;
+    }
+    if (table_sweep) {
+      Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
+          "direction (got '" + q + "')");
+    }
     const bool is_sel = req.model.name == "sel";
     if (is_sel != (q == "K")) {
       Bad(is_sel ? "--quantity: model sel has only the quantity K"
@@ -50,8 +78,12 @@ void ValidateEvalRequest(const EvalRequest& req) {
     if (req.from < 0 || req.from > 180 || req.to < 0 || req.to > 180) {
       Bad("--from/--to must lie in [0, 180] degrees for --sweep theta");
     }
-  } else {
-    Bad("--sweep: unknown sweep '" + req.sweep + "' (expected mu or theta)");
+  } else if (req.sweep == "roughness") {
+    if (req.from < 0 || req.from > 1 || req.to < 0 || req.to > 1) {
+      Bad("--from/--to must lie in [0, 1] for --sweep roughness");
+    }
+  } else if (req.sweep != "none") {
+    Bad("--sweep: unknown sweep '" + req.sweep + "' (expected mu, theta, roughness or none)");
   }
   if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("--mu-o must lie in [0, 1]");
   if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("--phi/--phi-o must be finite");
@@ -70,16 +102,44 @@ void ValidateEvalRequest(const EvalRequest& req) {
   }
 }
 
+namespace {
+
+// E, dfg and E_avg at (mu, roughness), through the bake's integrator.
+std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, double mu,
+                                 double roughness) {
+  BakeSpec spec;
+  spec.model = req.model;
+  spec.masking = req.masking;
+  if (q == "E_avg") {
+    const EavgEstimate e = IntegrateEavg(spec, roughness);
+    return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
+  }
+  spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
+  const TexelEstimate v = ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)));
+  if (q == "E") return "," + Fmt(v.e) + "," + Fmt(v.err_e);
+  return "," + Fmt(v.scale) + "," + Fmt(v.bias) + "," + Fmt(std::max(v.err_scale, v.err_bias));
+}
+
+}  // namespace
+
 void EvalCsv(const EvalRequest& req, std::ostream& out) {
   ValidateEvalRequest(req);
+  const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
   const std::unique_ptr<Model> model = MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 
   std::ostringstream header;
-  header << "mu,theta_deg";
+  header << (req.sweep == "roughness" ? "roughness,mu" : req.sweep == "none" ? "mu,roughness"
+                                                                              : "mu,theta_deg");
   for (const std::string& q : req.quantities) {
-    if (q == "brdf" && !grey) {
+    if (q == "E") {
+      header << ",E,E_error";
+    } else if (q == "dfg") {
+      header << ",dfg_scale,dfg_bias,dfg_error";
+    } else if (q == "E_avg") {
+      header << ",E_avg,E_avg_error";
+    } else if (q == "brdf" && !grey) {
       header << ",brdf_r,brdf_g,brdf_b";
     } else {
       header << "," << q;
@@ -87,6 +147,19 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
   }
   out << header.str() << "\n";
 
+  const double model_roughness = std::sqrt(req.model.alpha_x);
+  if (table_sweep) {
+    const int count = req.sweep == "none" ? 1 : req.count;
+    for (int i = 0; i < count; ++i) {
+      const double t = count == 1 ? 0.0 : static_cast<double>(i) / (count - 1);
+      const double r = req.sweep == "none" ? model_roughness : req.from + (req.to - req.from) * t;
+      std::string row = req.sweep == "none" ? Fmt(req.mu_o) + "," + Fmt(r)
+                                            : Fmt(r) + "," + Fmt(req.mu_o);
+      for (const std::string& q : req.quantities) row += TableQuantityColumns(req, q, req.mu_o, r);
+      out << row << "\n";
+    }
+    return;
+  }
   for (int i = 0; i < req.count; ++i) {
     const double t = req.count == 1 ? 0.0 : static_cast<double>(i) / (req.count - 1);
     const double s = req.from + (req.to - req.from) * t;
@@ -113,6 +186,9 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
         row += "," + Fmt(model->Pdf(wo, w));
       } else if (q == "K") {
         row += "," + Fmt(model->K(w));
+      } else if (IsTableQuantity(q)) {
+        // The swept direction is the view.
+        row += TableQuantityColumns(req, q, mu, model_roughness);
       } else if (q == "brdf") {
         const int channels = grey ? 1 : 3;
         for (int c = 0; c < channels; ++c) {

@@ -10,12 +10,11 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
@@ -23,31 +22,47 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/grid.h"
+#include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
 
 namespace brdfbake {
 
-std::string BakeModelJson(const BakeSpec& spec);  // bake.cc
-
 namespace {
 
-// Writes `header` and `fb` to a temporary file beside `path`, then renames
-// it: never a partial file.
+// OpenEXR's output stream over an AtomicFile: errors name the target, never
+// the temporary.
+class AtomicOStream : public Imf::OStream {
+ public:
+  explicit AtomicOStream(AtomicFile* file) : Imf::OStream(file->path().c_str()), file_(file) {}
+  void write(const char c[], int n) override {
+    file_->WriteAt(c, size_t(n), pos_);
+    pos_ += uint64_t(n);
+  }
+  uint64_t tellp() override { return pos_; }
+  void seekp(uint64_t pos) override { pos_ = pos; }
+
+ private:
+  AtomicFile* file_;
+  uint64_t pos_ = 0;
+};
+
+// Writes `header` and `fb` through a temporary file and a rename.
 void WriteAtomically(const std::string& path, const Imf::Header& header,
                      const Imf::FrameBuffer& fb, int height) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+  AtomicFile file(path);
   try {
-    Imf::OutputFile file(tmp.c_str(), header);
-    file.setFrameBuffer(fb);
-    file.writePixels(height);
+    AtomicOStream os(&file);
+    Imf::OutputFile out(os, header);
+    out.setFrameBuffer(fb);
+    out.writePixels(height);
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    if (what.rfind("cannot write", 0) == 0) throw;
+    throw std::runtime_error("cannot write '" + path + "': " + what);
   } catch (const std::exception& e) {
-    std::remove(tmp.c_str());
     throw std::runtime_error("cannot write '" + path + "': " + e.what());
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  }
+  file.Commit();
 }
 
 }  // namespace
@@ -61,41 +76,48 @@ void WriteExr(const Table& table, const std::string& path) {
   };
   put("brdfbake.version", BRDFBAKE_VERSION);
   put("brdfbake.table", TableName(spec.table));
-  put("brdfbake.model", BakeModelJson(spec));
+  put("brdfbake.model", table.model_json);
   put("brdfbake.masking", MaskingName(spec.masking));
   put("brdfbake.fresnel", "one");
   nlohmann::json axes = nlohmann::json::array();
   for (const Axis& a : table.axes) axes.push_back(nlohmann::json::parse(a.ToJson()));
   put("brdfbake.axes", axes.dump());
+  put("brdfbake.layout", kLayoutText);
   nlohmann::json channels = nlohmann::json::object();
-  for (const Channel& c : table.channels) channels[c.name] = c.meaning;
+  nlohmann::json order = nlohmann::json::array();
+  nlohmann::json info = nlohmann::json::array();
+  for (size_t i = 0; i < table.channels.size(); ++i) {
+    const Channel& c = table.channels[i];
+    channels[c.name] = c.meaning;
+    order.push_back(c.name);
+    info.push_back({{"index", i}, {"name", c.name}, {"meaning", c.meaning}, {"definition", c.definition}});
+  }
   put("brdfbake.channels", channels.dump());
+  put("brdfbake.channel_order", order.dump());
+  put("brdfbake.channel_info", info.dump());
+  put("brdfbake.range", kStoredRange);
   put("brdfbake.integrator", table.integrator_json);
   char err[64];
   std::snprintf(err, sizeof(err), "%.3e", table.max_abs_error);
   put("brdfbake.max_abs_error", err);
 
   const Imf::PixelType type = spec.half ? Imf::HALF : Imf::FLOAT;
-  for (const Channel& c : table.channels) header.channels().insert(c.name, Imf::Channel(type));
-
-  const size_t n = size_t(table.width) * table.height;
-  std::vector<std::vector<float>> fdata;
-  std::vector<std::vector<Imath::half>> hdata;
   Imf::FrameBuffer fb;
   for (const Channel& c : table.channels) {
+    const size_t n = size_t(table.width) * table.height;
+    if (c.stored.size() != n || (spec.half && c.half_bits.size() != n)) {
+      throw std::logic_error("WriteExr: channel '" + c.name + "' has no stored pixels");
+    }
+    header.channels().insert(c.name, Imf::Channel(type));
     if (spec.half) {
-      hdata.emplace_back(n);
-      for (size_t i = 0; i < n; ++i) hdata.back()[i] = Imath::half(static_cast<float>(c.values[i]));
-      fb.insert(c.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(hdata.back().data()),
-                                   sizeof(Imath::half), sizeof(Imath::half) * table.width));
+      static_assert(sizeof(Imath::half) == sizeof(uint16_t), "half is 16 bits");
+      fb.insert(c.name, Imf::Slice(Imf::HALF, const_cast<char*>(reinterpret_cast<const char*>(c.half_bits.data())),
+                                   sizeof(uint16_t), sizeof(uint16_t) * table.width));
     } else {
-      fdata.emplace_back(n);
-      for (size_t i = 0; i < n; ++i) fdata.back()[i] = static_cast<float>(c.values[i]);
-      fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(fdata.back().data()),
+      fb.insert(c.name, Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(c.stored.data())),
                                    sizeof(float), sizeof(float) * table.width));
     }
   }
-
   WriteAtomically(path, header, fb, table.height);
 }
 

@@ -10,9 +10,13 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include <nlohmann/json.hpp>
+
+#include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
 #include "brdfbake/batch_beckmann_std.h"
 #include "brdfbake/batch_extra.h"
+#include "brdfbake/version.h"
 
 namespace brdfbake {
 
@@ -32,6 +36,63 @@ const char* GridKindName(GridKind k) {
   return "slice";
 }
 
+const char* GridChannelName(GridKind k) {
+  switch (k) {
+    case GridKind::kSlice: return "f";
+    case GridKind::kHemisphere: return "f_cos";
+    case GridKind::kG1: return "G1";
+  }
+  return "f";
+}
+
+std::vector<std::pair<std::string, std::string>> GridAttributes(const GridRequest& req,
+                                                                const Grid& grid) {
+  auto axis = [](const char* name, int size, double min, double max) {
+    return nlohmann::json{{"name", name}, {"size", size}, {"min", min}, {"max", max},
+                          {"warp", "linear"}, {"placement", "centers"}};
+  };
+  nlohmann::json axes = nlohmann::json::array();
+  nlohmann::json model = nlohmann::json::parse(req.model.ToJson());
+  std::string value;
+  switch (req.kind) {
+    case GridKind::kSlice:
+      axes.push_back(axis("theta_h_deg", req.width, 0, 90));
+      axes.push_back(axis("theta_d_deg", req.height, 0, 90));
+      value = "f(wi, wo) at the Rusinkiewicz half/difference angles, phi_h = 0, phi_d = 90 deg";
+      break;
+    case GridKind::kHemisphere:
+      axes.push_back(axis("u", req.width, -1, 1));
+      axes.push_back(axis("v", req.height, 1, -1));
+      value = "f(wi, wo) cos(theta_i) for wi = (u, v, sqrt(1 - u^2 - v^2)), 0 outside the unit "
+              "disk; wo at mu_o, phi_o";
+      model["mu_o"] = req.mu_o;
+      model["phi_o"] = req.phi_o;
+      break;
+    case GridKind::kG1:
+      axes.push_back(axis("mu", req.width, 0, 1));
+      axes.push_back(axis("roughness", req.height, 0, 1));
+      value = "G1(w) of the isotropic model at w.z = mu";
+      model.erase("alpha_x");
+      model.erase("alpha_y");
+      model["alpha"] = "roughness^2 (the y axis), clamped below at 1e-4";
+      break;
+  }
+  const char* channel = GridChannelName(req.kind);
+  return {{"brdfbake.version", BRDFBAKE_VERSION},
+          {"brdfbake.grid", GridKindName(req.kind)},
+          {"brdfbake.model", model.dump()},
+          {"brdfbake.masking", MaskingName(req.masking)},
+          {"brdfbake.fresnel", req.fresnel.Name()},
+          {"brdfbake.axes", axes.dump()},
+          {"brdfbake.layout", kLayoutText},
+          {"brdfbake.channels", nlohmann::json{{channel, channel}}.dump()},
+          {"brdfbake.channel_info",
+           nlohmann::json::array({{{"index", 0}, {"name", channel}, {"meaning", channel},
+                                   {"definition", value}}})
+               .dump()},
+          {"brdfbake.evaluated_by", grid.path}};
+}
+
 void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
   if (req.model.name == "sel") throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
@@ -39,7 +100,10 @@ void ValidateGridRequest(const GridRequest& req) {
     throw std::invalid_argument("--width/--height must be in [1, 16384]");
   }
   if (!(req.mu_o > 0) || req.mu_o > 1) throw std::invalid_argument("--mu-o must lie in (0, 1]");
-  if (req.threads < 0) throw std::invalid_argument("--threads must be >= 0");
+  if (req.threads < 0 || req.threads > kMaxThreads) {
+    throw std::invalid_argument("--threads must be in [0, " + std::to_string(kMaxThreads) +
+                                "] (0 = all cores)");
+  }
 }
 
 namespace {

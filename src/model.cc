@@ -21,9 +21,9 @@ namespace {
 [[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
 
 void CheckAlpha(const char* name, double a) {
-  if (!std::isfinite(a) || !(a > 0)) {
+  if (!std::isfinite(a) || !(a > 0) || a > kMaxAlpha) {
     std::ostringstream os;
-    os << name << " must be a finite number > 0 (got " << a << ")";
+    os << name << " must lie in (0, " << kMaxAlpha << "] (got " << a << ")";
     Bad(os.str());
   }
 }

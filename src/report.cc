@@ -6,14 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
-#include <unistd.h>
-
 #include <tbb/parallel_for.h>
+
+#include "brdfbake/output_file.h"
 
 namespace brdfbake {
 namespace {
@@ -39,23 +38,6 @@ double Median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-void WriteAtomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    out.flush();
-    if (!out) {
-      std::remove(tmp.c_str());
-      throw std::runtime_error("cannot write '" + path + "'");
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  }
 }
 
 std::string Num(double v, const char* fmt = "%.6g") {
@@ -359,20 +341,36 @@ void WriteReport(const Report& report, const std::string& dir) {
     interp_inner.x.push_back(r.size);
     interp_inner.y.push_back(std::max(r.max_abs_error_inner, 1e-12));
   }
-  WriteAtomically(dir + "/report.csv", csv.str());
-  WriteAtomically(dir + "/report.svg",
-                  LogLogSvg(title, "bake time (s)", "max abs error", series, footnote));
-  WriteAtomically(dir + "/interpolation.csv", icsv.str());
-  WriteAtomically(
-      dir + "/interpolation.svg",
-      LogLogSvg(what + ": error of " + (t.table == TableKind::kEavg ? "linear" : "bilinear") +
-                    " lookup against table size",
-                "entries per axis", "max abs error",
-                t.table == TableKind::kEavg ? std::vector<Series>{interp}
-                                            : std::vector<Series>{interp, interp_inner},
-                std::string("placement ") + PlacementName(t.roughness.placement) + ", warp mu " +
-                    WarpName(t.mu.warp) + ", roughness " + WarpName(t.roughness.warp) +
-                    "; exact values from the quadrature at cell midpoints"));
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"report.csv", csv.str()},
+      {"report.svg", LogLogSvg(title, "bake time (s)", "max abs error", series, footnote)},
+      {"interpolation.csv", icsv.str()},
+      {"interpolation.svg",
+       LogLogSvg(what + ": error of " + (t.table == TableKind::kEavg ? "linear" : "bilinear") +
+                     " lookup against table size",
+                 "entries per axis", "max abs error",
+                 t.table == TableKind::kEavg ? std::vector<Series>{interp}
+                                             : std::vector<Series>{interp, interp_inner},
+                 std::string("placement ") + PlacementName(t.roughness.placement) + ", warp mu " +
+                     WarpName(t.mu.warp) + ", roughness " + WarpName(t.roughness.warp) +
+                     "; exact values from the quadrature at cell midpoints")}};
+  // All or nothing: every file is written to its temporary first; only
+  // when all four are complete are they renamed, one after the other.
+  std::vector<std::unique_ptr<AtomicFile>> out;
+  for (const auto& f : files) {
+    out.push_back(std::make_unique<AtomicFile>(dir + "/" + f.first));
+    out.back()->Append(f.second);
+  }
+  std::string renamed;
+  for (size_t i = 0; i < out.size(); ++i) {
+    try {
+      out[i]->Commit();
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string(e.what()) + (renamed.empty() ? "; no report file was written"
+                                                                         : "; written before the failure:" + renamed));
+    }
+    renamed += " " + files[i].first;
+  }
 }
 
 }  // namespace brdfbake

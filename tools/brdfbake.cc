@@ -4,21 +4,24 @@
 // The brdfbake command-line tool: parses arguments, calls the library,
 // prints. No math here.
 
+#include <unistd.h>
+
+#include <array>
+#include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <chrono>
-#include <filesystem>
-#include <mutex>
-
-#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 
@@ -27,6 +30,7 @@
 #include "brdfbake/eval.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
+#include "brdfbake/output_file.h"
 #include "brdfbake/report.h"
 #include "brdfbake/stability.h"
 #include "brdfbake/targets.h"
@@ -36,15 +40,52 @@ namespace {
 
 using brdfbake::EvalRequest;
 using brdfbake::Fresnel;
-using brdfbake::FresnelKind;
 using brdfbake::Masking;
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+[[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
+
+// A message on one line: control characters (a newline inside an argument,
+// say) are shown as escapes.
+std::string OneLine(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof(buf), "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
 
 double ParseNumber(const std::string& opt, const std::string& text) {
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || std::isnan(v)) {
-    throw std::invalid_argument(opt + ": '" + text + "' is not a number");
+    Bad(opt + ": '" + text + "' is not a number");
+  }
+  return v;
+}
+
+// A seed: a decimal integer in [0, 2^64 - 1], nothing else.
+uint64_t ParseSeed(const std::string& opt, const std::string& text) {
+  bool digits = !text.empty() && text.size() <= 20;
+  for (char c : text) digits &= c >= '0' && c <= '9';
+  errno = 0;
+  const unsigned long long v = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
+  if (!digits || errno == ERANGE) {
+    Bad(opt + ": '" + text + "' is not an integer in [0, 18446744073709551615]");
   }
   return v;
 }
@@ -55,7 +96,7 @@ std::array<double, 3> ParseRgb(const std::string& opt, const std::string& text) 
   std::string item;
   while (std::getline(ss, item, ',')) v.push_back(ParseNumber(opt, item));
   if (v.size() == 1) return {v[0], v[0], v[0]};
-  if (v.size() != 3) throw std::invalid_argument(opt + ": expected one value or three (r,g,b), got '" + text + "'");
+  if (v.size() != 3) Bad(opt + ": expected one value or three (r,g,b), got '" + text + "'");
   return {v[0], v[1], v[2]};
 }
 
@@ -67,17 +108,24 @@ std::vector<std::string> SplitComma(const std::string& text) {
   return out;
 }
 
+bool Given(const CLI::App* app, const char* option) {
+  const CLI::Option* o = app->get_option_no_throw(option);
+  return o != nullptr && o->count() > 0;
+}
+
 // Options shared by every command that names a model.
 struct ModelOptions {
   std::string model = "ggx";
   std::string alpha, alpha_x, alpha_y, roughness;
   std::string gamma = "2";
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
+  CLI::App* app = nullptr;
 
-  void Add(CLI::App* app) {
+  void Add(CLI::App* a) {
+    app = a;
     app->add_option("--model,-m", model, "ggx | beckmann | std | ellipsoid | sel")
         ->capture_default_str();
-    app->add_option("--alpha", alpha, "NDF width alpha (both axes); default 0.25");
+    app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25");
     app->add_option("--alpha-x", alpha_x, "alpha along the tangent");
     app->add_option("--alpha-y", alpha_y, "alpha along the bitangent");
     app->add_option("--roughness,-r", roughness, "perceptual roughness r, alpha = r^2 (both axes)");
@@ -91,22 +139,28 @@ struct ModelOptions {
   brdfbake::ModelParams Get() const {
     brdfbake::ModelParams p;
     p.name = model;
+    if (Given(app, "--gamma") && model != "std") {
+      Bad("--gamma: model " + model + " has no gamma (only std does)");
+    }
+    for (const char* t : {"--theta-x", "--theta-y", "--theta-z"}) {
+      if (Given(app, t) && model != "ellipsoid" && model != "sel") {
+        Bad(std::string(t) + ": model " + model + " has no rotation (only ellipsoid and sel do)");
+      }
+    }
     double a = 0.25;
-    int given = !alpha.empty() + !roughness.empty();
-    if (given > 1) throw std::invalid_argument("--alpha and --roughness are exclusive");
+    if (!alpha.empty() && !roughness.empty()) Bad("--alpha and --roughness are exclusive");
     if (!alpha.empty()) a = ParseNumber("--alpha", alpha);
     if (!roughness.empty()) {
       const double r = ParseNumber("--roughness", roughness);
-      if (!(r > 0) || !std::isfinite(r)) throw std::invalid_argument("--roughness must be a finite number > 0");
+      if (!(r > 0) || !(r <= 100)) Bad("--roughness must lie in (0, 100] (alpha = r^2 <= 1e4)");
       a = r * r;
     }
     p.alpha_x = alpha_x.empty() ? a : ParseNumber("--alpha-x", alpha_x);
     p.alpha_y = alpha_y.empty() ? a : ParseNumber("--alpha-y", alpha_y);
     p.gamma = ParseNumber("--gamma", gamma);
-    const double deg = 3.14159265358979323846 / 180.0;
-    p.theta_x = theta_x_deg * deg;
-    p.theta_y = theta_y_deg * deg;
-    p.theta_z = theta_z_deg * deg;
+    p.theta_x = theta_x_deg * kDegree;
+    p.theta_y = theta_y_deg * kDegree;
+    p.theta_z = theta_z_deg * kDegree;
     brdfbake::ValidateModelParams(p);
     return p;
   }
@@ -116,8 +170,10 @@ struct FresnelOptions {
   std::string kind = "one";
   std::string f0 = "0.04", n = "0.2,0.92,1.1", k = "3.9,2.45,2.14";
   std::string eta = "1.5";
+  CLI::App* app = nullptr;
 
-  void Add(CLI::App* app) {
+  void Add(CLI::App* a) {
+    app = a;
     app->add_option("--fresnel", kind, "one | schlick | dielectric | conductor")->capture_default_str();
     app->add_option("--f0", f0, "schlick: F0, one value or r,g,b")->capture_default_str();
     app->add_option("--eta", eta, "dielectric: relative index of refraction")->capture_default_str();
@@ -126,20 +182,25 @@ struct FresnelOptions {
   }
 
   Fresnel Get() const {
+    const struct { const char* option; const char* kind; } owners[] = {
+        {"--f0", "schlick"}, {"--eta", "dielectric"}, {"--n", "conductor"}, {"--k", "conductor"}};
+    for (const auto& o : owners) {
+      if (Given(app, o.option) && kind != o.kind) {
+        Bad(std::string(o.option) + " applies to --fresnel " + o.kind + " only (got --fresnel " + kind + ")");
+      }
+    }
     if (kind == "one") return Fresnel::One();
     if (kind == "schlick") return Fresnel::Schlick(ParseRgb("--f0", f0));
     if (kind == "dielectric") return Fresnel::Dielectric(ParseNumber("--eta", eta));
     if (kind == "conductor") return Fresnel::Conductor(ParseRgb("--n", n), ParseRgb("--k", k));
-    throw std::invalid_argument("--fresnel: unknown model '" + kind +
-                                "' (expected one, schlick, dielectric or conductor)");
+    Bad("--fresnel: unknown model '" + kind + "' (expected one, schlick, dielectric or conductor)");
   }
 };
 
 Masking ParseMasking(const std::string& s) {
   if (s == "height-correlated") return Masking::kHeightCorrelated;
   if (s == "separable") return Masking::kSeparable;
-  throw std::invalid_argument("--masking: unknown variant '" + s +
-                              "' (expected height-correlated or separable)");
+  Bad("--masking: unknown variant '" + s + "' (expected height-correlated or separable)");
 }
 
 std::string VersionText() {
@@ -159,32 +220,63 @@ std::string ModelsHelp() {
        "              model's visible-normal sampler for the view wo, per steradian)\n"
        "  Lambda, G1  swept direction is w\n"
        "  G2, brdf    swept direction is the light wi; the view wo is fixed by --mu-o, --phi-o\n"
-       "  K           swept direction is w (model sel only)\n";
+       "  K           swept direction is w (model sel only)\n"
+       "  E, dfg      the tables' values (same integrator as bake), with their error;\n"
+       "  E_avg       the swept direction is the view; --sweep roughness sweeps r with the\n"
+       "              view at --mu-o; without --sweep/--from/--to/--count, one row at\n"
+       "              (--mu-o, --roughness)\n";
   return s;
 }
 
+// "WxH" (or "N" for a one-axis table) as integers in [1, 8192].
+std::vector<int> ParseSize(const std::string& text, size_t axes, const char* form) {
+  std::vector<int> out;
+  std::string item;
+  std::stringstream ss(text);
+  bool ok = !text.empty() && text.back() != 'x';
+  while (ok && std::getline(ss, item, 'x')) {
+    bool digits = !item.empty() && item.size() <= 5;
+    for (char c : item) digits &= c >= '0' && c <= '9';
+    const int v = digits ? std::atoi(item.c_str()) : 0;
+    ok = digits && v >= 1 && v <= 8192;
+    out.push_back(v);
+  }
+  if (!ok || out.size() != axes) {
+    Bad(std::string("--size: expected ") + form + " with each entry an integer in [1, 8192] (got '" +
+        text + "')");
+  }
+  return out;
+}
+
 struct BakeOptions {
-  std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear";
+  std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
-  std::string pixel = "float", output;
+  std::string pixel = "float", output, seed = "1";
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
-  uint64_t seed = 1;
   bool complement = false, error_channel = false;
+  bool for_report = false;
+  CLI::App* app = nullptr;
 
-  void Add(CLI::App* app, bool for_report = false) {
+  void Add(CLI::App* a, bool report) {
+    app = a;
+    for_report = report;
     app->add_option("--table,-t", table, "E | E_avg | dfg")->required();
     app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
     app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]")->capture_default_str();
-    app->add_option("--size", size, "mu x roughness entries, e.g. 32x32 (E_avg: roughness entries)")
-        ->capture_default_str();
+    app->add_option("--size", size,
+                    "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
+                        (report ? "16" : "32") + ")");
     app->add_option("--warp", warp, "linear | square | sqrt, or per axis: mu=linear,roughness=square")
         ->capture_default_str();
+    app->add_option("--range", range, "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
-    app->add_option("--threads", threads, "worker threads; 0 = all cores")->capture_default_str();
-    app->add_option("--seed", seed, "seed of the randomized integrators")->capture_default_str();
+    app->add_option("--threads", threads, "worker threads, at most 1024; 0 = all cores")
+        ->capture_default_str();
+    app->add_option("--seed", seed, "seed of the randomized integrators, in [0, 2^64 - 1]")
+        ->capture_default_str();
     if (for_report) {
       app->add_option("-o,--output", output, "output directory (created if missing)")->required();
       return;
@@ -194,7 +286,8 @@ struct BakeOptions {
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
         ->capture_default_str();
     app->add_option("--pixel", pixel, "float | half")->capture_default_str();
-    app->add_flag("--complement", complement, "store 1-E instead of E (E table)");
+    app->add_flag("--complement", complement,
+                  "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
     app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
     app->add_option("-o,--output", output, "output .exr file")->required();
   }
@@ -203,58 +296,93 @@ struct BakeOptions {
     brdfbake::BakeSpec spec;
     spec.table = brdfbake::ParseTable(table);
     spec.model.name = model;
+    if (Given(app, "--gamma") && model != "std") {
+      Bad("--gamma: model " + model + " has no gamma (only std does)");
+    }
     spec.model.gamma = ParseNumber("--gamma", gamma);
     spec.masking = ParseMasking(masking);
     spec.integrator = brdfbake::ParseIntegrator(integrator);
+    if (Given(app, "--tolerance") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
+      Bad("--tolerance applies to the quadrature integrator only (got --integrator " + integrator + ")");
+    }
     spec.samples = samples;
     spec.tolerance = tolerance;
-    spec.seed = seed;
+    spec.seed = ParseSeed("--seed", seed);
     spec.complement = complement;
     spec.error_channel = error_channel;
     spec.threads = threads;
-    if (pixel != "float" && pixel != "half") {
-      throw std::invalid_argument("--pixel: expected float or half, got '" + pixel + "'");
-    }
+    if (pixel != "float" && pixel != "half") Bad("--pixel: expected float or half, got '" + pixel + "'");
     spec.half = pixel == "half";
-    // Size: WxH for 2D tables, N for E_avg.
-    auto parse_int = [](const std::string& opt, const std::string& text) {
-      const double v = ParseNumber(opt, text);
-      if (v != std::floor(v) || v < 1 || v > 8192) {
-        throw std::invalid_argument(opt + ": '" + text + "' is not an integer in [1, 8192]");
+    const bool eavg = spec.table == brdfbake::TableKind::kEavg;
+    if (eavg) {
+      if (!Given(app, "--size")) {
+        spec.roughness.size = for_report ? 16 : 32;
+      } else if (size.find('x') != std::string::npos) {
+        Bad("--size: E_avg has one axis (roughness): expected N, e.g. --size 32 (got '" + size + "')");
+      } else {
+        spec.roughness.size = ParseSize(size, 1, "N")[0];
       }
-      return static_cast<int>(v);
-    };
-    const size_t x = size.find('x');
-    if (spec.table == brdfbake::TableKind::kEavg) {
-      spec.roughness.size = parse_int("--size", x == std::string::npos ? size : size.substr(x + 1));
     } else {
-      if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + size + "'");
-      spec.mu.size = parse_int("--size", size.substr(0, x));
-      spec.roughness.size = parse_int("--size", size.substr(x + 1));
+      const std::vector<int> wh = ParseSize(size, 2, "WxH (mu x roughness, e.g. 32x32)");
+      spec.mu.size = wh[0];
+      spec.roughness.size = wh[1];
     }
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
     spec.mu.placement = spec.roughness.placement = pl;
-    for (const std::string& item : SplitComma(warp)) {
-      const size_t eq = item.find('=');
-      if (eq == std::string::npos) {
-        spec.mu.warp = spec.roughness.warp = brdfbake::ParseWarp(item);
-      } else if (item.substr(0, eq) == "mu") {
-        spec.mu.warp = brdfbake::ParseWarp(item.substr(eq + 1));
-      } else if (item.substr(0, eq) == "roughness") {
-        spec.roughness.warp = brdfbake::ParseWarp(item.substr(eq + 1));
-      } else {
-        throw std::invalid_argument("--warp: unknown axis '" + item.substr(0, eq) +
-                                    "' (expected mu or roughness)");
+    // Per-axis settings: "value" for every axis of the table, or
+    // "axis=value"; each axis at most once.
+    std::vector<brdfbake::Axis*> axes = {&spec.roughness};
+    if (!eavg) axes.insert(axes.begin(), &spec.mu);
+    auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
+                        const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
+      std::vector<std::string> seen;
+      for (const std::string& item : SplitComma(text)) {
+        const size_t eq = item.find('=');
+        std::vector<brdfbake::Axis*> targets;
+        std::string value = item;
+        if (eq == std::string::npos) {
+          if (!plain_ok) Bad(std::string(opt) + ": expected axis=min:max, got '" + item + "'");
+          targets = axes;
+        } else {
+          const std::string name = item.substr(0, eq);
+          value = item.substr(eq + 1);
+          for (brdfbake::Axis* a : axes) {
+            if (a->name == name) targets.push_back(a);
+          }
+          if (targets.empty()) {
+            Bad(std::string(opt) + ": " +
+                (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
+                                      : "unknown axis '" + name + "' (expected " +
+                                            (eavg ? "roughness" : "mu or roughness") + ")"));
+          }
+        }
+        for (brdfbake::Axis* a : targets) {
+          for (const std::string& s : seen) {
+            if (s == a->name) Bad(std::string(opt) + ": the " + a->name + " axis is given twice");
+          }
+          seen.push_back(a->name);
+          set(a, value);
+        }
       }
+    };
+    per_axis("--warp", warp, true,
+             [](brdfbake::Axis* a, const std::string& v) { a->warp = brdfbake::ParseWarp(v); });
+    if (!range.empty()) {
+      per_axis("--range", range, false, [](brdfbake::Axis* a, const std::string& v) {
+        const size_t colon = v.find(':');
+        if (colon == std::string::npos) Bad("--range: expected " + a->name + "=min:max, got '" + v + "'");
+        a->min = ParseNumber("--range", v.substr(0, colon));
+        a->max = ParseNumber("--range", v.substr(colon + 1));
+      });
     }
-    if (output.empty()) throw std::invalid_argument("-o: an output file is required");
+    if (output.empty()) Bad("-o: an output file is required");
     brdfbake::ValidateBakeSpec(spec);
     return spec;
   }
 };
 
-// A progress bar on stderr when it is a terminal and the bake has taken
-// more than a second.
+// A progress bar on stderr when it is a terminal and the work has taken
+// more than a second: percent, elapsed and remaining time.
 class Progress {
  public:
   Progress() : tty_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
@@ -267,10 +395,12 @@ class Progress {
     if (done < total && std::chrono::duration<double>(now - last_).count() < 0.1) return;
     last_ = now;
     const int width = 40;
-    const int filled = static_cast<int>(width * done / std::max<int64_t>(1, total));
-    std::fprintf(stderr, "\r[%.*s%*s] %3d%% %.1fs", filled, "========================================",
-                 width - filled, "", static_cast<int>(100 * done / std::max<int64_t>(1, total)),
-                 elapsed);
+    total = std::max<int64_t>(1, total);
+    const int filled = static_cast<int>(width * done / total);
+    const double remaining = done > 0 ? elapsed * double(total - done) / double(done) : 0.0;
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%% %.1fs elapsed, %.1fs left ", filled,
+                 "========================================", width - filled, "",
+                 static_cast<int>(100 * done / total), elapsed, remaining);
     shown_ = true;
   }
   void Finish() {
@@ -284,53 +414,220 @@ class Progress {
   std::mutex mu_;
 };
 
-}  // namespace
+int RunBake(const BakeOptions& opts) {
+  const brdfbake::BakeSpec spec = opts.Get();
+  brdfbake::CheckOutputExtension(opts.output, ".exr", "bake");
+  brdfbake::CheckOutputPath(opts.output);
+  Progress progress;
+  const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
+  progress.Finish();
+  brdfbake::WriteExr(table, opts.output);
+  std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
+              OneLine(opts.output).c_str(), brdfbake::TableName(spec.table),
+              spec.model.name.c_str(), table.width, table.height,
+              brdfbake::IntegratorName(spec.integrator), table.seconds, table.max_abs_error);
+  if (spec.roughness.placement == brdfbake::Placement::kEdges) {
+    std::fprintf(stderr,
+                 "note: edges placement puts texel i at t = i / (N - 1); a GPU's bilinear lookup "
+                 "needs t' = (t (N - 1) + 0.5) / N, or bake with --placement centers\n");
+  }
+  return 0;
+}
 
-int main(int argc, char** argv) {
-  CLI::App app{"brdfbake: microfacet BRDF models and the lookup tables real-time engines sample."};
-  app.set_version_flag("--version", VersionText());
-  app.require_subcommand(1);
+int RunReportCommand(const BakeOptions& opts, int repeats, double reference_tolerance) {
+  brdfbake::ReportSpec rs;
+  rs.table = opts.Get();
+  rs.repeats = repeats;
+  if (!(reference_tolerance > 0) || !std::isfinite(reference_tolerance)) {
+    Bad("--reference-tolerance must be a finite number > 0");
+  }
+  rs.reference_tolerance = reference_tolerance;
+  if (rs.repeats < 1 || rs.repeats > 100) Bad("--repeats must be in [1, 100]");
+  // The directory is made and checked before the work starts.
+  std::error_code ec;
+  std::filesystem::create_directories(opts.output, ec);
+  if (ec || !std::filesystem::is_directory(opts.output)) {
+    Bad("-o: cannot create directory '" + opts.output + "'" + (ec ? ": " + ec.message() : ""));
+  }
+  for (const char* f : {"report.csv", "report.svg", "interpolation.csv", "interpolation.svg"}) {
+    brdfbake::CheckOutputPath(opts.output + "/" + f);
+  }
+  const brdfbake::Report r = brdfbake::RunReport(
+      rs, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  brdfbake::WriteReport(r, opts.output);
+  std::printf("wrote %s/report.csv, report.svg, interpolation.csv, interpolation.svg\n",
+              OneLine(opts.output).c_str());
+  return 0;
+}
 
-  CLI::App* eval = app.add_subcommand(
-      "eval", "Evaluate a model's D, Lambda, G1, G2, BRDF or pdf along a sweep, as CSV on stdout.");
-  eval->footer(ModelsHelp());
-  ModelOptions model_opts;
-  model_opts.Add(eval);
-  FresnelOptions fresnel_opts;
-  fresnel_opts.Add(eval);
+int RunStabilityCommand(int samples, const std::string& seed_text) {
+  if (samples < 1 || samples > 100000000) Bad("--samples must be in [1, 100000000]");
+  const uint64_t seed = ParseSeed("--seed", seed_text);
+  std::ostringstream out;
+  const std::vector<brdfbake::StabilityRow> rows = brdfbake::RunStability(samples, seed);
+  brdfbake::WriteStabilityCsv(rows, out);
+  std::cout << out.str();
+  int64_t outside = 0, non_finite = 0;
+  for (const brdfbake::StabilityRow& r : rows) {
+    outside += r.Within() ? 0 : 1;
+    non_finite += r.non_finite;
+  }
+  std::cerr << rows.size() << " rows: " << non_finite << " non-finite outputs, " << outside
+            << " rows outside their stated bound\n";
+  return outside > 0 ? 1 : 0;
+}
+
+struct EvalOptions {
+  ModelOptions model;
+  FresnelOptions fresnel;
   std::string quantity = "D", masking = "height-correlated", sweep = "mu";
   EvalRequest req;
   double phi_deg = 0, phi_o_deg = 0;
-  eval->add_option("--quantity,-q", quantity, "D, Lambda, G1, G2, brdf, pdf, K (comma-separated)")
-      ->capture_default_str();
-  eval->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
-  eval->add_option("--sweep", sweep, "mu (cos theta) or theta (degrees)")->capture_default_str();
-  eval->add_option("--from", req.from, "first value of the sweep")->capture_default_str();
-  eval->add_option("--to", req.to, "last value of the sweep")->capture_default_str();
-  eval->add_option("--count,-n", req.count, "number of samples")->capture_default_str();
-  eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str();
-  eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf)")->capture_default_str();
-  eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
   std::string grid_kind, grid_out, target = "best";
   int grid_w = 256, grid_h = 256, grid_threads = 0;
-  eval->add_option("--grid", grid_kind,
-                   "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
-                   "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");
-  eval->add_option("--width", grid_w, "grid width")->capture_default_str();
-  eval->add_option("--height", grid_h, "grid height")->capture_default_str();
-  eval->add_option("--threads", grid_threads, "grid: worker threads; 0 = all cores")->capture_default_str();
-  eval->add_option("-o,--output", grid_out, "grid: output .exr file");
-  eval->add_option("--target", target, "force a SIMD target (AVX3, AVX2, SSE4, SSSE3, SCALAR, or best)")
-      ->capture_default_str();
+  CLI::App* app = nullptr;
+
+  void Add(CLI::App* eval) {
+    app = eval;
+    eval->footer(ModelsHelp());
+    model.Add(eval);
+    fresnel.Add(eval);
+    eval->add_option("--quantity,-q", quantity,
+                     "D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg (comma-separated)")
+        ->capture_default_str();
+    eval->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
+    eval->add_option("--sweep", sweep, "mu (cos theta), theta (degrees), roughness or none")
+        ->capture_default_str();
+    eval->add_option("--from", req.from, "first value of the sweep")->capture_default_str();
+    eval->add_option("--to", req.to, "last value of the sweep")->capture_default_str();
+    eval->add_option("--count,-n", req.count, "number of samples")->capture_default_str();
+    eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str();
+    eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf, E, dfg)")
+        ->capture_default_str();
+    eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
+    eval->add_option("--grid", grid_kind,
+                     "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
+                     "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");
+    eval->add_option("--width", grid_w, "grid width")->capture_default_str();
+    eval->add_option("--height", grid_h, "grid height")->capture_default_str();
+    eval->add_option("--threads", grid_threads, "grid: worker threads, at most 1024; 0 = all cores")
+        ->capture_default_str();
+    eval->add_option("-o,--output", grid_out, "grid: output .exr file");
+    eval->add_option("--target", target, "force a SIMD target (AVX3, AVX2, SSE4, SSSE3, SCALAR, or best)")
+        ->capture_default_str();
+  }
+};
+
+int RunGrid(const EvalOptions& o) {
+  brdfbake::ForceTarget(o.target);
+  brdfbake::GridRequest gr;
+  gr.model = o.model.Get();
+  gr.fresnel = o.fresnel.Get();
+  gr.masking = ParseMasking(o.masking);
+  gr.kind = brdfbake::ParseGridKind(o.grid_kind);
+  gr.width = o.grid_w;
+  gr.height = o.grid_h;
+  gr.threads = o.grid_threads;
+  gr.mu_o = o.req.mu_o;
+  gr.phi_o = o.phi_o_deg * kDegree;
+  if (o.grid_out.empty()) Bad("-o: --grid writes an EXR file; name it with -o");
+  brdfbake::ValidateGridRequest(gr);
+  brdfbake::CheckOutputExtension(o.grid_out, ".exr", "eval --grid");
+  brdfbake::CheckOutputPath(o.grid_out);
+  const auto start = std::chrono::steady_clock::now();
+  const brdfbake::Grid g = brdfbake::EvalGrid(gr);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  brdfbake::WriteImageExr(o.grid_out, g.width, g.height,
+                          {{brdfbake::GridChannelName(gr.kind), &g.values}},
+                          brdfbake::GridAttributes(gr, g));
+  std::printf("wrote %s: %s grid %dx%d of %s in %.3f s (%s)\n", OneLine(o.grid_out).c_str(),
+              brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name.c_str(), secs,
+              g.path.c_str());
+  return 0;
+}
+
+int RunEval(const EvalOptions& o) {
+  if (!o.grid_kind.empty()) return RunGrid(o);
+  if (o.target != "best") brdfbake::ForceTarget(o.target);
+  EvalRequest req = o.req;
+  req.model = o.model.Get();
+  req.fresnel = o.fresnel.Get();
+  req.masking = ParseMasking(o.masking);
+  req.quantities = SplitComma(o.quantity);
+  req.sweep = o.sweep;
+  // Table quantities alone and no sweep asked for: one value at
+  // (--mu-o, --roughness).
+  bool tables_only = true;
+  for (const std::string& q : req.quantities) tables_only &= brdfbake::IsTableQuantity(q);
+  if (tables_only && !Given(o.app, "--sweep") && !Given(o.app, "--from") && !Given(o.app, "--to") &&
+      !Given(o.app, "--count")) {
+    req.sweep = "none";
+  }
+  req.phi = o.phi_deg * kDegree;
+  req.phi_o = o.phi_o_deg * kDegree;
+  std::ostringstream out;  // nothing is printed unless the whole sweep succeeds
+  brdfbake::EvalCsv(req, out);
+  std::cout << out.str();
+  return 0;
+}
+
+// CLI11 lists unexpected arguments in reverse; this names them in order.
+std::string ExtrasMessage(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    const std::vector<std::string> extras = sub->remaining();
+    if (extras.empty()) continue;
+    std::string list;
+    for (const std::string& e : extras) list += (list.empty() ? "" : " ") + e;
+    const std::string& first = extras.front();
+    std::string msg = sub->get_name() + ": ";
+    if (first.size() > 1 && first[0] == '-' && !std::isdigit(static_cast<unsigned char>(first[1])) &&
+        first[1] != '.') {
+      msg += "unknown option '" + first + "'";
+    } else {
+      msg += "unexpected argument '" + first + "'";
+    }
+    if (extras.size() > 1) msg += " (unexpected, in order: " + list + ")";
+    return msg + "; see brdfbake " + sub->get_name() + " --help";
+  }
+  const std::vector<std::string> extras = app.remaining();
+  std::string list;
+  for (const std::string& e : extras) list += (list.empty() ? "" : " ") + e;
+  return "unexpected arguments: " + list + " (see brdfbake --help)";
+}
+
+// Every byte of standard output reached its destination (a full disk or a
+// closed pipe is an error, not a silent success).
+bool FlushStdout() {
+  std::cout.flush();
+  return std::cout && std::fflush(stdout) == 0 && !std::ferror(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  brdfbake::InstallTemporaryCleanup();
+  CLI::App app{"brdfbake: microfacet BRDF models and the lookup tables real-time engines sample."};
+  app.set_version_flag("--version", VersionText());
+  app.require_subcommand(1);
+  app.allow_extras();
+
+  CLI::App* eval = app.add_subcommand(
+      "eval", "Evaluate a model's D, Lambda, G1, G2, BRDF, pdf, or a table's E, dfg, E_avg, "
+              "along a sweep, as CSV on stdout.");
+  eval->allow_extras();
+  EvalOptions eval_opts;
+  eval_opts.Add(eval);
 
   CLI::App* bake = app.add_subcommand(
       "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing OpenEXR file.");
+  bake->allow_extras();
   BakeOptions bake_opts;
-  bake_opts.Add(bake);
+  bake_opts.Add(bake, false);
 
   CLI::App* report = app.add_subcommand(
       "report", "Error against run time of every integrator over a ladder of budgets, and the "
                 "interpolation error against table size: CSV and SVG plots in a directory.");
+  report->allow_extras();
   BakeOptions report_opts;
   report_opts.size = "16x16";
   report_opts.Add(report, true);
@@ -344,11 +641,12 @@ int main(int argc, char** argv) {
   CLI::App* stability = app.add_subcommand(
       "stability", "Float kernels against the double reference, region by region over the "
                    "documented domain: max relative error and non-finite count, as CSV.");
+  stability->allow_extras();
   int stability_samples = 20000;
-  uint64_t stability_seed = 1;
+  std::string stability_seed = "1";
   stability->add_option("--samples", stability_samples, "samples per region and model")
       ->capture_default_str();
-  stability->add_option("--seed", stability_seed, "seed")->capture_default_str();
+  stability->add_option("--seed", stability_seed, "seed, in [0, 2^64 - 1]")->capture_default_str();
 
   try {
     app.parse(argc, argv);
@@ -359,114 +657,30 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::string msg = e.what();
-    for (char& c : msg) if (c == '\n') c = ' ';
-    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", msg.c_str());
+    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
+    return 2;
+  }
+  bool extras = !app.remaining().empty();
+  for (const CLI::App* sub : app.get_subcommands()) extras |= !sub->remaining().empty();
+  if (extras) {
+    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app)).c_str());
     return 2;
   }
 
+  int status = 0;
   try {
-    if (*bake) {
-      const brdfbake::BakeSpec spec = bake_opts.Get();
-      Progress progress;
-      const brdfbake::Table table =
-          brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
-      progress.Finish();
-      brdfbake::WriteExr(table, bake_opts.output);
-      std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
-                  bake_opts.output.c_str(), brdfbake::TableName(spec.table), spec.model.name.c_str(),
-                  table.width, table.height, brdfbake::IntegratorName(spec.integrator),
-                  table.seconds, table.max_abs_error);
-    }
-    if (*report) {
-      brdfbake::ReportSpec rs;
-      rs.table = report_opts.Get();
-      rs.repeats = repeats;
-      if (!(reference_tolerance > 0) || !std::isfinite(reference_tolerance)) {
-        throw std::invalid_argument("--reference-tolerance must be a finite number > 0");
-      }
-      rs.reference_tolerance = reference_tolerance;
-      if (rs.repeats < 1 || rs.repeats > 100) throw std::invalid_argument("--repeats must be in [1, 100]");
-      std::error_code ec;
-      std::filesystem::create_directories(report_opts.output, ec);
-      if (ec || !std::filesystem::is_directory(report_opts.output)) {
-        throw std::invalid_argument("-o: cannot create directory '" + report_opts.output + "'");
-      }
-      const brdfbake::Report r = brdfbake::RunReport(
-          rs, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
-      brdfbake::WriteReport(r, report_opts.output);
-      std::printf("wrote %s/report.csv, report.svg, interpolation.csv, interpolation.svg\n",
-                  report_opts.output.c_str());
-    }
-    if (*stability) {
-      if (stability_samples < 1 || stability_samples > 100000000) {
-        throw std::invalid_argument("--samples must be in [1, 100000000]");
-      }
-      std::ostringstream out;
-      const std::vector<brdfbake::StabilityRow> rows =
-          brdfbake::RunStability(stability_samples, stability_seed);
-      brdfbake::WriteStabilityCsv(rows, out);
-      std::cout << out.str();
-      int64_t outside = 0, non_finite = 0;
-      for (const brdfbake::StabilityRow& r : rows) {
-        outside += r.Within() ? 0 : 1;
-        non_finite += r.non_finite;
-      }
-      std::cerr << rows.size() << " rows: " << non_finite << " non-finite outputs, " << outside
-                << " rows outside their stated bound\n";
-      if (outside > 0) return 1;
-    }
-    if (*eval && !grid_kind.empty()) {
-      brdfbake::ForceTarget(target);
-      brdfbake::GridRequest gr;
-      gr.model = model_opts.Get();
-      gr.fresnel = fresnel_opts.Get();
-      gr.masking = ParseMasking(masking);
-      gr.kind = brdfbake::ParseGridKind(grid_kind);
-      gr.width = grid_w;
-      gr.height = grid_h;
-      gr.threads = grid_threads;
-      gr.mu_o = req.mu_o;
-      gr.phi_o = phi_o_deg * 3.14159265358979323846 / 180.0;
-      if (grid_out.empty()) throw std::invalid_argument("-o: --grid writes an EXR file; name it with -o");
-      const auto start = std::chrono::steady_clock::now();
-      const brdfbake::Grid g = brdfbake::EvalGrid(gr);
-      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const char* names[] = {"f", "f_cos", "G1"};
-      const std::string channel = names[static_cast<int>(gr.kind)];
-      brdfbake::WriteImageExr(
-          grid_out, g.width, g.height, {{channel, &g.values}},
-          {{"brdfbake.version", BRDFBAKE_VERSION},
-           {"brdfbake.grid", brdfbake::GridKindName(gr.kind)},
-           {"brdfbake.model", gr.model.ToJson()},
-           {"brdfbake.masking", brdfbake::MaskingName(gr.masking)},
-           {"brdfbake.fresnel", gr.fresnel.Name()},
-           {"brdfbake.evaluated_by", g.path}});
-      std::printf("wrote %s: %s grid %dx%d of %s in %.3f s (%s)\n", grid_out.c_str(),
-                  brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name.c_str(), secs,
-                  g.path.c_str());
-    } else if (*eval) {
-      if (target != "best") brdfbake::ForceTarget(target);
-      req.model = model_opts.Get();
-      req.fresnel = fresnel_opts.Get();
-      req.masking = ParseMasking(masking);
-      req.quantities = SplitComma(quantity);
-      req.sweep = sweep;
-      const double deg = 3.14159265358979323846 / 180.0;
-      req.phi = phi_deg * deg;
-      req.phi_o = phi_o_deg * deg;
-      std::ostringstream out;  // nothing is printed unless the whole sweep succeeds
-      brdfbake::EvalCsv(req, out);
-      std::cout << out.str();
-      std::cout.flush();
-      if (!std::cout) {
-        std::fprintf(stderr, "brdfbake: error: could not write to standard output\n");
-        return 1;
-      }
-    }
+    if (*bake) status = RunBake(bake_opts);
+    if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
+    if (*stability) status = RunStabilityCommand(stability_samples, stability_seed);
+    if (*eval) status = RunEval(eval_opts);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", e.what());
+    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(e.what()).c_str());
     return 1;
   }
-  return 0;
+  if (!FlushStdout()) {
+    std::fprintf(stderr, "brdfbake: error: cannot write to standard output: %s\n",
+                 std::strerror(errno ? errno : EIO));
+    return 1;
+  }
+  return status;
 }

@@ -73,23 +73,38 @@ struct BakeSpec {
   uint64_t seed = 1;
   Axis mu{"mu", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   Axis roughness{"roughness", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  bool complement = false;     // store 1 - E instead of E (E table only)
+  // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
+  // instead of the value, dfg adds it as a third channel.
+  bool complement = false;
   bool error_channel = false;  // add a per-texel "error" channel
   bool half = false;           // half pixels (default float)
-  int threads = 0;             // 0 = all cores
+  int threads = 0;             // 0 = all cores, at most kMaxThreads
   bool estimate_error = true;  // engine: measure the error against the quadrature
 
   // Default samples for the integrator (the value used when samples == 0).
   int EffectiveSamples() const;
 };
 
+inline constexpr int kMaxThreads = 1024;
+
 // Throws std::invalid_argument (one line, naming the bad input).
 void ValidateBakeSpec(const BakeSpec& spec);
 
+// Bytes of memory Bake() allocates for its outputs (checked before baking).
+size_t BakeOutputBytes(const BakeSpec& spec);
+
+// Channel names sort into the intended order (OpenEXR stores channels
+// sorted by name), so a loader that takes channels by index gets
+//   E:     E (or 1-E), [error]
+//   E_avg: E_avg (or 1-E_avg), [error]
+//   dfg:   dfg.0_scale, dfg.1_bias, [dfg.2_1-E], [error]
 struct Channel {
-  std::string name;     // EXR channel name
-  std::string meaning;  // E, 1-E, E_avg, dfg.scale, dfg.bias, error
-  std::vector<double> values;
+  std::string name;        // EXR channel name
+  std::string meaning;     // E, 1-E, E_avg, 1-E_avg, dfg.scale, dfg.bias, error
+  std::string definition;  // one sentence, for the file header
+  std::vector<double> values;  // the baked values (after the range clamp)
+  std::vector<float> stored;   // the values rounded to the pixel type
+  std::vector<uint16_t> half_bits;  // the same as IEEE half bits (half pixels only)
 };
 
 struct Table {
@@ -100,8 +115,14 @@ struct Table {
   double max_abs_error = 0;   // largest estimated error of any stored value
   double integration_error = 0;  // the same before rounding to the pixel type
   double seconds = 0;         // wall time of the bake
+  std::string model_json;     // brdfbake.model
   std::string integrator_json;
 };
+
+// Stored values are clamped to the physical range: E, 1-E, E_avg and
+// 1-E_avg to [0, 1]; dfg.scale, dfg.bias >= 0 with scale + bias <= 1 in the
+// stored precision. Every claimed error covers the clamp.
+extern const char* const kStoredRange;
 
 // Progress callback: done, total (texels or rows).
 using ProgressFn = std::function<void(int64_t done, int64_t total)>;
@@ -118,8 +139,22 @@ struct TexelEstimate {
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed = 0);
 
-// Writes `table` as a self-describing OpenEXR file (SPEC.md section 4): to a
-// temporary file beside `path`, then renamed. Throws std::runtime_error.
+// The estimate moved into the physical range (E in [0, 1]; scale, bias >= 0
+// and scale + bias <= 1), as the tables store it; the errors cover the move.
+TexelEstimate ClampToRange(const TexelEstimate& v);
+
+// E_avg at one roughness, as the E_avg table bakes it (texel `index` picks
+// the random streams of the sampling integrators), and its error estimate.
+struct EavgEstimate {
+  double value = 0, error = 0;
+};
+EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index = 0);
+
+// "axes fastest first: ..." and the axis map, for the brdfbake.layout attribute.
+extern const char* const kLayoutText;
+
+// Writes `table` as a self-describing OpenEXR file (docs/format.md) through
+// an AtomicFile (output_file.h). Throws std::runtime_error.
 void WriteExr(const Table& table, const std::string& path);
 
 // Reads back a brdfbake EXR: every string attribute and every channel.

@@ -23,6 +23,13 @@ namespace brdfbake {
 //   Lambda, G1  the direction w
 //   G2, brdf    the light direction wi, with the view wo fixed
 //   K           the direction w (sel)
+//   E, dfg      the view wo (E(mu) and dfg.scale, dfg.bias of the tables,
+//               through the same integrator as `bake`); columns with the
+//               integrator's error estimate
+//   E_avg       none (a function of roughness alone)
+// Sweeps: "mu" (cos theta), "theta" (degrees), "roughness" (the table
+// quantities only; alpha = r^2, the view at mu_o), or "none" (one row at
+// mu_o and the model's roughness sqrt(alpha), table quantities only).
 struct EvalRequest {
   ModelParams model;
   std::vector<std::string> quantities = {"D"};
@@ -31,7 +38,7 @@ struct EvalRequest {
   double mu_o = 1.0;   // cos(theta) of the fixed view wo
   double phi_o = 0.0;  // azimuth of wo, radians
   double phi = 0.0;    // azimuth of the swept direction, radians
-  std::string sweep = "mu";  // "mu": cos(theta); "theta": degrees
+  std::string sweep = "mu";  // mu | theta | roughness | none
   double from = 0.0, to = 1.0;
   int count = 11;
 };
@@ -40,6 +47,9 @@ const std::vector<std::string>& EvalQuantities();
 
 // Throws std::invalid_argument (one line, naming the bad input) on bad input.
 void ValidateEvalRequest(const EvalRequest& req);
+
+// True for E, dfg and E_avg (the quantities the tables hold).
+bool IsTableQuantity(const std::string& q);
 
 // Writes a header line and `count` rows. Throws on bad input before writing.
 void EvalCsv(const EvalRequest& req, std::ostream& out);

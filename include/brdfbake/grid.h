@@ -49,6 +49,14 @@ struct Grid {
 void ValidateGridRequest(const GridRequest& req);
 Grid EvalGrid(const GridRequest& req);
 
+// The grid's header attributes (brdfbake.axes in the tables' form,
+// brdfbake.model with what the grid sweeps, brdfbake.layout, ...), for
+// WriteImageExr.
+std::vector<std::pair<std::string, std::string>> GridAttributes(const GridRequest& req,
+                                                                const Grid& grid);
+// The grid's one channel: f, f_cos or G1.
+const char* GridChannelName(GridKind k);
+
 // Writes a float image with string attributes, through a temporary file and
 // a rename. Throws std::runtime_error.
 void WriteImageExr(const std::string& path, int width, int height,

@@ -38,6 +38,12 @@ struct ModelInfo {
 };
 const std::vector<ModelInfo>& Models();
 
+// The largest alpha accepted (roughness 100). Every model quantity, in
+// double, in float and in the SIMD kernels, is finite up to it
+// (PropertyTest.*AtTheDomainBounds); beyond about 1e19 squares of alpha
+// overflow float and the SIMD grids would give NaN.
+inline constexpr double kMaxAlpha = 1e4;
+
 // Throws std::invalid_argument with a one-line message naming the bad
 // parameter if `p` is outside the documented domain.
 void ValidateModelParams(const ModelParams& p);

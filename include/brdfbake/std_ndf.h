@@ -123,9 +123,18 @@ inline constexpr double kStdSeriesMaxA = 1.5;
 // finite sums of about gamma terms).
 inline constexpr double kStdClosedFormMaxGamma = 10000.0;
 
-// gamma clamped to [kMinStdGamma, +inf]; NaN stays NaN (as ClampAlpha).
+// From this gamma on the double reference is the Beckmann limit: the
+// relative difference of D is about r2^2 / (2 gamma), below 3e-15 for every
+// r2 < 745 where exp(-r2) is still a double, and Lambda's is smaller
+// (StdTest.HugeGammaIsBeckmann checks 1e16 .. the largest double). Without
+// the switch, terms such as 2 gamma - 3 overflow at gamma = 2^1023.
+inline constexpr double kStdBeckmannLimitGamma = 1e20;
+
+// gamma clamped to [kMinStdGamma, +inf], +inf from kStdBeckmannLimitGamma
+// on; NaN stays NaN (as ClampAlpha).
 template <typename T>
 T ClampStdGamma(T gamma) {
+  if (gamma >= T(kStdBeckmannLimitGamma)) return std::numeric_limits<T>::infinity();
   return std::max(gamma, kMinStdGamma<T>);
 }
 
