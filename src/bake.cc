@@ -225,6 +225,9 @@ std::string ModelJson(const BakeSpec& spec) {
   j["alpha"] = "roughness^2";
   if (spec.model.name == "std") {
     if (std::isinf(spec.model.gamma)) j["gamma"] = "inf"; else j["gamma"] = spec.model.gamma;
+    if (std::isfinite(spec.model.gamma) && spec.model.gamma >= kStdBeckmannLimitGamma) {
+      j["evaluated_as"] = "beckmann (the limit gamma -> inf; gamma >= 1e20 agrees with it to double precision)";
+    }
   }
   return j.dump();
 }

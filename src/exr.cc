@@ -1,10 +1,11 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Self-describing OpenEXR tables (SPEC.md section 4): every convention the
+// Self-describing OpenEXR tables (docs/format.md): every convention the
 // table was baked with is a string attribute (JSON where structured).
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -97,8 +98,13 @@ void WriteExr(const Table& table, const std::string& path) {
   put("brdfbake.channel_info", info.dump());
   put("brdfbake.range", kStoredRange);
   put("brdfbake.integrator", table.integrator_json);
+  // Four significant digits, rounded up: the claim is never printed below
+  // the bound it states.
   char err[64];
   std::snprintf(err, sizeof(err), "%.3e", table.max_abs_error);
+  if (std::strtod(err, nullptr) < table.max_abs_error) {
+    std::snprintf(err, sizeof(err), "%.3e", table.max_abs_error * (1 + 1e-3));
+  }
   put("brdfbake.max_abs_error", err);
 
   const Imf::PixelType type = spec.half ? Imf::HALF : Imf::FLOAT;

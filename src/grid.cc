@@ -58,15 +58,16 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
     case GridKind::kSlice:
       axes.push_back(axis("theta_h_deg", req.width, 0, 90));
       axes.push_back(axis("theta_d_deg", req.height, 0, 90));
-      value = "f(wi, wo) at the Rusinkiewicz half/difference angles, phi_h = 0, phi_d = 90 deg";
+      value = "f(wi, wo) at the Rusinkiewicz half/difference angles, phi_h = 0, phi_d = 90 deg; "
+              "a coloured Fresnel contributes its first (red) channel";
       break;
     case GridKind::kHemisphere:
       axes.push_back(axis("u", req.width, -1, 1));
       axes.push_back(axis("v", req.height, 1, -1));
       value = "f(wi, wo) cos(theta_i) for wi = (u, v, sqrt(1 - u^2 - v^2)), 0 outside the unit "
-              "disk; wo at mu_o, phi_o";
+              "disk; wo at mu_o, phi_o_deg; a coloured Fresnel contributes its first (red) channel";
       model["mu_o"] = req.mu_o;
-      model["phi_o"] = req.phi_o;
+      model["phi_o_deg"] = req.phi_o * 180.0 / 3.14159265358979323846;
       break;
     case GridKind::kG1:
       axes.push_back(axis("mu", req.width, 0, 1));
@@ -86,6 +87,7 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
           {"brdfbake.axes", axes.dump()},
           {"brdfbake.layout", kLayoutText},
           {"brdfbake.channels", nlohmann::json{{channel, channel}}.dump()},
+          {"brdfbake.channel_order", nlohmann::json::array({channel}).dump()},
           {"brdfbake.channel_info",
            nlohmann::json::array({{{"index", 0}, {"name", channel}, {"meaning", channel},
                                    {"definition", value}}})

@@ -522,7 +522,7 @@ inline TexelValue FromTwo(const QuadratureResult& fine, const QuadratureResult& 
   return v;
 }
 
-// The grazing limit mu -> 0 is evaluated at mu = kMuMin (SPEC: mu = 0 is the
+// The grazing limit mu -> 0 is evaluated at mu = kMuMin (docs/format.md: mu = 0 is the
 // grazing limit; E is continuous there).
 inline constexpr double kMuMin = 1e-7;
 

@@ -58,7 +58,7 @@ double AlbedoQuadrature(const Model& model, const Vec3<double>& wo, Masking mask
 }
 
 TEST(BrdfTest, GgxAlphaOneNormalIncidenceIsOneMinusLn2) {
-  // SPEC.md section 1: GGX, height-correlated, alpha = 1, mu = 1, F = 1.
+  // docs/format.md: GGX, height-correlated, alpha = 1, mu = 1, F = 1.
   const GgxNdf<double> ndf(1.0);
   const Vec3<double> wo(0, 0, 1);
   const double e = test::IntegrateDirections(

@@ -45,7 +45,7 @@ const Shape kShapes[] = {
 const Dir kN(0, 0, 1);
 
 // Tolerance of every identity checked by quadrature (the measured errors
-// are ~1e-13; SPEC-level accuracy needs 1e-6).
+// are ~1e-13; the tables' accuracy needs 1e-6).
 constexpr double kTol = 1e-9;
 
 // D extended to the whole ellipsoid: eq. 1 without the X+(m.n) factor
@@ -449,7 +449,7 @@ TEST(EllipsoidTest, InvariantUnderScaleAndLeftOrthogonal) {
 }
 
 // ---------------------------------------------------------------------------
-// No NaN or Inf over the documented domain (SPEC.md section 6), and the float
+// No NaN or Inf over the documented domain (README "Domain"), and the float
 // instantiation stays close to the double one.
 TEST(EllipsoidTest, FiniteEverywhere) {
   const Shape extreme[] = {{"tiny", 1e-4, 1e-4, 0, 0, 0},

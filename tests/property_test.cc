@@ -1,7 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Seeded random sweep over the documented domain (README "Domain"): every
+// Seeded random sweep over the documented domain (README "Domain", alpha up
+// to kMaxAlpha and gamma up to the largest double): every
 // model quantity stays finite and non-negative (Lambda is +inf only on and
 // below the horizon), samplers return unit vectors, in double and in float,
 // and small bakes with random settings give finite tables within [0, 1].
@@ -45,11 +46,17 @@ struct Sweep {
     ModelParams p;
     static const char* kNames[] = {"ggx", "beckmann", "std", "ellipsoid"};
     p.name = kNames[static_cast<int>(U() * 4)];
-    p.alpha_x = LogU(1e-4, 1.0);
-    p.alpha_y = std::clamp(p.alpha_x * LogU(1e-3, 1e3), 1e-4, 1.0);
+    // Mostly the tested range [1e-4, 1], also up to the bound kMaxAlpha and
+    // at it (README "Domain").
+    const double ka = U();
+    p.alpha_x = ka < 0.7 ? LogU(1e-4, 1.0) : (ka < 0.85 ? LogU(1.0, kMaxAlpha) : kMaxAlpha);
+    p.alpha_y = std::clamp(p.alpha_x * LogU(1e-3, 1e3), 1e-4, kMaxAlpha);
     const double g = U();
     p.gamma = g < 0.1 ? std::numeric_limits<double>::infinity()
-                      : (g < 0.2 ? 1.5 + LogU(1e-3, 1e-1) : 1.5 + LogU(1e-3, 1e6));
+                      : (g < 0.2 ? 1.5 + LogU(1e-3, 1e-1)
+                                 : (g < 0.25 ? (g < 0.23 ? LogU(1e15, 1.7e308)
+                                                         : std::numeric_limits<double>::max())
+                                             : 1.5 + LogU(1e-3, 1e6)));
     const double max_angle = 80.0 * 3.141592653589793 / 180.0;
     p.theta_x = (2 * U() - 1) * max_angle;
     p.theta_y = (2 * U() - 1) * max_angle;

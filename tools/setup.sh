@@ -35,11 +35,12 @@ if [ "$mode" = test ]; then
 fi
 
 # Main job: bake the default engine set (GGX, height-correlated, 32x32 over
-# mu x roughness with edges placement, alpha = roughness^2) into out/. Each
-# file is written to a temporary and renamed, never left partial.
+# mu x roughness, alpha = roughness^2) into out/, on texel centres so that a
+# GPU's bilinear texture(lut, vec2(NoV, roughness)) reads it without a
+# remap. Each file is written to a temporary and renamed, never left partial.
 mkdir -p out
 tool=build/bin/brdfbake
-"$tool" bake --table E --model ggx --size 32x32 -o out/ggx_E.exr
-"$tool" bake --table E_avg --model ggx --size 32 -o out/ggx_E_avg.exr
-"$tool" bake --table dfg --model ggx --size 32x32 -o out/ggx_dfg.exr
+"$tool" bake --table E --model ggx --size 32x32 --placement centers -o out/ggx_E.exr
+"$tool" bake --table E_avg --model ggx --size 32 --placement centers -o out/ggx_E_avg.exr
+"$tool" bake --table dfg --model ggx --size 32x32 --placement centers -o out/ggx_dfg.exr
 "$tool" --version

@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The table baker (SPEC.md sections 3-4): directional albedo E(mu, r), its
+// The table baker (docs/format.md): directional albedo E(mu, r), its
 // cosine-weighted average E_avg(r) and the split-sum DFG terms, baked with a
 // choice of integrators, each estimating its own error per texel.
 
@@ -53,7 +53,7 @@ struct Axis {
   Warp warp = Warp::kLinear;
   Placement placement = Placement::kEdges;
 
-  // SPEC.md section 4: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
+  // docs/format.md: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
   // value = min + (max - min) w(t).
   double Value(int i) const { return ValueAt(i); }
   // The same map at a fractional index (e.g. i + 0.5, a cell midpoint).

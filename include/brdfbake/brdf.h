@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The microfacet BRDF over any distribution (SPEC.md section 1):
+// The microfacet BRDF over any distribution (docs/format.md):
 //   f(wi, wo) = F(wo.h) D(h) G2(wi, wo, h) / (4 |wi.n| |wo.n|),
 //   h = normalize(wi + wo).
 // A distribution provides D(m), Lambda(w) and G1(w).

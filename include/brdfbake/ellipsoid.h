@@ -102,8 +102,8 @@ class EllipsoidNdf {
   }
 
   // Smith-like Lambda, defined here as 1 / G1(u) - 1 so that the generic
-  // height-correlated G2 = 1 / (1 + Lambda(wi) + Lambda(wo)) of SPEC.md
-  // section 1 can be used with this model. This is brdfbake's extension:
+  // height-correlated G2 = 1 / (1 + Lambda(wi) + Lambda(wo)) (docs/format.md,
+  // conventions) can be used with this model. This is brdfbake's extension:
   // seed 000 only defines the separable G = G1 G1 (eq. 5). +inf for
   // u.z <= 0, 0 where the min in eq. 6 is active.
   //

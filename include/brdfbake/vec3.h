@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // A small 3-vector value type and the shading-frame helpers every model uses.
-// Convention (SPEC.md section 1): local frame with n = +z, directions point
+// Convention (docs/format.md): local frame with n = +z, directions point
 // away from the surface, mu = cos(theta) = w.z.
 
 #ifndef BRDFBAKE_VEC3_H_
