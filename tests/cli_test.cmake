@@ -129,3 +129,51 @@ if(NOT out MATCHES "^region,model,quantity,kernel,samples,non_finite,max_rel_err
 endif()
 expect_one_line_error(stability --samples 0)
 message(STATUS "cli stability: all checks passed")
+
+# Reliability at the inputs that once broke it (see also tests/reliability_test.cc).
+# Beyond the documented alpha bound (1e4): a one-line error, never NaN.
+expect_one_line_error(eval --model ggx --alpha 1.4e154 --quantity D,Lambda,G1,G2,brdf,pdf --mu-o 0.5
+                      --from 0.5 --to 0.5 --count 1)
+expect_one_line_error(eval --model std --gamma 3 --alpha 1.4e154 --quantity pdf)
+expect_one_line_error(eval --model sel --alpha-x 1 --alpha-y 1e154 --quantity K)
+expect_one_line_error(eval --grid hemisphere --model ggx --alpha 2e19 -o "${out_dir}/bad.exr")
+expect_one_line_error(eval --grid slice --model ellipsoid --alpha 1e39 -o "${out_dir}/bad.exr")
+# At the bound: finite.
+run_tool(TRUE out err eval --model ggx --alpha 1e4 --quantity D,Lambda,G1,G2,brdf,pdf --mu-o 0.5
+         --from 0.01 --to 1 --count 11)
+if(out MATCHES "nan|inf")
+  message(FATAL_ERROR "eval at alpha 1e4: non-finite output: ${out}")
+endif()
+# gamma = 1.7e308 (beyond 2^1023): the Beckmann limit, E <= 1, an honest claim.
+run_tool(TRUE out err bake --table E --model std --gamma 1.7e308 --size 6x6 -o "${out_dir}/E_huge_gamma.exr")
+if(NOT out MATCHES "max abs error [0-9.]+e-0[6-9]")
+  message(FATAL_ERROR "bake std gamma 1.7e308: '${out}'")
+endif()
+run_tool(TRUE out err eval --model std --gamma 8.98846567431158e307 --quantity Lambda,G2 --mu-o 0.5
+         --from 0.5 --to 0.5 --count 1 --alpha 0.25)
+run_tool(TRUE ref err eval --model beckmann --quantity Lambda,G2 --mu-o 0.5 --from 0.5 --to 0.5
+         --count 1 --alpha 0.25)
+if(NOT out STREQUAL ref)
+  message(FATAL_ERROR "std at gamma 2^1023 is not Beckmann: '${out}' vs '${ref}'")
+endif()
+# --range: the axes recorded, the values at the clamped mu.
+run_tool(TRUE out err bake --table E --size 4x4 --range mu=1e-4:1,roughness=0.1:0.9 --placement centers
+         -o "${out_dir}/E_range.exr")
+# report: a taken name is found before the work, and nothing is written.
+file(MAKE_DIRECTORY "${out_dir}/report_taken/report.csv")
+expect_one_line_error(report --table E --size 4x4 -o "${out_dir}/report_taken")
+file(GLOB report_files "${out_dir}/report_taken/*")
+list(LENGTH report_files n_report)
+if(NOT n_report EQUAL 1)
+  message(FATAL_ERROR "report wrote files before failing: ${report_files}")
+endif()
+# Sizes and warps of the wrong shape for the table.
+expect_one_line_error(bake --table E_avg --size 16x64 -o "${out_dir}/bad.exr")
+expect_one_line_error(bake --table E --size 8x8x8 -o "${out_dir}/bad.exr")
+expect_one_line_error(bake --table E --warp mu=square,mu=sqrt -o "${out_dir}/bad.exr")
+expect_one_line_error(bake --table dfg -o "${out_dir}/dfg.h")
+file(GLOB leftovers "${out_dir}/bad*" "${out_dir}/dfg.h" "${out_dir}/.brdfbake-*")
+if(leftovers)
+  message(FATAL_ERROR "files left behind: ${leftovers}")
+endif()
+message(STATUS "cli reliability: all checks passed")

@@ -460,6 +460,30 @@ TEST(HeaderTest, ChannelsSortIntoTheirOrderAndDescribeThemselves) {
   }
 }
 
+// --range: the axes cover the given sub-ranges, and each texel is the
+// integral at its mapped (mu, roughness).
+TEST(HeaderTest, RangesAreRecordedAndBaked) {
+  BakeSpec spec;
+  spec.mu.size = spec.roughness.size = 5;
+  spec.mu.min = 1e-4;
+  spec.roughness.min = 0.1;
+  spec.roughness.max = 0.9;
+  spec.mu.placement = spec.roughness.placement = Placement::kCenters;
+  const Table t = Bake(spec);
+  const std::string path = ::testing::TempDir() + "/brdfbake_header_range.exr";
+  WriteExr(t, path);
+  const auto axes = nlohmann::json::parse(ReadExr(path).Attribute("brdfbake.axes"));
+  EXPECT_EQ(axes[0]["min"], 1e-4);
+  EXPECT_EQ(axes[1]["min"], 0.1);
+  EXPECT_EQ(axes[1]["max"], 0.9);
+  for (int y = 0; y < 5; ++y) {
+    for (int x = 0; x < 5; ++x) {
+      const double mu = 1e-4 + (1 - 1e-4) * (x + 0.5) / 5, r = 0.1 + 0.8 * (y + 0.5) / 5;
+      EXPECT_NEAR(t.channels[0].values[y * 5 + x], IntegrateTexel(BakeSpec(), r, mu).e, 1e-12);
+    }
+  }
+}
+
 TEST(HeaderTest, GridsRecordTheirAxes) {
   GridRequest req;
   req.kind = GridKind::kG1;
