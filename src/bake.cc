@@ -105,6 +105,7 @@ std::string Axis::ToJson() const {
   j["max"] = max;
   j["warp"] = WarpName(warp);
   j["placement"] = PlacementName(placement);
+  if (clamp_min > 0) j["clamp_min"] = clamp_min;
   return j.dump();
 }
 
@@ -134,6 +135,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     }
     // One entry may sit at one value (min = max), as the report's probes do.
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
+    if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
     if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 || a->max > 1) {
       std::ostringstream os;
       os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= 1 (got " << a->min
@@ -440,7 +442,8 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   std::vector<double>& v0 = t.channels[0].values;
   if (eavg) {
     tbb::parallel_for(0, t.width, [&](int i) {
-      const EavgEstimate e = IntegrateEavg(spec, ax_r.Value(i), uint64_t(i));
+      const EavgEstimate e =
+          IntegrateEavg(spec, std::max(ax_r.Value(i), ax_r.clamp_min), uint64_t(i));
       const double value = std::clamp(e.value, 0.0, 1.0);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;
@@ -449,9 +452,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   } else {
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
-      const double r = ax_r.Value(y);
-      const TexelValue v =
-          Texel(spec, r * r, ax_mu.Value(x), Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+      const double r = std::max(ax_r.Value(y), ax_r.clamp_min);
+      const TexelValue v = Texel(spec, r * r, std::max(ax_mu.Value(x), ax_mu.clamp_min),
+                                 Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       if (spec.table == TableKind::kE) {
         const double e = std::clamp(v.e, 0.0, 1.0);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;

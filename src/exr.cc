@@ -25,6 +25,7 @@
 #include "brdfbake/grid.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
+#include "exr_write.h"
 
 namespace brdfbake {
 
@@ -125,6 +126,29 @@ void WriteExr(const Table& table, const std::string& path) {
     }
   }
   WriteAtomically(path, header, fb, table.height);
+}
+
+void WriteExrPlanes(const std::string& path, int width, int height,
+                    const std::vector<std::string>& names,
+                    const std::vector<std::vector<float>>& planes,
+                    const std::vector<std::vector<uint16_t>>& half_planes,
+                    const std::vector<std::pair<std::string, std::string>>& attributes) {
+  Imf::Header header(width, height);
+  header.compression() = Imf::ZIP_COMPRESSION;
+  for (const auto& kv : attributes) header.insert(kv.first, Imf::StringAttribute(kv.second));
+  Imf::FrameBuffer fb;
+  const bool half = !half_planes.empty();
+  for (size_t c = 0; c < names.size(); ++c) {
+    header.channels().insert(names[c], Imf::Channel(half ? Imf::HALF : Imf::FLOAT));
+    if (half) {
+      fb.insert(names[c], Imf::Slice(Imf::HALF, const_cast<char*>(reinterpret_cast<const char*>(half_planes[c].data())),
+                                     sizeof(uint16_t), sizeof(uint16_t) * width));
+    } else {
+      fb.insert(names[c], Imf::Slice(Imf::FLOAT, const_cast<char*>(reinterpret_cast<const char*>(planes[c].data())),
+                                     sizeof(float), sizeof(float) * width));
+    }
+  }
+  WriteAtomically(path, header, fb, height);
 }
 
 void WriteImageExr(const std::string& path, int width, int height,

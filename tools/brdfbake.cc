@@ -26,6 +26,7 @@
 #include <CLI/CLI.hpp>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/engine.h"
 #include "brdfbake/batch.h"
 #include "brdfbake/eval.h"
 #include "brdfbake/grid.h"
@@ -106,6 +107,12 @@ std::vector<std::string> SplitComma(const std::string& text) {
   std::string item;
   while (std::getline(ss, item, ',')) out.push_back(item);
   return out;
+}
+
+void AtomicWriteText(const std::string& path, const std::string& text) {
+  brdfbake::AtomicFile f(path);
+  f.Append(text);
+  f.Commit();
 }
 
 bool Given(const CLI::App* app, const char* option) {
@@ -251,7 +258,7 @@ std::vector<int> ParseSize(const std::string& text, size_t axes, const char* for
 struct BakeOptions {
   std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
-  std::string pixel = "float", output, seed = "1";
+  std::string pixel = "float", output, seed = "1", preset, format, shader;
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
   bool complement = false, error_channel = false;
@@ -261,7 +268,7 @@ struct BakeOptions {
   void Add(CLI::App* a, bool report) {
     app = a;
     for_report = report;
-    app->add_option("--table,-t", table, "E | E_avg | dfg")->required();
+    app->add_option("--table,-t", table, "E | E_avg | dfg");
     app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
     app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]")->capture_default_str();
     app->add_option("--size", size,
@@ -285,15 +292,21 @@ struct BakeOptions {
     app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
         ->capture_default_str();
-    app->add_option("--pixel", pixel, "float | half")->capture_default_str();
+    app->add_option("--pixel", pixel, "float | half | unorm16 (dds only)")->capture_default_str();
     app->add_flag("--complement", complement,
                   "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
     app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
-    app->add_option("-o,--output", output, "output .exr file")->required();
+    app->add_option("-o,--output", output,
+                    "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
+                    "directory, default .)");
+    app->add_option("--preset", preset, "an engine's tables as its shader samples them: " + PresetNames());
+    app->add_option("--format", format, "exr | header | js | ktx2 | dds (default: from the extension)");
+    app->add_option("--shader", shader, "also write a glsl | hlsl | wgsl lookup function beside each table");
   }
 
   brdfbake::BakeSpec Get() const {
     brdfbake::BakeSpec spec;
+    if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);
     spec.model.name = model;
     if (Given(app, "--gamma") && model != "std") {
@@ -311,7 +324,9 @@ struct BakeOptions {
     spec.complement = complement;
     spec.error_channel = error_channel;
     spec.threads = threads;
-    if (pixel != "float" && pixel != "half") Bad("--pixel: expected float or half, got '" + pixel + "'");
+    if (pixel != "float" && pixel != "half" && (pixel != "unorm16" || for_report)) {
+      Bad("--pixel: expected float, half" + std::string(for_report ? "" : " or unorm16") + ", got '" + pixel + "'");
+    }
     spec.half = pixel == "half";
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
     if (eavg) {
@@ -379,6 +394,12 @@ struct BakeOptions {
     brdfbake::ValidateBakeSpec(spec);
     return spec;
   }
+
+  static std::string PresetNames() {
+    std::string names;
+    for (const brdfbake::Preset& p : brdfbake::Presets()) names += (names.empty() ? "" : ", ") + p.name;
+    return names;
+  }
 };
 
 // A progress bar on stderr when it is a terminal and the work has taken
@@ -414,18 +435,122 @@ class Progress {
   std::mutex mu_;
 };
 
+// The file beside `path` that holds its shader function: dfg.ktx2 -> dfg.glsl.
+std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
+  return std::filesystem::path(path).replace_extension(brdfbake::ShaderLanguageName(lang)).string();
+}
+
+void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what) {
+  std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
+              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), table.width,
+              table.height, brdfbake::IntegratorName(table.spec.integrator), table.seconds,
+              table.max_abs_error);
+}
+
+int RunPreset(const BakeOptions& opts) {
+  const brdfbake::Preset& preset = brdfbake::FindPreset(opts.preset);
+  // A preset fixes the tables; only how they are computed and where they go
+  // may be chosen.
+  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement",
+                        "--masking", "--pixel", "--complement", "--error-channel", "--format",
+                        "--integrator", "--samples", "--seed"}) {
+    if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
+  }
+  const std::string dir = opts.output.empty() ? "." : opts.output;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    Bad("-o: with --preset, -o names a directory; cannot create '" + dir + "'");
+  }
+  const bool shader = !opts.shader.empty();
+  const brdfbake::ShaderLanguage lang =
+      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  std::vector<std::string> files;
+  for (const brdfbake::PresetTable& t : preset.tables) {
+    if (!t.file.empty()) files.push_back(dir + "/" + t.file);
+    if (shader) files.push_back(dir + "/" + t.symbol + "." + brdfbake::ShaderLanguageName(lang));
+  }
+  if (!preset.header_file.empty()) files.push_back(dir + "/" + preset.header_file);
+  for (const std::string& f : files) brdfbake::CheckOutputPath(f);
+
+  std::vector<brdfbake::Table> tables;
+  std::vector<brdfbake::Image> images;
+  tables.reserve(preset.tables.size());
+  images.reserve(preset.tables.size());
+  for (const brdfbake::PresetTable& pt : preset.tables) {
+    brdfbake::BakeSpec spec = pt.spec;
+    spec.threads = opts.threads;
+    if (Given(opts.app, "--tolerance")) spec.tolerance = opts.tolerance;
+    brdfbake::ValidateBakeSpec(spec);
+    Progress progress;
+    tables.push_back(brdfbake::Bake(spec, [&](int64_t d, int64_t n) { progress(d, n); }));
+    progress.Finish();
+    images.push_back(brdfbake::ArrangeTable(tables.back(), pt.layout));
+  }
+  std::vector<std::pair<const brdfbake::Table*, const brdfbake::Image*>> header_arrays;
+  std::vector<std::string> header_symbols;
+  for (size_t i = 0; i < preset.tables.size(); ++i) {
+    const brdfbake::PresetTable& pt = preset.tables[i];
+    const std::string what = std::string(brdfbake::TableName(pt.spec.table)) + " (" + preset.name + ")";
+    if (!pt.file.empty()) {
+      const std::string path = dir + "/" + pt.file;
+      brdfbake::WriteImage(tables[i], images[i], pt.container, path, pt.symbol, preset.name);
+      PrintWrote(path, tables[i], what);
+    }
+    if (!preset.header_file.empty()) {
+      header_arrays.push_back({&tables[i], &images[i]});
+      header_symbols.push_back(pt.symbol);
+    }
+    if (shader) {
+      const std::string path = dir + "/" + pt.symbol + "." + brdfbake::ShaderLanguageName(lang);
+      AtomicWriteText(path, brdfbake::ShaderFunction(tables[i], images[i], lang, "brdfbake_" + pt.symbol));
+      std::printf("wrote %s: %s lookup of %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang),
+                  pt.symbol.c_str());
+    }
+  }
+  if (!preset.header_file.empty()) {
+    const std::string path = dir + "/" + preset.header_file;
+    brdfbake::WriteHeader(header_arrays, header_symbols, path, preset.name);
+    std::printf("wrote %s: %zu tables (%s)\n", OneLine(path).c_str(), header_arrays.size(), preset.name.c_str());
+  }
+  return 0;
+}
+
 int RunBake(const BakeOptions& opts) {
+  if (!opts.preset.empty()) return RunPreset(opts);
   const brdfbake::BakeSpec spec = opts.Get();
-  brdfbake::CheckOutputExtension(opts.output, ".exr", "bake");
+  const brdfbake::Container container =
+      opts.format.empty() ? brdfbake::ContainerFromPath(opts.output) : brdfbake::ParseContainer(opts.format);
+  if (!opts.format.empty() && brdfbake::ContainerFromPath(opts.output) != container) {
+    Bad("-o: '" + opts.output + "' does not name a " + opts.format + " file");
+  }
+  if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds) {
+    Bad("--pixel unorm16: only the dds format holds unorm16 pixels");
+  }
+  const bool shader = !opts.shader.empty();
+  const brdfbake::ShaderLanguage lang =
+      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
   brdfbake::CheckOutputPath(opts.output);
+  if (shader) brdfbake::CheckOutputPath(ShaderPath(opts.output, lang));
   Progress progress;
   const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
   progress.Finish();
-  brdfbake::WriteExr(table, opts.output);
-  std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
-              OneLine(opts.output).c_str(), brdfbake::TableName(spec.table),
-              spec.model.name.c_str(), table.width, table.height,
-              brdfbake::IntegratorName(spec.integrator), table.seconds, table.max_abs_error);
+  brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
+  if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
+  const brdfbake::Image image = brdfbake::ArrangeTable(table, layout);
+  if (container == brdfbake::Container::kExr) {
+    brdfbake::WriteExr(table, opts.output);
+  } else {
+    const std::string symbol = std::string("brdfbake_") + brdfbake::TableName(spec.table);
+    brdfbake::WriteImage(table, image, container, opts.output, symbol, "");
+  }
+  PrintWrote(opts.output, table, brdfbake::TableName(spec.table));
+  if (shader) {
+    const std::string path = ShaderPath(opts.output, lang);
+    AtomicWriteText(path, brdfbake::ShaderFunction(table, image, lang,
+                                                   std::string("brdfbake_") + brdfbake::TableName(spec.table)));
+    std::printf("wrote %s: %s lookup\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang));
+  }
   if (spec.roughness.placement == brdfbake::Placement::kEdges) {
     std::fprintf(stderr,
                  "note: edges placement puts texel i at t = i / (N - 1); a GPU's bilinear lookup "

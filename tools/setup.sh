@@ -14,6 +14,11 @@ cd "$(dirname "$0")/.."
 
 packages="build-essential cmake libhwy-dev libopenexr-dev libtbb-dev libboost-dev \
 libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev"
+# The tests also read files back with OpenImageIO, compile the generated
+# shaders with glslang and run the GLSL lookups in headless Chromium.
+if [ "$mode" = test ]; then
+  packages="$packages openimageio-tools glslang-tools chromium"
+fi
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

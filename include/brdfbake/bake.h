@@ -52,6 +52,9 @@ struct Axis {
   double min = 0, max = 1;
   Warp warp = Warp::kLinear;
   Placement placement = Placement::kEdges;
+  // The integrand is evaluated at max(value, clamp_min) (Cycles' tables
+  // clamp mu and roughness at 1e-4); 0 = no clamp.
+  double clamp_min = 0;
 
   // docs/format.md: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
   // value = min + (max - min) w(t).
