@@ -177,3 +177,35 @@ if(leftovers)
   message(FATAL_ERROR "files left behind: ${leftovers}")
 endif()
 message(STATUS "cli reliability: all checks passed")
+
+# Engine presets from the command line: each bakes into its directory with
+# the files the engine loads (the layouts are checked in tests/engine_test.cc).
+foreach(preset filament unreal hdrp godot bevy three cycles materialx enterprise-pbr)
+  run_tool(TRUE out err bake --preset ${preset} -o "${out_dir}/preset_${preset}" --shader glsl)
+  if(NOT out MATCHES "wrote ")
+    message(FATAL_ERROR "bake --preset ${preset}: '${out}'")
+  endif()
+endforeach()
+foreach(f preset_filament/dfg.h preset_unreal/PreIntegratedGF.dds preset_hdrp/preintegrated_fgd.exr
+          preset_godot/dfg_lut.exr preset_bevy/dfg.ktx2 preset_three/DFGLUTData.js preset_cycles/ggx_tables.h
+          preset_materialx/albedo_table.exr preset_enterprise-pbr/pbrlut.hpp preset_enterprise-pbr/GGX_E.exr
+          preset_enterprise-pbr/GGX_E_avg.exr preset_three/DFGLUTData.glsl)
+  if(NOT EXISTS "${out_dir}/${f}")
+    message(FATAL_ERROR "preset output missing: ${f}")
+  endif()
+endforeach()
+# A preset fixes its tables; other presets and formats are named in the error.
+expect_one_line_error(bake --preset filament --size 64x64)
+expect_one_line_error(bake --preset unity)
+expect_one_line_error(bake --preset three --shader metal -o "${out_dir}/bad_preset")
+# Containers chosen by the extension or by --format, with a shader beside.
+run_tool(TRUE out err bake --table dfg --size 8x8 --pixel half -o "${out_dir}/dfg8.ktx2" --shader hlsl)
+run_tool(TRUE out err bake --table E --size 8x8 --format header -o "${out_dir}/E8.h")
+run_tool(TRUE out err bake --table dfg --size 8x8 --pixel unorm16 -o "${out_dir}/dfg8.dds")
+run_tool(TRUE out err bake --table E_avg --size 8 -o "${out_dir}/Eavg8.js" --shader wgsl)
+foreach(f dfg8.ktx2 dfg8.hlsl E8.h dfg8.dds Eavg8.js Eavg8.wgsl)
+  if(NOT EXISTS "${out_dir}/${f}")
+    message(FATAL_ERROR "container output missing: ${f}")
+  endif()
+endforeach()
+message(STATUS "cli presets and containers: all checks passed")
