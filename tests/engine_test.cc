@@ -27,25 +27,16 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/engine.h"
+#include "file_util.h"
 
 namespace brdfbake {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::Have;
+using test::Slurp;
+using test::WriteText;
 
-void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string Scratch(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/brdfbake_engine_" + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::string Scratch(const std::string& name) { return test::Scratch("engine_" + name); }
 
 struct Baked {
   Table table;

@@ -24,29 +24,16 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/engine.h"
+#include "file_util.h"
 
 namespace brdfbake {
 namespace {
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::Have;
+using test::Slurp;
+using test::WriteText;
 
-void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string Scratch(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "/brdfbake_shader_" + name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-bool Have(const char* tool) {
-  return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0;
-}
+std::string Scratch(const std::string& name) { return test::Scratch("shader_" + name); }
 
 // Runs a page in headless Chromium and returns the text of <pre id="out">.
 std::string RunPage(const std::string& dir, const std::string& html, const std::string& extra_flags) {
@@ -303,41 +290,59 @@ INSTANTIATE_TEST_SUITE_P(Presets, BrowserLookupTest,
                            return n;
                          });
 
-// Every preset's GLSL and HLSL compile with glslang.
-TEST(ShaderCompileTest, GlslAndHlslCompileWithGlslang) {
-  if (!Have("glslangValidator")) GTEST_SKIP() << "glslang-tools is not installed";
-  const std::string dir = Scratch("glslang");
-  int compiled = 0;
+// Every preset table at a small size (the mapping, not the values, matters
+// for compiling), with a fragment program in `lang` that calls its lookup.
+std::vector<std::string> PresetPrograms(ShaderLanguage lang) {
+  std::vector<std::string> programs;
   for (const Preset& p : Presets()) {
-    for (size_t i = 0; i < p.tables.size(); ++i) {
-      PresetTable pt = p.tables[i];
-      pt.spec.mu.size = std::min(pt.spec.mu.size, 8);  // the mapping, not the values, matters here
+    for (PresetTable pt : p.tables) {
+      pt.spec.mu.size = std::min(pt.spec.mu.size, 8);
       pt.spec.roughness.size = std::min(pt.spec.roughness.size, 8);
       const Table t = Bake(pt.spec);
       const Image im = ArrangeTable(t, pt.layout);
       const bool one_d = t.spec.table == TableKind::kEavg;
       const bool dfg = t.spec.table == TableKind::kDfg;
-      const std::string stem = dir + "/" + p.name + std::to_string(i);
-      const std::string glsl = "#version 300 es\nprecision highp float;\nuniform sampler2D lut;\nout vec4 color;\n" +
-                               ShaderFunction(t, im, ShaderLanguage::kGlsl, "lookup") +
-                               "void main() { color = vec4(" +
-                               (one_d ? "lookup(lut, 0.5), 0.0, 0.0" : dfg ? "lookup(lut, 0.5, 0.5), 0.0" : "lookup(lut, 0.5, 0.5), 0.0, 0.0") +
-                               ", 1.0); }\n";
-      WriteText(stem + ".frag", glsl);
-      EXPECT_EQ(std::system(("glslangValidator " + stem + ".frag > " + stem + ".glsl.log 2>&1").c_str()), 0)
-          << Slurp(stem + ".glsl.log") << glsl;
-      const std::string hlsl = "Texture2D<float4> lut : register(t0);\nSamplerState lut_sampler : register(s0);\n" +
-                               ShaderFunction(t, im, ShaderLanguage::kHlsl, "lookup") +
-                               "float4 main() : SV_Target { return float4(" +
-                               (one_d ? "lookup(lut, lut_sampler, 0.5), 0.0, 0.0" : dfg ? "lookup(lut, lut_sampler, 0.5, 0.5), 0.0" : "lookup(lut, lut_sampler, 0.5, 0.5), 0.0, 0.0") +
-                               ", 1.0); }\n";
-      WriteText(stem + ".hlsl", hlsl);
-      EXPECT_EQ(std::system(("glslangValidator -D -V -S frag -e main -o " + stem + ".spv " + stem + ".hlsl > " + stem + ".hlsl.log 2>&1").c_str()), 0)
-          << Slurp(stem + ".hlsl.log") << hlsl;
-      ++compiled;
+      const std::string texture = lang == ShaderLanguage::kGlsl ? "lut" : "lut, lut_sampler";
+      const std::string call = "lookup(" + texture + (one_d ? ", 0.5)" : ", 0.5, 0.5)") +
+                               (dfg ? ", 0.0" : ", 0.0, 0.0") + ", 1.0";
+      const std::string fn = ShaderFunction(t, im, lang, "lookup");
+      switch (lang) {
+        case ShaderLanguage::kGlsl:
+          programs.push_back("#version 300 es\nprecision highp float;\nuniform sampler2D lut;\nout vec4 color;\n" +
+                             fn + "void main() { color = vec4(" + call + "); }\n");
+          break;
+        case ShaderLanguage::kHlsl:
+          programs.push_back("Texture2D<float4> lut : register(t0);\nSamplerState lut_sampler : register(s0);\n" +
+                             fn + "float4 main() : SV_Target { return float4(" + call + "); }\n");
+          break;
+        case ShaderLanguage::kWgsl:
+          programs.push_back("@group(0) @binding(0) var lut: texture_2d<f32>;\n"
+                             "@group(0) @binding(1) var lut_sampler: sampler;\n" + fn +
+                             "@fragment fn main() -> @location(0) vec4<f32> { return vec4<f32>(" + call + "); }\n");
+          break;
+      }
     }
   }
-  EXPECT_EQ(compiled, 11);
+  return programs;
+}
+
+// Every preset's GLSL and HLSL compile with glslang.
+TEST(ShaderCompileTest, GlslAndHlslCompileWithGlslang) {
+  if (!Have("glslangValidator")) GTEST_SKIP() << "glslang-tools is not installed";
+  const std::string dir = Scratch("glslang");
+  const std::vector<std::string> glsl = PresetPrograms(ShaderLanguage::kGlsl);
+  const std::vector<std::string> hlsl = PresetPrograms(ShaderLanguage::kHlsl);
+  ASSERT_EQ(glsl.size(), 11u);
+  for (size_t i = 0; i < glsl.size(); ++i) {
+    const std::string stem = dir + "/p" + std::to_string(i);
+    WriteText(stem + ".frag", glsl[i]);
+    EXPECT_EQ(std::system(("glslangValidator " + stem + ".frag > " + stem + ".glsl.log 2>&1").c_str()), 0)
+        << Slurp(stem + ".glsl.log") << glsl[i];
+    WriteText(stem + ".hlsl", hlsl[i]);
+    EXPECT_EQ(std::system(("glslangValidator -D -V -S frag -e main -o " + stem + ".spv " + stem + ".hlsl > " +
+                           stem + ".hlsl.log 2>&1").c_str()), 0)
+        << Slurp(stem + ".hlsl.log") << hlsl[i];
+  }
 }
 
 // WGSL: Debian 12 packages no WGSL parser (no tint, no naga); Chromium's
@@ -346,23 +351,8 @@ TEST(ShaderCompileTest, WgslCompilesInChromiumWebGpu) {
   if (!Have("chromium")) GTEST_SKIP() << "chromium is not installed";
   const std::string dir = Scratch("wgsl");
   std::string modules = "[";
-  for (const Preset& p : Presets()) {
-    for (size_t i = 0; i < p.tables.size(); ++i) {
-      PresetTable pt = p.tables[i];
-      pt.spec.mu.size = std::min(pt.spec.mu.size, 8);
-      pt.spec.roughness.size = std::min(pt.spec.roughness.size, 8);
-      const Table t = Bake(pt.spec);
-      const Image im = ArrangeTable(t, pt.layout);
-      const bool one_d = t.spec.table == TableKind::kEavg;
-      const bool dfg = t.spec.table == TableKind::kDfg;
-      const std::string src =
-          "@group(0) @binding(0) var lut: texture_2d<f32>;\n@group(0) @binding(1) var lut_sampler: sampler;\n" +
-          ShaderFunction(t, im, ShaderLanguage::kWgsl, "lookup") +
-          "@fragment fn main() -> @location(0) vec4<f32> { return vec4<f32>(" +
-          (one_d ? "lookup(lut, lut_sampler, 0.5), 0.0, 0.0" : dfg ? "lookup(lut, lut_sampler, 0.5, 0.5), 0.0" : "lookup(lut, lut_sampler, 0.5, 0.5), 0.0, 0.0") +
-          ", 1.0); }\n";
-      modules += (modules.size() > 1 ? "," : "") + nlohmann::json(src).dump();
-    }
+  for (const std::string& src : PresetPrograms(ShaderLanguage::kWgsl)) {
+    modules += (modules.size() > 1 ? "," : "") + nlohmann::json(src).dump();
   }
   modules += "]";
   const std::string html =
