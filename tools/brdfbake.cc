@@ -33,6 +33,7 @@
 #include "brdfbake/model.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/report.h"
+#include "brdfbake/scene.h"
 #include "brdfbake/stability.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/version.h"
@@ -258,7 +259,7 @@ std::vector<int> ParseSize(const std::string& text, size_t axes, const char* for
 struct BakeOptions {
   std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
-  std::string pixel = "float", output, seed = "1", preset, format, shader;
+  std::string pixel = "float", output, seed = "1", preset, format, shader, scene;
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
   bool complement = false, error_channel = false;
@@ -299,6 +300,7 @@ struct BakeOptions {
     app->add_option("-o,--output", output,
                     "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
                     "directory, default .)");
+    app->add_option("scene", scene, "a scene (.toml, .gltf, .glb): bake exactly the tables it needs into -o DIR");
     app->add_option("--preset", preset, "an engine's tables as its shader samples them: " + PresetNames());
     app->add_option("--format", format, "exr | header | js | ktx2 | dds (default: from the extension)");
     app->add_option("--shader", shader, "also write a glsl | hlsl | wgsl lookup function beside each table");
@@ -516,7 +518,27 @@ int RunPreset(const BakeOptions& opts) {
   return 0;
 }
 
+int RunSceneBake(const BakeOptions& opts) {
+  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
+                        "--pixel", "--complement", "--error-channel", "--format", "--integrator", "--samples",
+                        "--seed", "--tolerance", "--preset", "--shader"}) {
+    if (Given(opts.app, o)) Bad(std::string(o) + ": a scene bake takes its settings from the scene file");
+  }
+  if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
+  const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
+  std::error_code ec;
+  std::filesystem::create_directories(opts.output, ec);
+  if (ec || !std::filesystem::is_directory(opts.output)) Bad("-o: cannot create directory '" + opts.output + "'");
+  brdfbake::CheckOutputPath(opts.output + "/manifest.json");
+  const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
+  const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
+  std::printf("%s", brdfbake::PlanText(scene, plan).c_str());
+  for (const std::string& f : files) std::printf("wrote %s\n", OneLine(f).c_str());
+  return 0;
+}
+
 int RunBake(const BakeOptions& opts) {
+  if (!opts.scene.empty()) return RunSceneBake(opts);
   if (!opts.preset.empty()) return RunPreset(opts);
   const brdfbake::BakeSpec spec = opts.Get();
   const brdfbake::Container container =
@@ -763,6 +785,13 @@ int main(int argc, char** argv) {
                      "tolerance of the converged quadrature used as the reference")
       ->capture_default_str();
 
+  CLI::App* plan = app.add_subcommand(
+      "plan", "What `bake SCENE -o DIR` would write: the minimal set of tables for a scene's materials, "
+              "each at the resolution that meets the scene's error target.");
+  plan->allow_extras();
+  std::string plan_scene;
+  plan->add_option("scene", plan_scene, "a scene: .toml (see examples/README.md), .gltf or .glb")->required();
+
   CLI::App* stability = app.add_subcommand(
       "stability", "Float kernels against the double reference, region by region over the "
                    "documented domain: max relative error and non-finite count, as CSV.");
@@ -795,6 +824,10 @@ int main(int argc, char** argv) {
   int status = 0;
   try {
     if (*bake) status = RunBake(bake_opts);
+    if (*plan) {
+      const brdfbake::Scene scene = brdfbake::LoadScene(plan_scene);
+      std::printf("%s", brdfbake::PlanText(scene, brdfbake::PlanScene(scene)).c_str());
+    }
     if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
     if (*stability) status = RunStabilityCommand(stability_samples, stability_seed);
     if (*eval) status = RunEval(eval_opts);
