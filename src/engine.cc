@@ -458,9 +458,15 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
   const double claim = t.integration_error * (derived ? 2 : 1) + rounding;
   nlohmann::json axes = nlohmann::json::array();
   for (const Axis& a : im.axes) axes.push_back(nlohmann::json::parse(a.ToJson()));
-  nlohmann::json channels = nlohmann::json::array();
+  // As in the tables' EXR files: name -> meaning, the order, and per channel
+  // its index, name and meaning ("0" and "1" are constant channels).
+  nlohmann::json channels = nlohmann::json::object();
+  nlohmann::json order = nlohmann::json::array();
+  nlohmann::json info = nlohmann::json::array();
   for (size_t c = 0; c < im.channel_names.size(); ++c) {
-    channels.push_back({{"index", c}, {"name", im.channel_names[c]}, {"value", im.channel_sources[c]}});
+    channels[im.channel_names[c]] = im.channel_sources[c];
+    order.push_back(im.channel_names[c]);
+    info.push_back({{"index", c}, {"name", im.channel_names[c]}, {"meaning", im.channel_sources[c]}});
   }
   const bool one_d = t.spec.table == TableKind::kEavg;
   std::string layout = "x (columns) = " + im.axes[0].name;
@@ -470,7 +476,7 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
   } else {
     layout += ", one row";
   }
-  layout += "; channels interleaved per texel in the order of brdfbake.channels; axis i of size N: "
+  layout += "; channels interleaved per texel in the order of brdfbake.channel_order; axis i of size N: "
             "t = (i + 0.5) / N (centers) or i / (N - 1) (edges), value = min + (max - min) w(t), "
             "w = t, t^2, sqrt(t) for linear, square, sqrt; the integrand at max(value, clamp_min)";
   char err[40];
@@ -484,6 +490,8 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
       {"brdfbake.axes", axes.dump()},
       {"brdfbake.layout", layout},
       {"brdfbake.channels", channels.dump()},
+      {"brdfbake.channel_order", order.dump()},
+      {"brdfbake.channel_info", info.dump()},
       {"brdfbake.pixel", PixelTypeName(im.pixel)},
       {"brdfbake.range", kStoredRange},
       {"brdfbake.integrator", t.integrator_json},
