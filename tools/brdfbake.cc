@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -718,11 +719,25 @@ int RunEval(const EvalOptions& o) {
   return 0;
 }
 
-// CLI11 lists unexpected arguments in reverse; this names them in order.
-std::string ExtrasMessage(const CLI::App& app) {
+// CLI11 lists unexpected arguments in reverse; this names them in order,
+// as they stand on the command line (`argv`). A value that followed an
+// unknown option and was taken as bake's SCENE is put back in its place.
+std::string ExtrasMessage(const CLI::App& app, int argc, char** argv, const std::string& scene) {
   for (const CLI::App* sub : app.get_subcommands()) {
-    const std::vector<std::string> extras = sub->remaining();
-    if (extras.empty()) continue;
+    std::vector<std::string> pending = sub->remaining();
+    if (pending.empty()) continue;
+    std::vector<std::string> extras;
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      const auto it = std::find(pending.begin(), pending.end(), a);
+      if (it != pending.end()) {
+        extras.push_back(a);
+        pending.erase(it);
+      } else if (!scene.empty() && a == scene && !extras.empty() && extras.back()[0] == '-') {
+        extras.push_back(a);
+      }
+    }
+    extras.insert(extras.end(), pending.begin(), pending.end());
     std::string list;
     for (const std::string& e : extras) list += (list.empty() ? "" : " ") + e;
     const std::string& first = extras.front();
@@ -817,7 +832,7 @@ int main(int argc, char** argv) {
   bool extras = !app.remaining().empty();
   for (const CLI::App* sub : app.get_subcommands()) extras |= !sub->remaining().empty();
   if (extras) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app)).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
     return 2;
   }
 
