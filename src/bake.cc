@@ -217,8 +217,13 @@ TexelValue Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_s
   if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   const std::string& m = spec.model.name;
   if (m == "ggx") return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
+#if BRDFBAKE_WITH_BECKMANN
   if (m == "beckmann") return TexelFor(BeckmannNdf<double>(alpha), mu, spec, texel_seed);
-  return TexelFor(StdNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
+#endif
+#if BRDFBAKE_WITH_STD
+  if (m == "std") return TexelFor(StdNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
+#endif
+  return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);  // ValidateBakeSpec admits no other
 }
 
 std::string ModelJson(const BakeSpec& spec) {

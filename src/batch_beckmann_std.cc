@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/config.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/batch_beckmann_std.cc"
@@ -17,7 +18,9 @@
 #include "simd/beckmann-inl.h"
 #include "simd/foreach-inl.h"
 #include "simd/fresnel-inl.h"
+#if BRDFBAKE_WITH_STD
 #include "simd/std-inl.h"
+#endif
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -122,6 +125,7 @@ void BeckmannSampleRow(const BeckmannBatchParams& p, const float* u1, const floa
   });
 }
 
+#if BRDFBAKE_WITH_STD
 // The STD rows run the Beckmann kernels when gamma >= kStdBeckmannGamma.
 void StdBrdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
   const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
@@ -202,6 +206,7 @@ void StdSampleRow(const StdBatchParams& p, const float* u1, const float* u2, flo
   });
 }
 
+#endif  // BRDFBAKE_WITH_STD
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -214,16 +219,18 @@ HWY_EXPORT(BeckmannBrdfRow);
 HWY_EXPORT(BeckmannDRow);
 HWY_EXPORT(BeckmannLambdaRow);
 HWY_EXPORT(BeckmannSampleRow);
+HWY_EXPORT(BeckmannG1Row);
+HWY_EXPORT(BeckmannG2Row);
+HWY_EXPORT(BeckmannPdfNdfRow);
+#if BRDFBAKE_WITH_STD
 HWY_EXPORT(StdBrdfRow);
 HWY_EXPORT(StdDRow);
 HWY_EXPORT(StdLambdaRow);
 HWY_EXPORT(StdSampleRow);
-HWY_EXPORT(BeckmannG1Row);
-HWY_EXPORT(BeckmannG2Row);
-HWY_EXPORT(BeckmannPdfNdfRow);
 HWY_EXPORT(StdG1Row);
 HWY_EXPORT(StdG2Row);
 HWY_EXPORT(StdPdfNdfRow);
+#endif
 
 void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const float* u2,
                             float* m_x, float* m_y, float* m_z, size_t n) {
@@ -232,6 +239,7 @@ void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const
   HWY_DYNAMIC_DISPATCH(BeckmannSampleRow)(p, u1, u2, out, n);
 }
 
+#if BRDFBAKE_WITH_STD
 void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2, float* m_x,
                        float* m_y, float* m_z, size_t n) {
   float* out[3] = {m_x, m_y, m_z};
@@ -239,6 +247,7 @@ void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2
   HWY_DYNAMIC_DISPATCH(StdSampleRow)(p, u1, u2, out, n);
 }
 
+#endif  // BRDFBAKE_WITH_STD
 #define BRDFBAKE_BATCH_3(Name, Params, Row)                                              \
   void Name(const Params& p, const float* x, const float* y, const float* z, float* out,   \
             size_t n) {                                                                     \
@@ -261,12 +270,14 @@ BRDFBAKE_BATCH_3(BeckmannLambdaBatch, BeckmannBatchParams, BeckmannLambdaRow)
 BRDFBAKE_BATCH_3(BeckmannG1Batch, BeckmannBatchParams, BeckmannG1Row)
 BRDFBAKE_BATCH_6(BeckmannG2Batch, BeckmannBatchParams, BeckmannG2Row)
 BRDFBAKE_BATCH_3(BeckmannPdfNdfBatch, BeckmannBatchParams, BeckmannPdfNdfRow)
+#if BRDFBAKE_WITH_STD
 BRDFBAKE_BATCH_6(StdBrdfBatch, StdBatchParams, StdBrdfRow)
 BRDFBAKE_BATCH_3(StdDBatch, StdBatchParams, StdDRow)
 BRDFBAKE_BATCH_3(StdLambdaBatch, StdBatchParams, StdLambdaRow)
 BRDFBAKE_BATCH_3(StdG1Batch, StdBatchParams, StdG1Row)
 BRDFBAKE_BATCH_6(StdG2Batch, StdBatchParams, StdG2Row)
 BRDFBAKE_BATCH_3(StdPdfNdfBatch, StdBatchParams, StdPdfNdfRow)
+#endif  // BRDFBAKE_WITH_STD
 #undef BRDFBAKE_BATCH_3
 #undef BRDFBAKE_BATCH_6
 

@@ -68,16 +68,21 @@ void GgxPdfNdfRow(const GgxBatchParams& p, const float* const* in, float* out, s
                    [&](auto d, const auto* v) { return GgxPdfNdf(d, c, v[0], v[1], v[2]); });
 }
 
+#if BRDFBAKE_WITH_ELLIPSOID
 EllipsoidConsts<DF> MakeEllipsoidConsts(const EllipsoidBatchParams& p) {
   return EllipsoidConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z, p.f0);
 }
 
+#endif  // BRDFBAKE_WITH_ELLIPSOID
+#if BRDFBAKE_WITH_SEL
 void SelKRow(const SelBatchParams& p, const float* const* in, float* out, size_t n) {
   const SelConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
   ForEachVector<3>(in, 0.5f, out, n,
                    [&](auto d, const auto* v) { return SelK(d, c, v[0], v[1], v[2]); });
 }
 
+#endif  // BRDFBAKE_WITH_SEL
+#if BRDFBAKE_WITH_ELLIPSOID
 void EllipsoidDRow(const EllipsoidBatchParams& p, const float* const* in, float* out, size_t n) {
   const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
   ForEachVector<3>(in, 0.5f, out, n,
@@ -137,6 +142,7 @@ void EllipsoidSampleVisibleRow(const EllipsoidBatchParams& p, const float* const
   });
 }
 
+#endif  // BRDFBAKE_WITH_ELLIPSOID
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -150,7 +156,10 @@ HWY_EXPORT(GgxSampleVisibleRow);
 HWY_EXPORT(GgxPdfVisibleRow);
 HWY_EXPORT(GgxSampleNdfRow);
 HWY_EXPORT(GgxPdfNdfRow);
+#if BRDFBAKE_WITH_SEL
 HWY_EXPORT(SelKRow);
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
 HWY_EXPORT(EllipsoidDRow);
 HWY_EXPORT(EllipsoidLambdaRow);
 HWY_EXPORT(EllipsoidG1Row);
@@ -158,6 +167,7 @@ HWY_EXPORT(EllipsoidBrdfRow);
 HWY_EXPORT(EllipsoidG2Row);
 HWY_EXPORT(EllipsoidPdfVisibleRow);
 HWY_EXPORT(EllipsoidSampleVisibleRow);
+#endif
 
 void FresnelDielectricBatch(float eta, const float* cos_i, float* out, size_t n) {
   HWY_DYNAMIC_DISPATCH(FresnelDielectricRow)(eta, cos_i, out, n);
@@ -196,6 +206,7 @@ void GgxPdfNdfBatch(const GgxBatchParams& p, const float* m_x, const float* m_y,
   HWY_DYNAMIC_DISPATCH(GgxPdfNdfRow)(p, in, out, n);
 }
 
+#if BRDFBAKE_WITH_ELLIPSOID
 void EllipsoidDBatch(const EllipsoidBatchParams& p, const float* m_x, const float* m_y,
                      const float* m_z, float* out, size_t n) {
   const float* in[3] = {m_x, m_y, m_z};
@@ -244,11 +255,14 @@ void EllipsoidG2Batch(const EllipsoidBatchParams& p, const float* wi_x, const fl
   HWY_DYNAMIC_DISPATCH(EllipsoidG2Row)(p, in, out, n);
 }
 
+#endif  // BRDFBAKE_WITH_ELLIPSOID
+#if BRDFBAKE_WITH_SEL
 void SelKBatch(const SelBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
                float* out, size_t n) {
   const float* in[3] = {w_x, w_y, w_z};
   HWY_DYNAMIC_DISPATCH(SelKRow)(p, in, out, n);
 }
 
+#endif  // BRDFBAKE_WITH_SEL
 }  // namespace brdfbake
 #endif  // HWY_ONCE

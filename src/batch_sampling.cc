@@ -39,6 +39,7 @@ void BeckmannPdfVisibleRow(const BeckmannBatchParams& p, const float* const* in,
   });
 }
 
+#if BRDFBAKE_WITH_STD
 void StdSamplePseudoVnisRow(const StdBatchParams& p, const float* const* in, float* const* out,
                             size_t n) {
   const StdSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
@@ -55,6 +56,7 @@ void StdPdfPseudoVnisRow(const StdBatchParams& p, const float* const* in, float*
   });
 }
 
+#endif  // BRDFBAKE_WITH_STD
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -65,8 +67,10 @@ HWY_AFTER_NAMESPACE();
 namespace brdfbake {
 HWY_EXPORT(BeckmannSampleVisibleRow);
 HWY_EXPORT(BeckmannPdfVisibleRow);
+#if BRDFBAKE_WITH_STD
 HWY_EXPORT(StdSamplePseudoVnisRow);
 HWY_EXPORT(StdPdfPseudoVnisRow);
+#endif
 
 void BeckmannSampleVisibleBatch(const BeckmannBatchParams& p, const float* wo_x,
                                 const float* wo_y, const float* wo_z, const float* u1,
@@ -85,6 +89,7 @@ void BeckmannPdfVisibleBatch(const BeckmannBatchParams& p, const float* wo_x, co
   HWY_DYNAMIC_DISPATCH(BeckmannPdfVisibleRow)(p, in, out, n);
 }
 
+#if BRDFBAKE_WITH_STD
 void StdSamplePseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
                               const float* wo_z, const float* u1, const float* u2, float* m_x,
                               float* m_y, float* m_z, size_t n) {
@@ -102,5 +107,6 @@ void StdPdfPseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const flo
   HWY_DYNAMIC_DISPATCH(StdPdfPseudoVnisRow)(p, in, out, n);
 }
 
+#endif  // BRDFBAKE_WITH_STD
 }  // namespace brdfbake
 #endif  // HWY_ONCE

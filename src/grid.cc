@@ -207,15 +207,20 @@ Grid EvalGrid(const GridRequest& req) {
           GgxBatchParams p;
           p.alpha_x = p.alpha_y = a;
           GgxG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+#if BRDFBAKE_WITH_BECKMANN
         } else if (name == "beckmann") {
           BeckmannBatchParams p;
           p.alpha_x = p.alpha_y = a;
           BeckmannG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+#endif
+#if BRDFBAKE_WITH_STD
         } else if (name == "std") {
           StdBatchParams p;
           p.alpha_x = p.alpha_y = a;
           p.gamma = float(req.model.gamma);
           StdG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
         } else {
           EllipsoidBatchParams p;
           p.alpha_x = p.alpha_y = a;
@@ -223,6 +228,7 @@ Grid EvalGrid(const GridRequest& req) {
           p.theta_y = float(req.model.theta_y);
           p.theta_z = float(req.model.theta_z);
           EllipsoidG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+#endif
         }
       } else {
         ModelParams mp = req.model;
@@ -244,6 +250,7 @@ Grid EvalGrid(const GridRequest& req) {
         p.masking = req.masking;
         GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
+#if BRDFBAKE_WITH_BECKMANN
       } else if (name == "beckmann") {
         BeckmannBatchParams p;
         p.alpha_x = ax;
@@ -252,6 +259,8 @@ Grid EvalGrid(const GridRequest& req) {
         p.masking = req.masking;
         BeckmannBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                           r.oz.data(), out, req.width);
+#endif
+#if BRDFBAKE_WITH_STD
       } else if (name == "std") {
         StdBatchParams p;
         p.alpha_x = ax;
@@ -261,6 +270,8 @@ Grid EvalGrid(const GridRequest& req) {
         p.masking = req.masking;
         StdBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
       } else {
         EllipsoidBatchParams p;
         p.alpha_x = ax;
@@ -272,6 +283,7 @@ Grid EvalGrid(const GridRequest& req) {
         p.masking = req.masking;
         EllipsoidBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                            r.oz.data(), out, req.width);
+#endif
       }
     } else {
       for (int x = 0; x < req.width; ++x) {

@@ -62,6 +62,7 @@ class NdfModel : public Model {
   Ndf ndf_;
 };
 
+#if BRDFBAKE_WITH_STD
 template <>
 Vec3<double> NdfModel<StdNdf<double>>::Sample(const Vec3<double>& wo, double u1,
                                               double u2) const {
@@ -71,6 +72,7 @@ template <>
 double NdfModel<StdNdf<double>>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
   return ndf_.PdfPseudoVnis(wo, m);
 }
+#endif
 template <class Ndf>
 Vec3<double> NdfModel<Ndf>::Sample(const Vec3<double>& wo, double u1, double u2) const {
   return ndf_.SampleVisible(wo, u1, u2);
@@ -137,19 +139,36 @@ std::string ModelParams::ToJson() const {
 const std::vector<ModelInfo>& Models() {
   static const std::vector<ModelInfo> kModels = {
       {"ggx", "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from seed 003"},
+#if BRDFBAKE_WITH_BECKMANN
       {"beckmann", "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
+#endif
+#if BRDFBAKE_WITH_STD
       {"std", "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, seed 004; gamma=2 is ggx, inf is beckmann"},
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
       {"ellipsoid", "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, seed 000; A = S Rx Ry Rz"},
+#endif
+#if BRDFBAKE_WITH_SEL
       {"sel", "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), seed 002"},
+#endif
   };
   return kModels;
 }
 
+bool ModelBuilt(const std::string& name) {
+  for (const ModelInfo& m : Models()) {
+    if (name == m.name) return true;
+  }
+  return false;
+}
+
 void ValidateModelParams(const ModelParams& p) {
-  bool known = false;
-  for (const ModelInfo& m : Models()) known |= p.name == m.name;
-  if (!known) {
-    Bad("unknown model '" + p.name + "' (expected ggx, beckmann, std, ellipsoid or sel)");
+  if (!ModelBuilt(p.name)) {
+    std::string built;
+    for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(m.name);
+    const bool family = p.name == "beckmann" || p.name == "std" || p.name == "ellipsoid" || p.name == "sel";
+    Bad(family ? "model '" + p.name + "' is not in this build (BRDFBAKE_MODELS; built: " + built + ")"
+               : "unknown model '" + p.name + "' (expected " + built + ")");
   }
   CheckAlpha("alpha_x", p.alpha_x);
   CheckAlpha("alpha_y", p.alpha_y);
@@ -169,22 +188,28 @@ void ValidateModelParams(const ModelParams& p) {
 
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
-  if (p.name == "ggx") {
-    return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
-  }
+#if BRDFBAKE_WITH_BECKMANN
   if (p.name == "beckmann") {
     return std::make_unique<NdfModel<BeckmannNdf<double>>>(
         p, BeckmannNdf<double>(p.alpha_x, p.alpha_y));
   }
+#endif
+#if BRDFBAKE_WITH_STD
   if (p.name == "std") {
     return std::make_unique<NdfModel<StdNdf<double>>>(
         p, StdNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
   }
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
   if (p.name == "ellipsoid") {
     return std::make_unique<NdfModel<EllipsoidNdf<double>>>(
         p, EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z));
   }
-  return std::make_unique<SelModel>(p);
+#endif
+#if BRDFBAKE_WITH_SEL
+  if (p.name == "sel") return std::make_unique<SelModel>(p);
+#endif
+  return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
 }
 
 }  // namespace brdfbake

@@ -174,6 +174,9 @@ Scene LoadToml(const std::string& path) {
     if (mat.model != "ggx" && mat.model != "beckmann" && mat.model != "std" && mat.model != "ggx-aniso") {
       f.Fail("model", "'" + mat.model + "' is not ggx, beckmann, std or ggx-aniso");
     }
+    if (mat.model != "ggx-aniso" && !ModelBuilt(mat.model)) {
+      f.Fail("model", "'" + mat.model + "' is not in this build (BRDFBAKE_MODELS)");
+    }
     const toml::node* r = mt.get("roughness");
     if (!r) f.Fail("roughness", "missing (a number in [0, 1] or a range [min, max])");
     if (r->is_array()) {

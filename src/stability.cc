@@ -13,6 +13,7 @@
 #include "brdfbake/batch.h"
 #include "brdfbake/batch_beckmann_std.h"
 #include "brdfbake/batch_extra.h"
+#include "brdfbake/model.h"
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
@@ -178,7 +179,9 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
     Record(&rows[1], l, nd.Lambda(a), true, sb.lambda);
     Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
            sb.brdf);
-  } else if (model == "beckmann" || model == "std") {
+  }
+#if BRDFBAKE_WITH_BECKMANN
+  if (model == "beckmann" || model == "std") {
     const bool beck = model == "beckmann";
     const double gamma = beck ? std::numeric_limits<double>::infinity()
                               : static_cast<double>(static_cast<float>(p.gamma));
@@ -192,6 +195,7 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
       BeckmannLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
       BeckmannBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     } else {
+#if BRDFBAKE_WITH_STD
       StdBatchParams bp;
       bp.alpha_x = ax;
       bp.alpha_y = ay;
@@ -199,6 +203,7 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
       StdDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
       StdLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
       StdBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
+#endif
     }
     const StdNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
     // The exponent E of the exponential factor (see kernel_bounds.h).
@@ -215,7 +220,10 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
     Record(&rows[1], l, lref, true, sb.lambda);
     Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
            sb.brdf, e_h > bounds::kFlushExponent);
-  } else {
+  }
+#endif  // BRDFBAKE_WITH_BECKMANN
+#if BRDFBAKE_WITH_ELLIPSOID
+  if (model == "ellipsoid") {
     EllipsoidBatchParams bp;
     bp.alpha_x = ax;
     bp.alpha_y = ay;
@@ -240,6 +248,7 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
     Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
            sb.brdf);
   }
+#endif  // BRDFBAKE_WITH_ELLIPSOID
   return sb;
 }
 
@@ -273,6 +282,7 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
   const std::string simd_kernel = "simd:" + BatchTarget();
   for (const Region& region : Regions()) {
     for (const char* model : region.models) {
+      if (!ModelBuilt(model)) continue;
       std::mt19937_64 rng(seed ^ std::hash<std::string>()(std::string(region.name) + model));
       StabilityRow rows[4], srows[3];
       for (int q = 0; q < 4; ++q) {

@@ -255,6 +255,7 @@ void CheckBeckmannDAndLambda() {
 const float kGammas[] = {1.5f, 1.501f, 1.6f, 2.0f, 3.0f, 7.5f, 30.0f, 1e4f, 1e6f, 1e9f, 2e10f,
                          std::numeric_limits<float>::infinity()};
 
+#if BRDFBAKE_WITH_STD
 void CheckStdDAndLambda() {
   const Dirs m = TestDirs(8000, 13);
   std::vector<float> d_out(m.size()), l_out(m.size());
@@ -282,6 +283,7 @@ void CheckStdDAndLambda() {
                 worst_l, kStdLambda);
   }
 }
+#endif  // BRDFBAKE_WITH_STD
 
 // The BRDF of either model against Brdf(ndf, Schlick, ...) in double.
 template <class Ndf, class Batch>
@@ -328,6 +330,7 @@ void CheckBeckmannBrdf() {
               hwy::TargetName(HWY_TARGET), worst[1], worst[0], kBeckBrdfRel, kBrdfExpSlope);
 }
 
+#if BRDFBAKE_WITH_STD
 void CheckStdBrdf() {
   const Dirs wi = TestDirs(6000, 11), wo = TestDirs(6000, 12);
   for (float gamma : kGammas) {
@@ -351,6 +354,7 @@ void CheckStdBrdf() {
                 hwy::TargetName(HWY_TARGET), gamma, worst[1], worst[0], kStdBrdfRel, kStdExpSlope);
   }
 }
+#endif  // BRDFBAKE_WITH_STD
 
 // (u1, u2) pairs: a random cloud plus the corners (u2 up to 1 - 2^-24).
 void SampleUs(size_t n, std::vector<float>* u1, std::vector<float>* u2) {
@@ -391,6 +395,7 @@ void CheckSamplersMatchScalar() {
       ASSERT_LE(compare(ref, i, &worst_b), kSampleAbs)
           << "Beckmann u=" << u1[i] << "," << u2[i] << " alpha " << al[0] << "," << al[1];
     }
+#if BRDFBAKE_WITH_STD
     for (float gamma : kGammas) {
       StdBatchParams sp;
       sp.alpha_x = al[0];
@@ -406,6 +411,7 @@ void CheckSamplersMatchScalar() {
             << ref.x << " " << ref.y << " " << ref.z;
       }
     }
+#endif
   }
   std::printf("%s: SampleNdf max abs error Beckmann %.3g, STD %.3g (bound %.2g)\n",
               hwy::TargetName(HWY_TARGET), worst_b, worst_s, kSampleAbs);
@@ -447,9 +453,11 @@ void CheckCountsAndSentinels() {
   BeckmannBatchParams bp;
   bp.alpha_x = 0.3f;
   bp.alpha_y = 0.1f;
+#if BRDFBAKE_WITH_STD
   StdBatchParams sp;
   sp.gamma = 2.7f;
   const size_t o3 = wi.size() - 64;  // directions from the a-sweep mix both STD forms
+#endif
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
     BeckmannBrdfBatch(bp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
                       wo.y.data() + o, wo.z.data() + o, dst, n);
@@ -464,6 +472,7 @@ void CheckCountsAndSentinels() {
     BeckmannSampleNdfBatch(bp, u1.data() + o, u2.data() + o, dst, dst + stride,
                            dst + 2 * stride, n);
   });
+#if BRDFBAKE_WITH_STD
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
     StdBrdfBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
                  wo.y.data() + o, wo.z.data() + o, dst, n);
@@ -478,6 +487,7 @@ void CheckCountsAndSentinels() {
   CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
     StdSampleNdfBatch(sp, u1.data() + o, u2.data() + o, dst, dst + stride, dst + 2 * stride, n);
   });
+#endif
 }
 
 }  // namespace
@@ -494,8 +504,10 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannBrdf);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckSamplersMatchScalar);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckCountsAndSentinels);
 
+#if BRDFBAKE_WITH_STD
 HWY_BEFORE_TEST(SimdStdTest);
 HWY_EXPORT_AND_TEST_P(SimdStdTest, CheckStdDAndLambda);
 HWY_EXPORT_AND_TEST_P(SimdStdTest, CheckStdBrdf);
+#endif
 }  // namespace brdfbake
 #endif

@@ -297,6 +297,7 @@ void CheckGgxSampleNdf() {
               Target(), worst, kGgxSampleAbs, worst_raw, worst_pdf);
 }
 
+#if BRDFBAKE_WITH_ELLIPSOID
 // -------------------------------------------------------------- Ellipsoid
 
 namespace {
@@ -347,7 +348,9 @@ Mat3<double> KCrossA(const Mat3<double>& a) {
 }
 
 }  // namespace
+#endif  // BRDFBAKE_WITH_ELLIPSOID
 
+#if BRDFBAKE_WITH_ELLIPSOID
 void CheckEllipsoidDLambdaG1() {
   const size_t n = 20000;
   const Dirs m = RandomDirs(n, 21);
@@ -488,6 +491,7 @@ void CheckEllipsoidSampleVisible() {
               "PdfVisible error / bound %.3g (bound %.1g kappa + %.1g / w.m)\n",
               Target(), worst, kEllSampleAbs, worst_raw, worst_pdf, kEllPdfRel, kGgxPdfDot);
 }
+#endif  // BRDFBAKE_WITH_ELLIPSOID
 
 // ------------------------------------------------------ counts, sentinels
 
@@ -530,6 +534,7 @@ void CheckExtraCountsAndSentinels() {
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
     GgxPdfVisibleBatch(gp, in[3], in[4], in[5], in[0], in[1], in[2], out[0], n);
   });
+#if BRDFBAKE_WITH_ELLIPSOID
   const EllipsoidBatchParams ep = ToParams({0.2f, 0.5f, 30, 20, 10});
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
     EllipsoidBrdfBatch(ep, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
@@ -541,17 +546,21 @@ void CheckExtraCountsAndSentinels() {
     EllipsoidSampleVisibleBatch(ep, in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2],
                                 n);
   });
+#endif
+#if BRDFBAKE_WITH_SEL
   SelBatchParams sp;
   sp.alpha_x = 0.1f;
   sp.theta_y = 0.5f;
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
     SelKBatch(sp, in[0], in[1], in[2], out[0], n);
   });
+#endif
 }
 
 // SEL K against the double SelLobe::K at the same float inputs: 2e-6
 // relative plus the change of the exact K when v = Q w moves by the float
 // rounding of the rotation (see src/simd/sel-inl.h).
+#if BRDFBAKE_WITH_SEL
 void CheckSelK() {
   const size_t n = 20000;
   const Dirs w = RandomDirs(n, 41);
@@ -598,6 +607,7 @@ void CheckSelK() {
   std::printf("%s: SEL K max error / bound %.3g (max relative error %.3g)\n", Target(), worst,
               worst_raw);
 }
+#endif  // BRDFBAKE_WITH_SEL
 
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
@@ -616,10 +626,15 @@ HWY_EXPORT_AND_TEST_P(SimdGgxSamplingTest, CheckGgxSampleVisible);
 HWY_EXPORT_AND_TEST_P(SimdGgxSamplingTest, CheckGgxPdfVisibleRandom);
 HWY_EXPORT_AND_TEST_P(SimdGgxSamplingTest, CheckGgxSampleNdf);
 
+#if BRDFBAKE_WITH_ELLIPSOID
 HWY_BEFORE_TEST(SimdEllipsoidTest);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidDLambdaG1);
-HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckSelK);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidBrdf);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidSampleVisible);
+#endif
+#if BRDFBAKE_WITH_SEL
+HWY_BEFORE_TEST(SimdSelTest);
+HWY_EXPORT_AND_TEST_P(SimdSelTest, CheckSelK);
+#endif
 }  // namespace brdfbake
 #endif

@@ -242,6 +242,7 @@ void CheckBeckmannSampleVisible() {
 
 // Every branch of Algorithm 1: sigma <= 0.01 (NDF), gamma > 10 (Beckmann),
 // the GGX, NDF and Beckmann bands between.
+#if BRDFBAKE_WITH_STD
 void CheckStdPseudoVnis() {
   const size_t n = 4000;
   const Dirs wo = Views(n, 21);
@@ -300,6 +301,7 @@ void CheckStdPseudoVnis() {
               Target(), kSampleAbs, worst[0], worst[1], worst[2], worst_dot, worst_pdf[0],
               worst_pdf[1], worst_pdf[2], cases[0], cases[1], cases[2]);
 }
+#endif  // BRDFBAKE_WITH_STD
 
 namespace {
 
@@ -332,6 +334,7 @@ void CheckSamplingCountsAndSentinels() {
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
     BeckmannPdfVisibleBatch(bp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
   });
+#if BRDFBAKE_WITH_STD
   // gamma 3.3 at sigma 0.3: GGX; 7 at sigma 0.2: NDF; 12: Beckmann.
   for (float gamma : {3.3f, 7.0f, 12.0f}) {
     StdBatchParams sp;
@@ -345,6 +348,7 @@ void CheckSamplingCountsAndSentinels() {
       StdPdfPseudoVnisBatch(sp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
     });
   }
+#endif
 }
 
 }  // namespace HWY_NAMESPACE
@@ -358,7 +362,9 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannSamplingTest, CheckErfInv);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannSamplingTest, CheckBeckmannSampleVisible);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannSamplingTest, CheckSamplingCountsAndSentinels);
 
+#if BRDFBAKE_WITH_STD
 HWY_BEFORE_TEST(SimdStdSamplingTest);
 HWY_EXPORT_AND_TEST_P(SimdStdSamplingTest, CheckStdPseudoVnis);
+#endif
 }  // namespace brdfbake
 #endif

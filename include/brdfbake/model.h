@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "brdfbake/brdf.h"
+#include "brdfbake/config.h"
 #include "brdfbake/fresnel.h"
 #include "brdfbake/vec3.h"
 
@@ -36,7 +37,10 @@ struct ModelInfo {
   const char* parameters;
   const char* source;
 };
-const std::vector<ModelInfo>& Models();
+const std::vector<ModelInfo>& Models();  // the families this build contains
+
+// Whether `name` is a model family of this build (BRDFBAKE_MODELS).
+bool ModelBuilt(const std::string& name);
 
 // The largest alpha accepted (roughness 100). Every model quantity, in
 // double, in float and in the SIMD kernels, is finite up to it
