@@ -461,6 +461,10 @@ int RunPreset(const BakeOptions& opts) {
   }
   const std::string dir = opts.output.empty() ? "." : opts.output;
   std::error_code ec;
+  const std::string ext = std::filesystem::path(dir).extension().string();
+  if (!ext.empty() && !std::filesystem::is_directory(dir, ec)) {
+    Bad("-o: with --preset, -o names a directory (got '" + dir + "'); the preset names its files");
+  }
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
     Bad("-o: with --preset, -o names a directory; cannot create '" + dir + "'");
