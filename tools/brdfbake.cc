@@ -443,11 +443,22 @@ std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
   return std::filesystem::path(path).replace_extension(brdfbake::ShaderLanguageName(lang)).string();
 }
 
-void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what) {
+// `image`: the arrangement written when it is not the table's own EXR (its
+// pixel type, hence its claimed error, may differ).
+void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what,
+                const brdfbake::Image* image = nullptr, const std::string& preset = "") {
+  double claim = table.max_abs_error;
+  int w = table.width, h = table.height;
+  if (image) {
+    for (const auto& kv : brdfbake::ImageConventions(table, *image, preset)) {
+      if (kv.first == "brdfbake.max_abs_error") claim = std::strtod(kv.second.c_str(), nullptr);
+    }
+    w = image->width;
+    h = image->height;
+  }
   std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
-              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), table.width,
-              table.height, brdfbake::IntegratorName(table.spec.integrator), table.seconds,
-              table.max_abs_error);
+              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), w, h,
+              brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
 }
 
 int RunPreset(const BakeOptions& opts) {
@@ -502,7 +513,7 @@ int RunPreset(const BakeOptions& opts) {
     if (!pt.file.empty()) {
       const std::string path = dir + "/" + pt.file;
       brdfbake::WriteImage(tables[i], images[i], pt.container, path, pt.symbol, preset.name);
-      PrintWrote(path, tables[i], what);
+      PrintWrote(path, tables[i], what, &images[i], preset.name);
     }
     if (!preset.header_file.empty()) {
       header_arrays.push_back({&tables[i], &images[i]});
@@ -571,7 +582,8 @@ int RunBake(const BakeOptions& opts) {
     const std::string symbol = std::string("brdfbake_") + brdfbake::TableName(spec.table);
     brdfbake::WriteImage(table, image, container, opts.output, symbol, "");
   }
-  PrintWrote(opts.output, table, brdfbake::TableName(spec.table));
+  PrintWrote(opts.output, table, brdfbake::TableName(spec.table),
+             container == brdfbake::Container::kExr ? nullptr : &image);
   if (shader) {
     const std::string path = ShaderPath(opts.output, lang);
     AtomicWriteText(path, brdfbake::ShaderFunction(table, image, lang,
@@ -785,7 +797,8 @@ int main(int argc, char** argv) {
   eval_opts.Add(eval);
 
   CLI::App* bake = app.add_subcommand(
-      "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing OpenEXR file.");
+      "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing file, an engine's tables "
+              "(--preset), or exactly the tables a scene needs (bake SCENE -o DIR).");
   bake->allow_extras();
   BakeOptions bake_opts;
   bake_opts.Add(bake, false);
