@@ -9,7 +9,6 @@
 #include "brdfbake/engine.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -27,17 +26,13 @@
 #include "brdfbake/grid.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
+#include "text.h"
 #include "exr_write.h"
 
 namespace brdfbake {
 namespace {
 
 [[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
-
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 std::string Num(double v) {
   char buf[40];
@@ -171,12 +166,6 @@ std::string ArrayBody(const Image& im, bool half_bits, const char* float_suffix)
     s += i + 1 < n ? (i % per_line == per_line - 1 ? ",\n" : ", ") : "\n";
   }
   return s;
-}
-
-void WriteText(const std::string& path, const std::string& text) {
-  AtomicFile f(path);
-  f.Append(text);
-  f.Commit();
 }
 
 // KTX 2.0 (Khronos KTX 2.0 specification, sections 3-4; the data format
@@ -347,7 +336,7 @@ Container ParseContainer(const std::string& s) {
 }
 
 Container ContainerFromPath(const std::string& path) {
-  const std::string ext = Lower(std::filesystem::path(path).extension().string());
+  const std::string ext = Lowercase(std::filesystem::path(path).extension().string());
   if (ext == ".exr") return Container::kExr;
   if (ext == ".h" || ext == ".hpp" || ext == ".inc") return Container::kHeader;
   if (ext == ".js" || ext == ".mjs") return Container::kJs;
@@ -389,6 +378,11 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
     im.channel_names.push_back(o.name);
     im.channel_sources.push_back(SourceName(o.source));
   }
+  // The claim: the table's largest integration estimate (twice for E or
+  // 1-E formed from scale + bias) plus this image's largest rounding.
+  bool derived = false;
+  for (const ImageLayout::Out& o : layout.channels) derived |= reader.Derived(o.source);
+  double rounding = 0;
   const size_t n = size_t(im.width) * im.height * im.channels;
   im.values.resize(n);
   if (im.pixel != PixelType::kFloat) im.bits16.resize(n);
@@ -416,46 +410,16 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
             break;
           }
         }
+        rounding = std::max(rounding, std::abs(im.values[dst] - v));
       }
     }
   }
+  im.max_abs_error = t.integration_error * (derived ? 2 : 1) + rounding;
   return im;
 }
 
 std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t, const Image& im,
                                                                   const std::string& preset) {
-  // The claim: the table's largest integration estimate (twice for a sum
-  // of two channels) plus this image's own largest rounding.
-  const SourceReader reader{t};
-  bool derived = false;
-  for (const std::string& s : im.channel_sources) {
-    for (Source src : {Source::kE, Source::kOneMinusE}) derived |= s == SourceName(src) && reader.Derived(src);
-  }
-  double rounding = 0;
-  {
-    ImageLayout exact;
-    exact.roughness_on_x = im.transposed;
-    exact.flip_rows = im.flip_rows;
-    for (size_t c = 0; c < im.channel_sources.size(); ++c) {
-      for (Source s : {Source::kE, Source::kOneMinusE, Source::kEavg, Source::kOneMinusEavg,
-                       Source::kScale, Source::kBias, Source::kZero, Source::kOne}) {
-        if (im.channel_sources[c] == SourceName(s)) exact.channels.push_back({"", s});
-      }
-    }
-    // The same arrangement in double: compare value by value.
-    const int w = im.width, h = im.height;
-    for (int y = 0; y < h; ++y) {
-      const int ty = im.flip_rows ? h - 1 - y : y;
-      for (int x = 0; x < w; ++x) {
-        const size_t src = exact.roughness_on_x ? size_t(x) * t.width + ty : size_t(ty) * t.width + x;
-        for (int c = 0; c < im.channels; ++c) {
-          const double v = reader.At(exact.channels[c].source, src);
-          rounding = std::max(rounding, std::abs(im.values[(size_t(y) * w + x) * im.channels + c] - v));
-        }
-      }
-    }
-  }
-  const double claim = t.integration_error * (derived ? 2 : 1) + rounding;
   nlohmann::json axes = nlohmann::json::array();
   for (const Axis& a : im.axes) axes.push_back(nlohmann::json::parse(a.ToJson()));
   // As in the tables' EXR files: name -> meaning, the order, and per channel
@@ -480,7 +444,7 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
             "t = (i + 0.5) / N (centers) or i / (N - 1) (edges), value = min + (max - min) w(t), "
             "w = t, t^2, sqrt(t) for linear, square, sqrt; the integrand at max(value, clamp_min)";
   char err[40];
-  std::snprintf(err, sizeof(err), "%.3e", claim * (1 + 1e-3));
+  std::snprintf(err, sizeof(err), "%.3e", im.max_abs_error * (1 + 1e-3));
   std::vector<std::pair<std::string, std::string>> kv = {
       {"brdfbake.version", BRDFBAKE_VERSION},
       {"brdfbake.table", TableName(t.spec.table)},
@@ -518,7 +482,7 @@ void WriteHeader(const std::vector<std::pair<const Table*, const Image*>>& array
     s += std::string("inline constexpr ") + (half_bits ? "uint16_t " : "float ") + sym + "[" +
          std::to_string(im.values.size()) + "] = {\n" + ArrayBody(im, half_bits, "f") + "};\n\n";
   }
-  WriteText(path, s);
+  WriteFileAtomically(path, s);
 }
 
 void WriteImage(const Table& table, const Image& im, Container container, const std::string& path,
@@ -560,14 +524,14 @@ void WriteImage(const Table& table, const Image& im, Container container, const 
       s += "export const conventions = " + conv_json.dump() + ";\n";
       s += std::string("export const ") + symbol + " = new " + (half ? "Uint16Array" : "Float32Array") +
            "([\n" + ArrayBody(im, half, "") + "]);\n";
-      WriteText(path, s);
+      WriteFileAtomically(path, s);
       return;
     }
     case Container::kKtx2:
-      WriteText(path, Ktx2Bytes(im, conv));
+      WriteFileAtomically(path, Ktx2Bytes(im, conv));
       return;
     case Container::kDds:
-      WriteText(path, DdsBytes(im));
+      WriteFileAtomically(path, DdsBytes(im));
       return;
   }
 }
@@ -584,8 +548,10 @@ std::string Lit(double v) {
 }
 
 // One axis' texture coordinate from a physical value, as shader source.
-std::string AxisCoordinate(const Axis& a, const std::string& value) {
-  std::string t = "clamp((" + value + " - " + Lit(a.min) + ") / " + Lit(a.max - a.min) + ", 0.0, 1.0)";
+// HLSL spells clamp(x, 0, 1) saturate(x).
+std::string AxisCoordinate(const Axis& a, const std::string& value, bool hlsl) {
+  const std::string x = "(" + value + " - " + Lit(a.min) + ") / " + Lit(a.max - a.min);
+  std::string t = hlsl ? "saturate(" + x + ")" : "clamp(" + x + ", 0.0, 1.0)";
   if (a.warp == Warp::kSquare) t = "sqrt(" + t + ")";
   if (a.warp == Warp::kSqrt) t = "(" + t + ") * (" + t + ")";
   if (a.placement == Placement::kEdges) {
@@ -619,19 +585,7 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   const std::string f2 = glsl ? "vec2" : hlsl ? "float2" : "vec2<f32>";
   const bool one_d = t.spec.table == TableKind::kEavg;
   // Texture coordinates.
-  auto coord = [&](const Axis& a) {
-    const std::string value = a.name == "mu" ? "NoV" : "roughness";
-    std::string expr = AxisCoordinate(a, value);
-    if (hlsl) {
-      // HLSL spells clamp(x, 0, 1) saturate(x).
-      const std::string open = "clamp((";
-      const size_t at = expr.find(open);
-      const size_t end = expr.find(", 0.0, 1.0)");
-      expr = expr.substr(0, at) + "saturate((" + expr.substr(at + open.size(), end - at - open.size()) +
-             ")" + expr.substr(end + std::string(", 0.0, 1.0)").size());
-    }
-    return expr;
-  };
+  auto coord = [&](const Axis& a) { return AxisCoordinate(a, a.name == "mu" ? "NoV" : "roughness", hlsl); };
   std::string u = coord(im.axes[0]);
   std::string v = one_d ? "0.5" : coord(im.axes[1]);
   if (im.flip_rows) v = "1.0 - (" + v + ")";

@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdlib>
@@ -18,6 +17,8 @@
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
+
+#include "text.h"
 
 namespace brdfbake {
 namespace {
@@ -104,8 +105,7 @@ void CheckOutputPath(const std::string& path, const std::string& option) {
 
 void CheckOutputExtension(const std::string& path, const std::string& extension,
                           const std::string& what, const std::string& option) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = Lowercase(std::filesystem::path(path).extension().string());
   if (ext == extension) return;
   Bad(option, "'" + path + "' " + (ext.empty() ? "has no extension" : "names a " + ext + " file") +
                   "; " + what + " writes " + extension + " files only");
@@ -186,6 +186,12 @@ void AtomicFile::WriteAt(const void* data, size_t n, size_t offset) {
 }
 
 void AtomicFile::Append(const std::string& bytes) { WriteAt(bytes.data(), bytes.size(), size_); }
+
+void WriteFileAtomically(const std::string& path, const std::string& text) {
+  AtomicFile f(path);
+  f.Append(text);
+  f.Commit();
+}
 
 void AtomicFile::Commit() {
   if (fd_ < 0) Fail("the file is already closed");

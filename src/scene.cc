@@ -20,16 +20,12 @@
 
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
+#include "text.h"
 
 namespace brdfbake {
 namespace {
 
 [[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
-
-std::string Lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 std::string Num(double v) {
   char buf[40];
@@ -225,7 +221,7 @@ Scene LoadGltf(const std::string& path) {
   loader.SetImageLoader(NoImages, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  const bool binary = Lower(std::filesystem::path(path).extension().string()) == ".glb";
+  const bool binary = Lowercase(std::filesystem::path(path).extension().string()) == ".glb";
   bool ok = false;
   try {
     ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
@@ -321,7 +317,7 @@ std::vector<double> ExactAt(const Table& t, double mu, double r) {
 Scene LoadScene(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) Bad(path + ": no such scene file");
-  const std::string ext = Lower(std::filesystem::path(path).extension().string());
+  const std::string ext = Lowercase(std::filesystem::path(path).extension().string());
   if (ext == ".toml") return LoadToml(path);
   if (ext == ".gltf" || ext == ".glb") return LoadGltf(path);
   Bad(path + ": a scene is a .toml, .gltf or .glb file");
@@ -531,9 +527,7 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
     }
     for (ShaderLanguage l : scene.engine.shaders) {
       const std::string f = stem(p.file) + "." + ShaderLanguageName(l);
-      AtomicFile out(dir + "/" + f);
-      out.Append(ShaderFunction(p.table, im, l, symbol));
-      out.Commit();
+      WriteFileAtomically(dir + "/" + f, ShaderFunction(p.table, im, l, symbol));
       extra.push_back(f);
     }
     nlohmann::json axes = nlohmann::json::array();
@@ -553,9 +547,7 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
                                   {"also", extra}});
   }
   manifest["not_baked"] = plan.notes;
-  AtomicFile out(dir + "/manifest.json");
-  out.Append(manifest.dump(2) + "\n");
-  out.Commit();
+  WriteFileAtomically(dir + "/manifest.json", manifest.dump(2) + "\n");
   return files;
 }
 

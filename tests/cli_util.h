@@ -15,16 +15,11 @@
 #include <string>
 #include <vector>
 
+#include "file_util.h"
+
 namespace brdfbake {
 
 #ifdef BRDFBAKE_CLI_PATH
-
-inline std::string ReadAll(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // Shell-quotes one argument.
 inline std::string Quote(const std::string& s) {
@@ -48,8 +43,8 @@ inline ToolRun ExecuteShell(const std::string& shell, const std::string& dir) {
   ToolRun r;
   r.signaled = WIFSIGNALED(raw) || (WIFEXITED(raw) && WEXITSTATUS(raw) > 128);
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = ReadAll(dir + "/stdout");
-  r.err = ReadAll(dir + "/stderr");
+  r.out = test::Slurp(dir + "/stdout");
+  r.err = test::Slurp(dir + "/stderr");
   return r;
 }
 

@@ -33,6 +33,7 @@
 #include "brdfbake/report.h"
 #include "brdfbake/std_ndf.h"
 #include "cli_util.h"
+#include "lookup_util.h"
 
 namespace brdfbake {
 namespace {
@@ -611,16 +612,8 @@ TEST(RangeTest, ComplementOfEavgInHalf) {
 
 // A GPU's bilinear texture(lut, vec2(NoV, r)) with clamp-to-edge addressing.
 double GpuBilinear(const Table& t, double u, double v) {
-  auto fetch = [&](int x, int y) {
-    x = std::clamp(x, 0, t.width - 1);
-    y = std::clamp(y, 0, t.height - 1);
-    return double(t.channels[0].stored[size_t(y) * t.width + x]);
-  };
-  const double x = u * t.width - 0.5, y = v * t.height - 0.5;
-  const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-  const double fx = x - x0, fy = y - y0;
-  return (1 - fy) * ((1 - fx) * fetch(x0, y0) + fx * fetch(x0 + 1, y0)) +
-         fy * ((1 - fx) * fetch(x0, y0 + 1) + fx * fetch(x0 + 1, y0 + 1));
+  auto at = [&](int x, int y) { return double(t.channels[0].stored[size_t(y) * t.width + x]); };
+  return test::TextureBilinear(at, t.width, t.height, u, v);
 }
 
 // The note the tool prints for edges tables: looked up without the remap,

@@ -20,6 +20,7 @@
 
 #include "brdfbake/scene.h"
 #include "file_util.h"
+#include "lookup_util.h"
 
 namespace brdfbake {
 namespace {
@@ -118,18 +119,9 @@ TEST(SceneTest, PlannedErrorBoundsRandomLookups) {
     for (int i = 0; i < 400; ++i) {
       const double mu = uni(rng), r = ar.min + (ar.max - ar.min) * uni(rng);
       // Texture coordinates by the axis maps (docs/format.md), inverted.
-      auto coord = [](const Axis& a, double v) {
-        double x = a.max > a.min ? std::clamp((v - a.min) / (a.max - a.min), 0.0, 1.0) : 0.5;
-        if (a.warp == Warp::kSquare) x = std::sqrt(x);
-        return x * a.size - 0.5;  // centres: fractional texel index
-      };
-      const double fx = std::clamp(coord(am, mu), 0.0, double(am.size - 1));
-      const double fy = std::clamp(coord(ar, r), 0.0, double(ar.size - 1));
-      const int x0 = std::min(int(fx), std::max(0, am.size - 2)), y0 = std::min(int(fy), std::max(0, ar.size - 2));
-      const int x1 = std::min(x0 + 1, am.size - 1), y1 = std::min(y0 + 1, ar.size - 1);
-      const double wx = fx - x0, wy = fy - y0;
       auto at = [&](int x, int y) { return double(t.channels[0].stored[size_t(y) * t.width + x]); };
-      const double lookup = (1 - wy) * ((1 - wx) * at(x0, y0) + wx * at(x1, y0)) + wy * ((1 - wx) * at(x0, y1) + wx * at(x1, y1));
+      const double lookup = test::TextureBilinear(at, am.size, ar.size, test::TextureCoordinate(am, mu),
+                                                  test::TextureCoordinate(ar, r));
       BakeSpec es = t.spec;  // the table's model, masking and gamma
       const double exact = IntegrateTexel(es, ar.size == 1 ? ar.min : r, mu).e;
       worst = std::max(worst, std::abs(lookup - exact));
@@ -173,6 +165,20 @@ struct BadScene {
   const char* expect;  // in the error, after the file name
 };
 
+// LoadScene(path) throws one line that starts with the path and contains
+// the expected words.
+void ExpectRejected(const std::string& path, const BadScene& c) {
+  try {
+    LoadScene(path);
+    ADD_FAILURE() << "accepted: " << c.text;
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << "'" << c.expect << "' not in: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+}
+
 TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
   const std::string dir = Scratch("bad");
   const std::string good_material = "[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\n";
@@ -212,15 +218,7 @@ TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
                                                    std::string(c.expect).find("array of tables") == std::string::npos
                                                ? good_material
                                                : ""));
-    try {
-      LoadScene(path);
-      ADD_FAILURE() << "accepted: " << c.text;
-    } catch (const std::invalid_argument& e) {
-      const std::string msg = e.what();
-      EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
-      EXPECT_NE(msg.find(c.expect), std::string::npos) << "'" << c.expect << "' not in: " << msg;
-      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    }
+    ExpectRejected(path, c);
   }
   // glTF.
   const BadScene gltf[] = {
@@ -237,15 +235,7 @@ TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
   for (const BadScene& c : gltf) {
     const std::string path = dir + "/bad" + std::to_string(n++) + ".gltf";
     WriteText(path, c.text);
-    try {
-      LoadScene(path);
-      ADD_FAILURE() << "accepted: " << c.text;
-    } catch (const std::invalid_argument& e) {
-      const std::string msg = e.what();
-      EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
-      EXPECT_NE(msg.find(c.expect), std::string::npos) << "'" << c.expect << "' not in: " << msg;
-      EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    }
+    ExpectRejected(path, c);
   }
   EXPECT_THROW(LoadScene(dir + "/missing.toml"), std::invalid_argument);
   WriteText(dir + "/scene.yaml", "a: 1");

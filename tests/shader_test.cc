@@ -25,6 +25,7 @@
 #include "brdfbake/bake.h"
 #include "brdfbake/engine.h"
 #include "file_util.h"
+#include "lookup_util.h"
 
 namespace brdfbake {
 namespace {
@@ -59,39 +60,18 @@ struct Baked {
   Image image;
 };
 
-// The CPU model of texture(lut, uv) with bilinear filtering and
-// clamp-to-edge, on the stored values.
-double Bilinear(const Image& im, double u, double v, int c) {
-  auto fetch = [&](int x, int y) {
-    x = std::clamp(x, 0, im.width - 1);
-    y = std::clamp(y, 0, im.height - 1);
-    return im.values[(size_t(y) * im.width + x) * im.channels + c];
-  };
-  const double x = u * im.width - 0.5, y = v * im.height - 0.5;
-  const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
-  const double fx = x - x0, fy = y - y0;
-  return (1 - fy) * ((1 - fx) * fetch(x0, y0) + fx * fetch(x0 + 1, y0)) +
-         fy * ((1 - fx) * fetch(x0, y0 + 1) + fx * fetch(x0 + 1, y0 + 1));
-}
-
-// The texture coordinate of a physical value along an axis, from the
-// axis description alone (docs/format.md).
-double Coordinate(const Axis& a, double p) {
-  double t = std::clamp((p - a.min) / (a.max - a.min), 0.0, 1.0);
-  if (a.warp == Warp::kSquare) t = std::sqrt(t);
-  if (a.warp == Warp::kSqrt) t = t * t;
-  return a.placement == Placement::kCenters ? t : (t * (a.size - 1) + 0.5) / a.size;
-}
-
 // What the function should return at (NoV, r), by the CPU model.
 std::vector<double> ModelLookup(const Table& t, const Image& im, double nov, double r) {
   const bool one_d = t.spec.table == TableKind::kEavg;
   auto value_of = [&](const Axis& a) { return a.name == "mu" ? nov : r; };
-  const double u = Coordinate(im.axes[0], value_of(im.axes[0]));
-  double v = one_d ? 0.5 : Coordinate(im.axes[1], value_of(im.axes[1]));
+  const double u = test::TextureCoordinate(im.axes[0], value_of(im.axes[0]));
+  double v = one_d ? 0.5 : test::TextureCoordinate(im.axes[1], value_of(im.axes[1]));
   if (im.flip_rows) v = 1 - v;
   std::vector<double> s(im.channels);
-  for (int c = 0; c < im.channels; ++c) s[c] = Bilinear(im, u, v, c);
+  for (int c = 0; c < im.channels; ++c) {
+    auto at = [&](int x, int y) { return im.values[(size_t(y) * im.width + x) * im.channels + c]; };
+    s[c] = test::TextureBilinear(at, im.width, im.height, u, v);
+  }
   auto find = [&](const char* src) {
     for (size_t c = 0; c < im.channel_sources.size(); ++c) {
       if (im.channel_sources[c] == src) return int(c);

@@ -111,10 +111,13 @@ std::vector<std::string> SplitComma(const std::string& text) {
   return out;
 }
 
-void AtomicWriteText(const std::string& path, const std::string& text) {
-  brdfbake::AtomicFile f(path);
-  f.Append(text);
-  f.Commit();
+// Creates the output directory (and its parents) before any work is done.
+void MakeOutputDirectory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    Bad("-o: cannot create directory '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  }
 }
 
 bool Given(const CLI::App* app, const char* option) {
@@ -446,16 +449,9 @@ std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
 // `image`: the arrangement written when it is not the table's own EXR (its
 // pixel type, hence its claimed error, may differ).
 void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what,
-                const brdfbake::Image* image = nullptr, const std::string& preset = "") {
-  double claim = table.max_abs_error;
-  int w = table.width, h = table.height;
-  if (image) {
-    for (const auto& kv : brdfbake::ImageConventions(table, *image, preset)) {
-      if (kv.first == "brdfbake.max_abs_error") claim = std::strtod(kv.second.c_str(), nullptr);
-    }
-    w = image->width;
-    h = image->height;
-  }
+                const brdfbake::Image* image = nullptr) {
+  const double claim = image ? image->max_abs_error : table.max_abs_error;
+  const int w = image ? image->width : table.width, h = image ? image->height : table.height;
   std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
               OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), w, h,
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
@@ -476,10 +472,7 @@ int RunPreset(const BakeOptions& opts) {
   if (!ext.empty() && !std::filesystem::is_directory(dir, ec)) {
     Bad("-o: with --preset, -o names a directory (got '" + dir + "'); the preset names its files");
   }
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) {
-    Bad("-o: with --preset, -o names a directory; cannot create '" + dir + "'");
-  }
+  MakeOutputDirectory(dir);
   const bool shader = !opts.shader.empty();
   const brdfbake::ShaderLanguage lang =
       shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
@@ -513,7 +506,7 @@ int RunPreset(const BakeOptions& opts) {
     if (!pt.file.empty()) {
       const std::string path = dir + "/" + pt.file;
       brdfbake::WriteImage(tables[i], images[i], pt.container, path, pt.symbol, preset.name);
-      PrintWrote(path, tables[i], what, &images[i], preset.name);
+      PrintWrote(path, tables[i], what, &images[i]);
     }
     if (!preset.header_file.empty()) {
       header_arrays.push_back({&tables[i], &images[i]});
@@ -521,7 +514,8 @@ int RunPreset(const BakeOptions& opts) {
     }
     if (shader) {
       const std::string path = dir + "/" + pt.symbol + "." + brdfbake::ShaderLanguageName(lang);
-      AtomicWriteText(path, brdfbake::ShaderFunction(tables[i], images[i], lang, "brdfbake_" + pt.symbol));
+      brdfbake::WriteFileAtomically(
+          path, brdfbake::ShaderFunction(tables[i], images[i], lang, "brdfbake_" + pt.symbol));
       std::printf("wrote %s: %s lookup of %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang),
                   pt.symbol.c_str());
     }
@@ -542,9 +536,7 @@ int RunSceneBake(const BakeOptions& opts) {
   }
   if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
   const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
-  std::error_code ec;
-  std::filesystem::create_directories(opts.output, ec);
-  if (ec || !std::filesystem::is_directory(opts.output)) Bad("-o: cannot create directory '" + opts.output + "'");
+  MakeOutputDirectory(opts.output);
   brdfbake::CheckOutputPath(opts.output + "/manifest.json");
   const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
   const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
@@ -586,7 +578,7 @@ int RunBake(const BakeOptions& opts) {
              container == brdfbake::Container::kExr ? nullptr : &image);
   if (shader) {
     const std::string path = ShaderPath(opts.output, lang);
-    AtomicWriteText(path, brdfbake::ShaderFunction(table, image, lang,
+    brdfbake::WriteFileAtomically(path, brdfbake::ShaderFunction(table, image, lang,
                                                    std::string("brdfbake_") + brdfbake::TableName(spec.table)));
     std::printf("wrote %s: %s lookup\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang));
   }
@@ -608,11 +600,7 @@ int RunReportCommand(const BakeOptions& opts, int repeats, double reference_tole
   rs.reference_tolerance = reference_tolerance;
   if (rs.repeats < 1 || rs.repeats > 100) Bad("--repeats must be in [1, 100]");
   // The directory is made and checked before the work starts.
-  std::error_code ec;
-  std::filesystem::create_directories(opts.output, ec);
-  if (ec || !std::filesystem::is_directory(opts.output)) {
-    Bad("-o: cannot create directory '" + opts.output + "'" + (ec ? ": " + ec.message() : ""));
-  }
+  MakeOutputDirectory(opts.output);
   for (const char* f : {"report.csv", "report.svg", "interpolation.csv", "interpolation.svg"}) {
     brdfbake::CheckOutputPath(opts.output + "/" + f);
   }

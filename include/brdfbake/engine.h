@@ -64,6 +64,7 @@ struct Image {
   std::vector<Axis> axes;
   bool transposed = false;  // x = roughness
   bool flip_rows = false;
+  double max_abs_error = 0;  // the table's integration error plus this image's rounding
 };
 
 // Throws std::invalid_argument if a channel's source is not in the table.

@@ -36,6 +36,9 @@ void InstallTemporaryCleanup();
 // One output file. The temporary is created by the constructor and removed
 // by the destructor unless Commit() renamed it over the target. Errors
 // throw std::runtime_error naming the target (never the temporary).
+// The whole of `text` as the file `path`, through an AtomicFile.
+void WriteFileAtomically(const std::string& path, const std::string& text);
+
 class AtomicFile {
  public:
   explicit AtomicFile(const std::string& path);
