@@ -22,6 +22,7 @@
 #include "brdfbake/version.h"
 #include "azimuthal.h"
 #include "integrate.h"
+#include "quadrature_simd.h"
 
 namespace brdfbake {
 namespace {
@@ -175,7 +176,8 @@ TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int ma
       return v;
     }
   }
-  return QuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
+  if (!spec.simd) return QuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
+  return SimdQuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
 }
 
 template <class Ndf>

@@ -264,6 +264,7 @@ struct BakeOptions {
   std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
   std::string pixel = "float", output, seed = "1", preset, format, shader, scene;
+  std::string target = "best";
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
   bool complement = false, error_channel = false;
@@ -295,6 +296,10 @@ struct BakeOptions {
     }
     app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
     app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
+    app->add_option("--target", target,
+                    "quadrature: the SIMD target of the integrand (AVX3, AVX2, SSE4, SSSE3, "
+                    "SCALAR, best), or scalar for the double scalar reference")
+        ->capture_default_str();
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
         ->capture_default_str();
     app->add_option("--pixel", pixel, "float | half | unorm16 (dds only)")->capture_default_str();
@@ -323,6 +328,14 @@ struct BakeOptions {
     spec.integrator = brdfbake::ParseIntegrator(integrator);
     if (Given(app, "--tolerance") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
       Bad("--tolerance applies to the quadrature integrator only (got --integrator " + integrator + ")");
+    }
+    if (Given(app, "--target") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
+      Bad("--target applies to the quadrature integrator only (got --integrator " + integrator + ")");
+    }
+    if (target == "scalar") {
+      spec.simd = false;
+    } else {
+      brdfbake::ForceTarget(target);
     }
     spec.samples = samples;
     spec.tolerance = tolerance;

@@ -83,6 +83,10 @@ struct BakeSpec {
   bool half = false;           // half pixels (default float)
   int threads = 0;             // 0 = all cores, at most kMaxThreads
   bool estimate_error = true;  // engine: measure the error against the quadrature
+  // quadrature: evaluate the integrand in double SIMD lanes (the best
+  // Highway target, or the one ForceTarget chose); false runs the double
+  // scalar reference of the same rule (`--target scalar`).
+  bool simd = true;
 
   // Default samples for the integrator (the value used when samples == 0).
   int EffectiveSamples() const;
