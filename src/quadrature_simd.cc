@@ -4,9 +4,9 @@
 // Dynamic dispatch of the SIMD quadrature (quadrature_simd.h): the ladder,
 // the lines and their horizon splits are integrate.h's templates,
 // instantiated per Highway target with lines whose pieces and probes run in
-// double lanes (src/simd/disk_line-inl.h). The root solves on the horizon
-// and on the layer height stay scalar (GgxDiskLines::Line::Z, about a tenth
-// of the evaluations).
+// double lanes (src/simd/disk_line-inl.h, simd/math_f64-inl.h). The root
+// solves on the horizon and on the layer height stay scalar
+// (GgxDiskLines::Line::Z).
 
 #include <cstring>
 #include <limits>
@@ -20,6 +20,7 @@
 #include <hwy/highway.h>
 
 #include "simd/disk_line-inl.h"
+#include "simd/math_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -28,35 +29,24 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 using DF64 = hn::ScalableTag<double>;
 
-// Lambda of a slope-space model through its unit-roughness StdLambda(a),
-// a = w.z / sqrt(ax^2 w.x^2 + ay^2 w.y^2) formed in lanes and the function
-// evaluated per lane by the double reference (SlopeNdf::Lambda; lanes below
-// the horizon give +inf, and are masked by the caller).
-template <class Ndf>
-struct PerLaneLambda {
-  const Ndf* ndf;
+// The argument a = w.z / sqrt(ax^2 w.x^2 + ay^2 w.y^2) of a slope-space
+// model's unit-roughness Lambda (0 or negative below the horizon, +inf along
+// the normal).
+template <class V>
+HWY_INLINE V SlopeArgument(V ax, V ay, V x, V y, V z) {
+  const V px = hn::Mul(ax, x), py = hn::Mul(ay, y);
+  return hn::Div(z, hn::Sqrt(hn::Add(hn::Mul(px, px), hn::Mul(py, py))));
+}
+
+#if BRDFBAKE_WITH_BECKMANN
+// Beckmann: Lambda and D / D_ggx in lanes (simd/math_f64-inl.h,
+// simd/disk_line-inl.h).
+struct BeckmannLaneModel {
   hn::Vec<DF64> ax, ay;
   template <class V>
   HWY_INLINE V Lambda(DF64 d, V x, V y, V z) const {
-    const V px = hn::Mul(ax, x), py = hn::Mul(ay, y);
-    const V proj = hn::Sqrt(hn::Add(hn::Mul(px, px), hn::Mul(py, py)));
-    HWY_ALIGN double zs[HWY_MAX_BYTES / sizeof(double)];
-    HWY_ALIGN double ps[HWY_MAX_BYTES / sizeof(double)];
-    hn::Store(z, d, zs);
-    hn::Store(proj, d, ps);
-    for (size_t i = 0; i < hn::Lanes(d); ++i) {
-      if (!(zs[i] > 0)) {
-        zs[i] = std::numeric_limits<double>::infinity();
-      } else {
-        zs[i] = ps[i] > 0 ? ndf->StdLambda(zs[i] / ps[i]) : 0.0;
-      }
-    }
-    return hn::Load(d, zs);
+    return BeckmannLambdaF64(d, SlopeArgument(ax, ay, x, y, z));
   }
-};
-
-#if BRDFBAKE_WITH_BECKMANN
-struct BeckmannLaneModel : PerLaneLambda<BeckmannNdf<double>> {
   template <class V>
   HWY_INLINE V Ratio(DF64 d, V r2) const {
     return BeckmannOverGgx(d, r2);
@@ -65,9 +55,26 @@ struct BeckmannLaneModel : PerLaneLambda<BeckmannNdf<double>> {
 #endif
 
 #if BRDFBAKE_WITH_STD
-struct StudentTLaneModel : PerLaneLambda<StdNdf<double>> {
-  hn::Vec<DF64> gamma, inv_gamma_minus_1;
+// The STD: D / D_ggx in lanes; Lambda (the series or continued fraction of
+// StdNdf::StdLambda, whose term count depends on the argument) per lane from
+// the double reference, except at gamma = inf (Beckmann).
+struct StudentTLaneModel {
+  const StdNdf<double>* ndf;
+  hn::Vec<DF64> ax, ay, gamma, inv_gamma_minus_1;
   bool beckmann;  // gamma = inf
+  template <class V>
+  HWY_INLINE V Lambda(DF64 d, V x, V y, V z) const {
+    const V a = SlopeArgument(ax, ay, x, y, z);
+    if (beckmann) return BeckmannLambdaF64(d, a);
+    HWY_ALIGN double lanes[HWY_MAX_BYTES / sizeof(double)];
+    hn::Store(a, d, lanes);
+    for (size_t i = 0; i < hn::Lanes(d); ++i) {
+      // Below the horizon (a <= 0 or NaN) +inf, as SlopeNdf::Lambda.
+      lanes[i] = lanes[i] > 0 ? ndf->StdLambda(lanes[i])
+                              : std::numeric_limits<double>::infinity();
+    }
+    return hn::Load(d, lanes);
+  }
   template <class V>
   HWY_INLINE V Ratio(DF64 d, V r2) const {
     return beckmann ? BeckmannOverGgx(d, r2) : StudentTOverGgx(d, r2, gamma, inv_gamma_minus_1);
@@ -81,11 +88,7 @@ auto LaneModel(DF64 d, const Ndf& ndf) {
     return GgxDiskModel<DF64>{hn::Set(d, ndf.alpha_x()), hn::Set(d, ndf.alpha_y())};
 #if BRDFBAKE_WITH_BECKMANN
   } else if constexpr (std::is_same_v<Ndf, BeckmannNdf<double>>) {
-    BeckmannLaneModel m;
-    m.ndf = &ndf;
-    m.ax = hn::Set(d, ndf.alpha_x());
-    m.ay = hn::Set(d, ndf.alpha_y());
-    return m;
+    return BeckmannLaneModel{hn::Set(d, ndf.alpha_x()), hn::Set(d, ndf.alpha_y())};
 #endif
 #if BRDFBAKE_WITH_STD
   } else {
