@@ -3,6 +3,8 @@
 
 #include "azimuthal.h"
 
+#include <cmath>
+
 #include <boost/math/quadrature/gauss.hpp>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
@@ -56,10 +58,39 @@ Piece KronrodPiece(const F& f, double a, double b) {
 
 }  // namespace
 
-AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
-                                   int max_pieces) {
+const RemainderRule& RemainderRule::Get() {
+  static const RemainderRule rule = [] {
+    constexpr double kPi = 3.141592653589793;
+    const KronrodRule& k = Kronrod15();
+    RemainderRule r{};
+    auto fill = [&](double a, double b, Piece* p) {
+      const double mid = 0.5 * (a + b);
+      p->half_width = 0.5 * (b - a);
+      for (int i = 0; i < 15; ++i) {
+        const double s = std::sin(0.5 * (mid + p->half_width * k.x[i]));
+        p->s2[i] = s * s;
+      }
+      p->s2[15] = 0.5;
+    };
+    fill(kPi / 2, kPi, &r.outer);
+    for (int j = 1; j <= kMaxLevel; ++j) {
+      const double dj = kPi / 2 * std::pow(3.0, -j), dj1 = kPi / 2 * std::pow(3.0, 1 - j);
+      fill(dj, dj1, &r.ring[j]);
+      fill(0, dj, &r.core[j]);
+    }
+    fill(0, kPi / 2, &r.core[0]);
+    for (int i = 0; i < 15; ++i) {
+      r.wk[i] = k.wk[i];
+      r.wg[i] = k.wg[i];
+    }
+    r.wk[15] = r.wg[15] = 0;
+    return r;
+  }();
+  return rule;
+}
+
+std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha) {
   constexpr double kHalfPi = 1.5707963267948966;
-  const GgxAzimuthalE f(alpha, mu, masking);
   const double theta_o = f.theta_o();
   // Breakpoints: the peak, graded from 2 alpha outwards (ratio 3), and the horizon,
   // graded from the nearer of its singularities (see the header).
@@ -73,6 +104,13 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
   }
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  return pts;
+}
+
+AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
+                                   int max_pieces) {
+  const GgxAzimuthalE f(alpha, mu, masking);
+  const std::vector<double> pts = AzimuthalMesh(f, alpha);
   std::vector<Piece> pieces;
   pieces.reserve(pts.size() + 64);
   double err = 0;
@@ -103,3 +141,4 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
 }
 
 }  // namespace brdfbake
+

@@ -48,6 +48,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "brdfbake/brdf.h"
@@ -72,6 +73,7 @@ class GgxAzimuthalE {
   GgxAzimuthalE(double alpha, double mu_o, Masking masking)
       : a2_(alpha * alpha), b_(1 - alpha * alpha), separable_(masking == Masking::kSeparable) {
     const double s_o = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
+    s_o_ = s_o;
     theta_o_ = std::atan2(s_o, mu_o);
     eps_o_ = std::atan2(mu_o, s_o);
     grazing_o_ = mu_o < s_o;
@@ -84,6 +86,33 @@ class GgxAzimuthalE {
   double lambda_o() const { return lambda_o_; }
 
   double operator()(double theta_i) const {
+    const Angles g = AnglesAt(theta_i);
+    const double x = a2_ * g.ct * g.ct + g.st * g.st;
+    const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
+    const double xy = x * y;
+    const double q = b_ * g.ca * g.ct / std::sqrt(xy);
+    const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
+    return scale_ * G2(g.mu_i, g.s_i) * phi * g.s_i;
+  }
+
+  // The integrands of E and of dfg.bias at theta_i, and the error estimate
+  // of the numerical part of the latter's azimuthal integral (azimuthal.cc,
+  // "The Schlick-weighted azimuthal integral").
+  struct DfgValues {
+    double e = 0, bias = 0, bias_error = 0;
+  };
+  // `nodes(rem, pieces, n, k, g)` integrates the remainder's integrand
+  // over the n pieces (ScalarRemainderNodes below).
+  template <class Nodes>
+  DfgValues EvalDfg(double theta_i, const Nodes& nodes) const;
+
+ private:
+  // sin and cos of A = (theta_i + theta_o) / 2 and T = (theta_i - theta_o) / 2,
+  // cos and sin of theta_i.
+  struct Angles {
+    double sa, ca, st, ct, mu_i, s_i;
+  };
+  Angles AnglesAt(double theta_i) const {
     // Near the horizon (theta_i, theta_o -> pi/2) cos(theta_i) and cos(A)
     // are small: they are taken from the complements eps = pi/2 - theta,
     // which carry their full relative accuracy there (eps_o from atan2, and
@@ -95,28 +124,25 @@ class GgxAzimuthalE {
     // so it is formed from the operands that are exact on its side:
     // theta_o rounded near pi/2 would shift it by 1e-16 absolute.
     const double ht = grazing_o_ ? 0.5 * (eps_o_ - eps_i) : 0.5 * (theta_i - theta_o_);
-    double sa, ca, st, ct, mu_i, s_i;
-    SinCosWithComplement(0.5 * (theta_i + theta_o_), 0.5 * (eps_i + eps_o_), &sa, &ca);
-    SinCosWithComplement(theta_i, eps_i, &s_i, &mu_i);
-    st = std::sin(ht);
-    ct = std::cos(ht);
-    mu_i = std::max(0.0, mu_i);
-    const double x = a2_ * ct * ct + st * st;
-    const double y = a2_ * ca * ca + sa * sa;
-    const double xy = x * y;
-    const double q = b_ * ca * ct / std::sqrt(xy);
-    const double phi = 2 * a2_ * (1 + q * (2 + b_ * (ca * ca * x + ct * ct * y) / (2 * xy)));
-    // Lambda(wi) = a2 s_i^2 / n with n = 2 mu_i (mu_i + sqrt(mu_i^2 + a2 s_i^2)),
-    // so G1(wi) = n / (n + a2 s_i^2): 0 on the horizon, no division by zero.
+    Angles g;
+    SinCosWithComplement(0.5 * (theta_i + theta_o_), 0.5 * (eps_i + eps_o_), &g.sa, &g.ca);
+    SinCosWithComplement(theta_i, eps_i, &g.s_i, &g.mu_i);
+    g.st = std::sin(ht);
+    g.ct = std::cos(ht);
+    g.mu_i = std::max(0.0, g.mu_i);
+    return g;
+  }
+  // G2 of the pair (theta_i, theta_o): Lambda(wi) = a2 s_i^2 / n with
+  // n = 2 mu_i (mu_i + sqrt(mu_i^2 + a2 s_i^2)), so G1(wi) = n / (n + a2 s_i^2):
+  // 0 on the horizon, no division by zero.
+  double G2(double mu_i, double s_i) const {
     const double a2s2 = a2_ * s_i * s_i;
     const double n = 2 * mu_i * (mu_i + std::sqrt(mu_i * mu_i + a2s2));
-    const double g2 = separable_ ? n / ((n + a2s2) * (1 + lambda_o_))
-                                 : n / (n * (1 + lambda_o_) + a2s2);
-    return scale_ * g2 * phi * s_i;
+    return separable_ ? n / ((n + a2s2) * (1 + lambda_o_)) : n / (n * (1 + lambda_o_) + a2s2);
   }
 
- private:
   double a2_, b_;
+  double s_o_ = 0;
   bool separable_;
   bool grazing_o_ = false;  // theta_o > pi/4
   static constexpr double kHalfPiHi = 1.5707963267948966;
@@ -140,6 +166,246 @@ struct AzimuthalResult {
 // (sum of the per-piece |K15 - G7|), with at most `max_pieces` pieces.
 AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                    int max_pieces);
+
+// The Schlick-weighted azimuthal integral. With v = |wi + wo|^2 = 2 + 2 wi.wo
+// and u = v + k (azimuthal.h: D = (alpha^2 / pi) v^2 / u^2, k = (alpha^2 - 1)
+// s^2 = -kappa), wo.h = sqrt(v) / 2, so over the azimuth both D and
+// Fc = (1 - wo.h)^5 are functions of v = kappa + u alone, and
+//   Psi = int_0^{2 pi} D Fc dphi = (alpha^2 / pi) int g(v) / u^2 dphi,
+//   g(v) = v^2 (1 - sqrt(v) / 2)^5 = q(v) - p(v),
+// q (the even powers of wo.h) = v^2 + (5/2) v^3 + (5/16) v^4, a polynomial,
+// p (the odd powers) = v^(5/2) (5/2 + (5/4) v + v^2 / 32).
+// u = C + B cos(phi) (B = 2 sin(theta_i) sin(theta_o)) has the moments
+//   I_-2 = 2 pi C / R^3, I_-1 = 2 pi / R, I_0 = 2 pi, I_1 = 2 pi C,
+//   I_2 = 2 pi (C^2 + B^2 / 2),  R^2 = C^2 - B^2,
+// with C - B = 4 cos^2 A X and C + B = 4 cos^2 T Y as for Phi, so
+//   Psi (pi / alpha^2) = g(kappa) I_-2 + g'(kappa) I_-1 + c2 I_0 + c3 I_1 + c4 I_2 - Rem,
+// where c2 = 1 + (15/2) kappa + (15/8) kappa^2, c3 = 5/2 + (5/4) kappa and
+// c4 = 5/16 are the Taylor coefficients of q at kappa (q is exact in them),
+// g(kappa) and g'(kappa) are formed directly (no cancellation of q and p near
+// wo.h = 1), and Rem = int (p(v) - p(kappa) - p'(kappa) u) / u^2 dphi is
+// the odd part with its Taylor terms at the pole u = 0 taken out. Its
+// integrand, the second divided difference p[kappa, kappa, v], is formed
+// without cancellation: with a = sqrt(kappa), b = sqrt(v) and
+// v - kappa = (b - a)(b + a), for each odd power b^n
+//   (b^n - a^n - (n/2) a^(n-2) (v - kappa)) / (v - kappa)^2 = S_n(a, b) / (a + b)^2,
+//   S_n = sum_{k=0}^{n-3} (k + 1) a^k b^(n-2-k) + (n/2 - 1) a^(n-2),
+// all terms positive (synthetic division of the numerator by (b - a)^2), so
+// the integrand is T(b) / (a + b)^2 with T = (5/2) S_5 + (5/4) S_7 + S_9 / 32,
+// a polynomial in b whose coefficients are set once per theta_i. It is smooth
+// in phi (the double pole of D near the specular azimuth is gone) except for
+// the branch point of b = sqrt(v) at v = 0, which lies at a distance ~2 cos A
+// from the specular azimuth (v >= 4 cos^2 A; both directions grazing). Rem is
+// integrated over psi = pi - phi in [0, pi] (twice, by symmetry) with
+// v = 4 cos^2 A + 2 B sin^2(psi/2), by Gauss-Kronrod 15 on pieces graded
+// geometrically (ratio 3) from psi = 2 cos A; its error estimate is the sum
+// of |K15 - G7|.
+// T(b) = (5/2) S_5 + (5/4) S_7 + S_9 / 32 (coefficients t[m] of b^m) for
+// a = sqrt(kappa), and the remainder's integrand T(b) / (a + b)^2 at psi,
+// b = sqrt(vmin + two_b sin^2(psi / 2)).
+struct OddRemainder {
+  double a, vmin, two_b;
+  double t[8];
+  OddRemainder(double a_, double vmin_, double two_b_) : a(a_), vmin(vmin_), two_b(two_b_) {
+    const double a2 = a * a, a3 = a2 * a, a4 = a2 * a2, a5 = a4 * a, a6 = a3 * a3, a7 = a6 * a;
+    t[7] = 1.0 / 32;
+    t[6] = 2 * a / 32;
+    t[5] = 1.25 + 3 * a2 / 32;
+    t[4] = 2.5 * a + 4 * a3 / 32;
+    t[3] = 2.5 + 3.75 * a2 + 5 * a4 / 32;
+    t[2] = 5 * a + 5 * a3 + 6 * a5 / 32;
+    t[1] = 7.5 * a2 + 6.25 * a4 + 7 * a6 / 32;
+    t[0] = 3.75 * a3 + 3.125 * a5 + 3.5 * a7 / 32;
+  }
+  // At s2 = sin^2(psi / 2).
+  double At(double s2) const {
+    const double b = std::sqrt(vmin + two_b * s2);
+    double acc = t[7];
+    for (int m = 6; m >= 0; --m) acc = acc * b + t[m];
+    const double ab = a + b;
+    return acc / (ab * ab);
+  }
+};
+
+// The pieces of the rule over psi in [0, pi], from one fixed ladder so that
+// sin^2(psi / 2) at their Kronrod nodes is tabulated once: [0, d_J],
+// [d_J, d_(J-1)], ..., [d_1, d_0], [pi/2, pi] with d_j = (pi / 2) 3^-j and
+// J the first j >= 0 with d_j <= 2 cos A (at most kMaxLevel), so the
+// innermost piece is within a factor 3 of 2 cos A. (With [0, pi] as one
+// piece where the integrand is smooth, G7 is only good to ~1e-9 of the
+// remainder and |K15 - G7| stops the theta_i rule short of tolerances
+// below 1e-9; halves bring it to ~1e-13.)
+struct RemainderRule {
+  static constexpr int kMaxLevel = 40;  // d_40 = 1.3e-19
+  struct Piece {
+    double half_width;
+    double s2[16];
+  };
+  Piece outer;                  // [pi/2, pi]
+  Piece ring[kMaxLevel + 1];    // j >= 1: [d_j, d_(j-1)]
+  Piece core[kMaxLevel + 1];    // [0, d_j]
+  // The Kronrod and Gauss weights of the 15 nodes, and a 16th node of weight
+  // 0 (s2 = 1/2) that pads each piece to whole vectors of 2, 4, 8 or 16.
+  double wk[16], wg[16];
+  static const RemainderRule& Get();
+};
+
+// The remainder's pieces node by node: the double scalar reference.
+// k[p] and g[p] are the Kronrod and Gauss sums of piece p (weights times
+// integrand, without the half width).
+struct ScalarRemainderNodes {
+  void operator()(const OddRemainder& rem, const RemainderRule::Piece* const* pieces, int n,
+                  double* k, double* g) const {
+    const RemainderRule& rule = RemainderRule::Get();
+    for (int p = 0; p < n; ++p) {
+      double ks = 0, gs = 0;
+      for (int i = 0; i < 15; ++i) {
+        const double v = rem.At(pieces[p]->s2[i]);
+        ks += rule.wk[i] * v;
+        gs += rule.wg[i] * v;
+      }
+      k[p] = ks;
+      g[p] = gs;
+    }
+  }
+};
+
+// The breakpoints of the theta_i rule for E and dfg (see the header).
+std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha);
+
+template <class Nodes>
+GgxAzimuthalE::DfgValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nodes) const {
+  const Angles g = AnglesAt(theta_i);
+  const double x = a2_ * g.ct * g.ct + g.st * g.st;
+  const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
+  const double xy = x * y;
+  const double q = b_ * g.ca * g.ct / std::sqrt(xy);
+  const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
+  const double w = scale_ * G2(g.mu_i, g.s_i) * g.s_i;
+  DfgValues out;
+  out.e = w * phi;
+  const double r = 4 * g.ca * g.ct * std::sqrt(xy);
+  if (!(r > 0) || !(w > 0)) return out;
+  const double cmb = 4 * g.ca * g.ca * x, cpb = 4 * g.ct * g.ct * y;
+  const double c = 0.5 * (cmb + cpb);
+  const double bb = 2 * g.s_i * s_o_;
+  constexpr double kTwoPi = 6.283185307179586;
+  const double i_m2 = kTwoPi * c / (r * r * r), i_m1 = kTwoPi / r;
+  const double i_1 = kTwoPi * c, i_2 = kTwoPi * (c * c + 0.5 * bb * bb);
+  // kappa = (1 - alpha^2) s^2 with s = mu_i + mu_o = 2 cos A cos T.
+  const double kappa = b_ * 4 * g.ca * g.ca * g.ct * g.ct;
+  const double sk = std::sqrt(kappa);
+  const double f = 1 - 0.5 * sk, f2 = f * f, f4 = f2 * f2;
+  const double g_k = kappa * kappa * f4 * f;
+  const double gp_k = kappa * f4 * (2 * f - 1.25 * sk);
+  const double c2 = 1 + kappa * (7.5 + kappa * 1.875), c3 = 2.5 + 1.25 * kappa;
+  const double closed = g_k * i_m2 + gp_k * i_m1 + c2 * kTwoPi + c3 * i_1 + 0.3125 * i_2;
+  // Rem over psi in [0, pi], on pieces graded from 2 cos A (ratio 3): the
+  // nodes of every piece, evaluated together, then each piece's K15 and G7.
+  const OddRemainder rem(sk, 4 * g.ca * g.ca, 2 * bb);
+  const RemainderRule& ladder = RemainderRule::Get();
+  const RemainderRule::Piece* used[RemainderRule::kMaxLevel + 3];
+  int pieces = 0;
+  constexpr double kPiD = 3.141592653589793;
+  int level = 0;
+  for (double d = kPiD / 2; d > 2 * g.ca && level < RemainderRule::kMaxLevel; d /= 3) ++level;
+  used[pieces++] = &ladder.core[level];
+  for (int j = level; j >= 1; --j) used[pieces++] = &ladder.ring[j];
+  used[pieces++] = &ladder.outer;
+  double k[RemainderRule::kMaxLevel + 3], gs[RemainderRule::kMaxLevel + 3];
+  nodes(rem, used, pieces, k, gs);
+  double rem_k = 0, rem_err = 0;
+  for (int p = 0; p < pieces; ++p) {
+    rem_k += k[p] * used[p]->half_width;
+    rem_err += std::abs(k[p] - gs[p]) * used[p]->half_width;
+  }
+  const double norm = a2_ / kPiD;
+  out.bias = w * norm * (closed - 2 * rem_k);
+  out.bias_error = w * norm * 2 * rem_err;
+  return out;
+}
+
+// E, dfg.bias and dfg.scale = E - bias of isotropic GGX by the same rule
+// over theta_i (one mesh for all three), each with its error estimate: the
+// sum of the per-piece |K15 - G7| of its integrand, plus (bias, scale) the
+// error estimates of the numerical part of the azimuthal integral carried
+// through the Kronrod weights. Pieces are bisected until all three are
+// within `tol`.
+struct AzimuthalDfgResult {
+  double e = 0, bias = 0, err_e = 0, err_bias = 0, err_scale = 0;
+  int pieces = 0;
+};
+template <class Nodes>
+AzimuthalDfgResult GgxAzimuthalDfgWith(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces, const Nodes& nodes) {
+  // One piece: the Kronrod values and |K15 - G7| of E, bias and scale, and
+  // the azimuthal error of bias carried through the Kronrod weights.
+  struct Piece {
+    double a, b, e, bias, err_e, err_bias, err_scale, err_azimuth;
+    double Worst() const { return std::max(err_e, std::max(err_bias, err_scale) + err_azimuth); }
+  };
+  const GgxAzimuthalE f(alpha, mu, masking);
+  const KronrodRule& r = Kronrod15();
+  auto kronrod = [&](double a, double b) {
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double ke = 0, ge = 0, kb = 0, gb = 0, az = 0;
+    for (int i = 0; i < 15; ++i) {
+      const GgxAzimuthalE::DfgValues v = f.EvalDfg(c + h * r.x[i], nodes);
+      ke += r.wk[i] * v.e;
+      ge += r.wg[i] * v.e;
+      kb += r.wk[i] * v.bias;
+      gb += r.wg[i] * v.bias;
+      az += r.wk[i] * v.bias_error;
+    }
+    return Piece{a, b, ke * h, kb * h, std::abs(ke - ge) * h, std::abs(kb - gb) * h,
+                 std::abs((ke - kb) - (ge - gb)) * h, az * h};
+  };
+  const std::vector<double> pts = AzimuthalMesh(f, alpha);
+  std::vector<Piece> pieces;
+  pieces.reserve(pts.size() + 64);
+  for (size_t i = 0; i + 1 < pts.size(); ++i) pieces.push_back(kronrod(pts[i], pts[i + 1]));
+  double err_e = 0, err_b = 0, err_s = 0;
+  auto totals = [&] {
+    err_e = err_b = err_s = 0;
+    for (const Piece& p : pieces) {
+      err_e += p.err_e;
+      err_b += p.err_bias + p.err_azimuth;
+      err_s += p.err_scale + p.err_azimuth;
+    }
+  };
+  totals();
+  // Bisect the worst piece until all three claims meet the tolerance.
+  while (std::max(err_e, std::max(err_b, err_s)) > tol &&
+         static_cast<int>(pieces.size()) < max_pieces) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].Worst() > pieces[worst].Worst()) worst = i;
+    }
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    if (!(m > p.a && m < p.b)) break;  // down to adjacent doubles
+    pieces[worst] = kronrod(p.a, m);
+    pieces.push_back(kronrod(m, p.b));
+    totals();
+  }
+  AzimuthalDfgResult out;
+  for (const Piece& p : pieces) {
+    out.e += p.e;
+    out.bias += p.bias;
+  }
+  // Plus the rounding of the sums (a few ulps of the values).
+  out.err_e = err_e + 4e-16 * std::abs(out.e);
+  out.err_bias = err_b + 4e-16 * std::abs(out.bias);
+  out.err_scale = err_s + 4e-16 * std::abs(out.e);
+  out.pieces = static_cast<int>(pieces.size());
+  return out;
+}
+
+// The double scalar reference.
+inline AzimuthalDfgResult GgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
+                                          int max_pieces) {
+  return GgxAzimuthalDfgWith(alpha, mu, masking, tol, max_pieces, ScalarRemainderNodes());
+}
 
 }  // namespace brdfbake
 

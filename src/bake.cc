@@ -167,6 +167,20 @@ template <class Ndf>
 TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int max_nodes,
                          double tol) {
   if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
+    if (spec.table == TableKind::kDfg && ndf.alpha_x() == ndf.alpha_y()) {
+      const double m = std::max(mu, kMuMin), a = ndf.alpha_x();
+      const AzimuthalDfgResult r =
+          spec.simd ? SimdGgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes)
+                    : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes);
+      TexelValue v;
+      v.e = r.e;
+      v.bias = r.bias;
+      v.scale = r.e - r.bias;
+      v.err_e = r.err_e;
+      v.err_bias = r.err_bias;
+      v.err_scale = r.err_scale;
+      return v;
+    }
     if (spec.table != TableKind::kDfg && ndf.alpha_x() == ndf.alpha_y()) {
       const AzimuthalResult r =
           GgxAzimuthalAlbedo(ndf.alpha_x(), std::max(mu, kMuMin), spec.masking, tol, max_nodes);
@@ -256,6 +270,20 @@ std::string IntegratorJson(const BakeSpec& spec) {
         j["rule"] = "Gauss-Kronrod 15 per piece, pieces bisected worst first until the "
                     "summed error estimate meets the tolerance";
         j["error_estimate"] = "sum over the pieces of |K15 - G7|";
+        break;
+      }
+      if (spec.model.name == "ggx") {
+        j["max_pieces"] = n;
+        j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
+                      "specular peak and the horizon; the azimuth of wi integrated in closed "
+                      "form for E and for the even powers of wo.h in the Schlick weight, the "
+                      "odd powers less their Taylor terms at the pole of D by Gauss-Kronrod 15 "
+                      "over the azimuth on pieces graded from the branch point of wo.h "
+                      "(isotropic GGX)";
+        j["rule"] = "Gauss-Kronrod 15 per piece in theta_i, pieces bisected worst first until "
+                    "the error estimates of E, dfg.scale and dfg.bias meet the tolerance";
+        j["error_estimate"] = "sum over the pieces of |K15 - G7|, plus that of the azimuthal "
+                              "rule carried through the Kronrod weights";
         break;
       }
       j["max_nodes_per_dimension"] = n;

@@ -196,6 +196,41 @@ class SimdDiskLines {
   Scalar scalar_;
 };
 
+// The remainder of the Schlick-weighted azimuthal integral (azimuthal.h,
+// ScalarRemainderNodes) with each piece's 16 nodes (15 and one of weight 0)
+// in lanes.
+struct SimdRemainderNodes {
+  void operator()(const OddRemainder& rem, const RemainderRule::Piece* const* pieces, int n,
+                  double* k, double* g) const {
+    using V = hn::Vec<DF64>;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const RemainderRule& rule = RemainderRule::Get();
+    V t[8];
+    for (int m = 0; m < 8; ++m) t[m] = hn::Set(d, rem.t[m]);
+    const V a = hn::Set(d, rem.a), vmin = hn::Set(d, rem.vmin), two_b = hn::Set(d, rem.two_b);
+    for (int p = 0; p < n; ++p) {
+      V ks = hn::Zero(d), gs = hn::Zero(d);
+      for (size_t i = 0; i < 16; i += N) {
+        const V b = hn::Sqrt(hn::MulAdd(two_b, hn::LoadU(d, pieces[p]->s2 + i), vmin));
+        V acc = t[7];
+        for (int m = 6; m >= 0; --m) acc = hn::MulAdd(acc, b, t[m]);
+        const V ab = hn::Add(a, b);
+        const V f = hn::Div(acc, hn::Mul(ab, ab));
+        ks = hn::MulAdd(hn::LoadU(d, rule.wk + i), f, ks);
+        gs = hn::MulAdd(hn::LoadU(d, rule.wg + i), f, gs);
+      }
+      k[p] = hn::GetLane(hn::SumOfLanes(d, ks));
+      g[p] = hn::GetLane(hn::SumOfLanes(d, gs));
+    }
+  }
+};
+
+AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double tol,
+                               int max_pieces) {
+  return GgxAzimuthalDfgWith(alpha, mu, masking, tol, max_pieces, SimdRemainderNodes());
+}
+
 TexelValue GgxTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int max_nodes,
                     double tol) {
   return QuadratureTexelWith<SimdDiskLines<GgxNdf<double>>>(ndf, mu, masking, max_nodes, tol);
@@ -220,6 +255,12 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace brdfbake {
+
+HWY_EXPORT(GgxDfgTexel);
+AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces) {
+  return HWY_DYNAMIC_DISPATCH(GgxDfgTexel)(alpha, mu, masking, tol, max_pieces);
+}
 
 HWY_EXPORT(GgxTexel);
 TexelValue SimdQuadratureTexel(const GgxNdf<double>& ndf, double mu, Masking masking,

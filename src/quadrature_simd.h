@@ -15,9 +15,14 @@
 #include "brdfbake/brdf.h"
 #include "brdfbake/ggx.h"
 #include "brdfbake/std_ndf.h"
+#include "azimuthal.h"
 #include "integrate.h"
 
 namespace brdfbake {
+
+// GgxAzimuthalDfg with the azimuthal remainder's nodes in lanes.
+AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces);
 
 TexelValue SimdQuadratureTexel(const GgxNdf<double>& ndf, double mu, Masking masking,
                                int max_nodes, double tol);
