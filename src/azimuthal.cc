@@ -58,11 +58,15 @@ Piece KronrodPiece(const F& f, double a, double b) {
 
 }  // namespace
 
-const RemainderRule& RemainderRule::Get() {
-  static const RemainderRule rule = [] {
+const AzimuthLadder& AzimuthLadder::Get(int ratio) {
+  auto make = [](int ratio, int levels) {
     constexpr double kPi = 3.141592653589793;
     const KronrodRule& k = Kronrod15();
-    RemainderRule r{};
+    AzimuthLadder r;
+    r.ratio = ratio;
+    r.levels = levels;
+    r.ring.resize(levels + 1);
+    r.core.resize(levels + 1);
     auto fill = [&](double a, double b, Piece* p) {
       const double mid = 0.5 * (a + b);
       p->half_width = 0.5 * (b - a);
@@ -73,25 +77,26 @@ const RemainderRule& RemainderRule::Get() {
       p->s2[15] = 0.5;
     };
     fill(kPi / 2, kPi, &r.outer);
-    for (int j = 1; j <= kMaxLevel; ++j) {
-      const double dj = kPi / 2 * std::pow(3.0, -j), dj1 = kPi / 2 * std::pow(3.0, 1 - j);
+    fill(0, kPi / 2, &r.core[0]);
+    for (int j = 1; j <= levels; ++j) {
+      const double dj = kPi / 2 * std::pow(double(ratio), -j);
+      const double dj1 = kPi / 2 * std::pow(double(ratio), 1 - j);
       fill(dj, dj1, &r.ring[j]);
       fill(0, dj, &r.core[j]);
     }
-    fill(0, kPi / 2, &r.core[0]);
     for (int i = 0; i < 15; ++i) {
       r.wk[i] = k.wk[i];
       r.wg[i] = k.wg[i];
     }
     r.wk[15] = r.wg[15] = 0;
     return r;
-  }();
-  return rule;
+  };
+  static const AzimuthLadder three = make(3, 40), two = make(2, 62);
+  return ratio == 2 ? two : three;
 }
 
-std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha) {
+std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha) {
   constexpr double kHalfPi = 1.5707963267948966;
-  const double theta_o = f.theta_o();
   // Breakpoints: the peak, graded from 2 alpha outwards (ratio 3), and the horizon,
   // graded from the nearer of its singularities (see the header).
   std::vector<double> pts = {0.0, theta_o, kHalfPi};
@@ -99,7 +104,7 @@ std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha) {
     if (theta_o - h > 0) pts.push_back(theta_o - h);
     if (theta_o + h < kHalfPi) pts.push_back(theta_o + h);
   }
-  for (double e = alpha / (2 * (1 + f.lambda_o())); e < kHalfPi; e *= 3) {
+  for (double e = alpha / (2 * (1 + lambda_o)); e < kHalfPi; e *= 3) {
     pts.push_back(kHalfPi - e);
   }
   std::sort(pts.begin(), pts.end());
@@ -110,7 +115,7 @@ std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha) {
 AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                    int max_pieces) {
   const GgxAzimuthalE f(alpha, mu, masking);
-  const std::vector<double> pts = AzimuthalMesh(f, alpha);
+  const std::vector<double> pts = AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha);
   std::vector<Piece> pieces;
   pieces.reserve(pts.size() + 64);
   double err = 0;

@@ -67,48 +67,29 @@ inline void SinCosWithComplement(double t, double c, double* sin_t, double* cos_
   }
 }
 
-// The integrand G2 Phi sin(theta_i) / (4 mu_o) of E(mu_o) over theta_i.
-class GgxAzimuthalE {
+// The values at theta_i of the integrands of E and of dfg.bias over
+// theta_i, and the error estimates of the numerical azimuthal integrals
+// inside them (0 where the azimuth is integrated in closed form).
+struct AzimuthalValues {
+  double e = 0, bias = 0, e_error = 0, bias_error = 0;
+};
+
+// The view wo = (sin theta_o, 0, mu_o) and the half angles
+// A = (theta_i + theta_o) / 2, T = (theta_i - theta_o) / 2 of a light at
+// theta_i, shared by the one-dimensional rules of every isotropic model.
+class AzimuthalFrame {
  public:
-  GgxAzimuthalE(double alpha, double mu_o, Masking masking)
-      : a2_(alpha * alpha), b_(1 - alpha * alpha), separable_(masking == Masking::kSeparable) {
-    const double s_o = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
-    s_o_ = s_o;
-    theta_o_ = std::atan2(s_o, mu_o);
-    eps_o_ = std::atan2(mu_o, s_o);
-    grazing_o_ = mu_o < s_o;
-    // Lambda(wo) = alpha^2 s^2 / (2 mu (mu + sqrt(mu^2 + alpha^2 s^2))).
-    lambda_o_ = a2_ * s_o * s_o / (2 * mu_o * (mu_o + std::sqrt(mu_o * mu_o + a2_ * s_o * s_o)));
+  explicit AzimuthalFrame(double mu_o) {
+    s_o_ = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
+    theta_o_ = std::atan2(s_o_, mu_o);
+    eps_o_ = std::atan2(mu_o, s_o_);
+    grazing_o_ = mu_o < s_o_;
     scale_ = 1 / (4 * mu_o);
   }
-
   double theta_o() const { return theta_o_; }
-  double lambda_o() const { return lambda_o_; }
 
-  double operator()(double theta_i) const {
-    const Angles g = AnglesAt(theta_i);
-    const double x = a2_ * g.ct * g.ct + g.st * g.st;
-    const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
-    const double xy = x * y;
-    const double q = b_ * g.ca * g.ct / std::sqrt(xy);
-    const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
-    return scale_ * G2(g.mu_i, g.s_i) * phi * g.s_i;
-  }
-
-  // The integrands of E and of dfg.bias at theta_i, and the error estimate
-  // of the numerical part of the latter's azimuthal integral (azimuthal.cc,
-  // "The Schlick-weighted azimuthal integral").
-  struct DfgValues {
-    double e = 0, bias = 0, bias_error = 0;
-  };
-  // `nodes(rem, pieces, n, k, g)` integrates the remainder's integrand
-  // over the n pieces (ScalarRemainderNodes below).
-  template <class Nodes>
-  DfgValues EvalDfg(double theta_i, const Nodes& nodes) const;
-
- private:
-  // sin and cos of A = (theta_i + theta_o) / 2 and T = (theta_i - theta_o) / 2,
-  // cos and sin of theta_i.
+ protected:
+  // sin and cos of A and T, cos and sin of theta_i.
   struct Angles {
     double sa, ca, st, ct, mu_i, s_i;
   };
@@ -132,6 +113,47 @@ class GgxAzimuthalE {
     g.mu_i = std::max(0.0, g.mu_i);
     return g;
   }
+
+  double s_o_ = 0, scale_ = 0.25;  // scale: 1 / (4 mu_o)
+
+ private:
+  static constexpr double kHalfPiHi = 1.5707963267948966;
+  static constexpr double kHalfPiLo = 6.123233995736766e-17;  // pi/2 - kHalfPiHi
+  bool grazing_o_ = false;  // theta_o > pi/4
+  double theta_o_ = 0, eps_o_ = 1.5707963267948966;
+};
+
+// The integrand G2 Phi sin(theta_i) / (4 mu_o) of E(mu_o) over theta_i.
+class GgxAzimuthalE : public AzimuthalFrame {
+ public:
+  GgxAzimuthalE(double alpha, double mu_o, Masking masking)
+      : AzimuthalFrame(mu_o), a2_(alpha * alpha), b_(1 - alpha * alpha),
+        separable_(masking == Masking::kSeparable) {
+    // Lambda(wo) = alpha^2 s^2 / (2 mu (mu + sqrt(mu^2 + alpha^2 s^2))).
+    lambda_o_ = a2_ * s_o_ * s_o_ / (2 * mu_o * (mu_o + std::sqrt(mu_o * mu_o + a2_ * s_o_ * s_o_)));
+  }
+
+  double lambda_o() const { return lambda_o_; }
+
+  double operator()(double theta_i) const {
+    const Angles g = AnglesAt(theta_i);
+    const double x = a2_ * g.ct * g.ct + g.st * g.st;
+    const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
+    const double xy = x * y;
+    const double q = b_ * g.ca * g.ct / std::sqrt(xy);
+    const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
+    return scale_ * G2(g.mu_i, g.s_i) * phi * g.s_i;
+  }
+
+  // The integrands of E and of dfg.bias at theta_i, and the error estimate
+  // of the numerical part of the latter's azimuthal integral ("The
+  // Schlick-weighted azimuthal integral" below). `nodes(rem, pieces, n, k,
+  // g)` integrates the remainder's integrand over the n pieces
+  // (ScalarRemainderNodes below).
+  template <class Nodes>
+  AzimuthalValues EvalDfg(double theta_i, const Nodes& nodes) const;
+
+ private:
   // G2 of the pair (theta_i, theta_o): Lambda(wi) = a2 s_i^2 / n with
   // n = 2 mu_i (mu_i + sqrt(mu_i^2 + a2 s_i^2)), so G1(wi) = n / (n + a2 s_i^2):
   // 0 on the horizon, no division by zero.
@@ -142,12 +164,8 @@ class GgxAzimuthalE {
   }
 
   double a2_, b_;
-  double s_o_ = 0;
   bool separable_;
-  bool grazing_o_ = false;  // theta_o > pi/4
-  static constexpr double kHalfPiHi = 1.5707963267948966;
-  static constexpr double kHalfPiLo = 6.123233995736766e-17;  // pi/2 - kHalfPiHi
-  double theta_o_ = 0, eps_o_ = 1.5707963267948966, lambda_o_ = 0, scale_ = 0.25;
+  double lambda_o_ = 0;
 };
 
 // The 15-point Kronrod rule on [-1, 1] with its embedded 7-point Gauss rule
@@ -227,36 +245,53 @@ struct OddRemainder {
   }
 };
 
-// The pieces of the rule over psi in [0, pi], from one fixed ladder so that
-// sin^2(psi / 2) at their Kronrod nodes is tabulated once: [0, d_J],
-// [d_J, d_(J-1)], ..., [d_1, d_0], [pi/2, pi] with d_j = (pi / 2) 3^-j and
-// J the first j >= 0 with d_j <= 2 cos A (at most kMaxLevel), so the
-// innermost piece is within a factor 3 of 2 cos A. (With [0, pi] as one
-// piece where the integrand is smooth, G7 is only good to ~1e-9 of the
-// remainder and |K15 - G7| stops the theta_i rule short of tolerances
-// below 1e-9; halves bring it to ~1e-13.)
-struct RemainderRule {
-  static constexpr int kMaxLevel = 40;  // d_40 = 1.3e-19
+// The pieces of a rule over psi in [0, pi] (an azimuth measured from the
+// specular plane) graded geometrically towards psi = 0, from one fixed
+// ladder so that sin^2(psi / 2) at their Kronrod nodes is tabulated once:
+// [0, d_J], [d_J, d_(J-1)], ..., [d_1, d_0], [pi/2, pi] with
+// d_j = (pi / 2) ratio^-j and J the first j >= 0 with d_j <= `start`, so
+// the innermost piece is within a factor `ratio` of the scale of the
+// feature at psi = 0. (With [0, pi] as one piece where the integrand is
+// smooth, G7 is only good to ~1e-9 and |K15 - G7| would stop the theta_i
+// rule short of tolerances below that; halves bring it to ~1e-13.)
+// Ratio 3 serves GGX's remainder (algebraic near psi = 0); ratio 2 the
+// Gaussian lobe of Beckmann, where on [x, 3x] G7 is good to only 3e-7 of the
+// integral (1e-9 on [x, 2x]; K15 to 1e-13 and 1e-16).
+struct AzimuthLadder {
   struct Piece {
     double half_width;
-    double s2[16];
+    double s2[16];  // sin^2(psi / 2) at the nodes; the 16th pads (weight 0)
   };
-  Piece outer;                  // [pi/2, pi]
-  Piece ring[kMaxLevel + 1];    // j >= 1: [d_j, d_(j-1)]
-  Piece core[kMaxLevel + 1];    // [0, d_j]
-  // The Kronrod and Gauss weights of the 15 nodes, and a 16th node of weight
-  // 0 (s2 = 1/2) that pads each piece to whole vectors of 2, 4, 8 or 16.
+  int ratio = 3, levels = 0;
+  Piece outer;              // [pi/2, pi]
+  std::vector<Piece> ring;  // ring[j], j >= 1: [d_j, d_(j-1)]
+  std::vector<Piece> core;  // core[j]: [0, d_j]
+  // The Kronrod and Gauss weights of the 15 nodes and a 16th of weight 0,
+  // which pads each piece to whole vectors of 2, 4, 8 or 16.
   double wk[16], wg[16];
-  static const RemainderRule& Get();
+
+  static constexpr int kMaxPieces = 66;
+  // Ratio 3 (40 levels, d_40 = 1.3e-19) or 2 (62 levels, d_62 = 3.4e-19).
+  static const AzimuthLadder& Get(int ratio);
+  // The pieces for a feature of scale `start` at psi = 0; returns their count.
+  int Select(double start, const Piece** used) const {
+    int level = 0;
+    for (double d = 1.5707963267948966; d > start && level < levels; d /= ratio) ++level;
+    int n = 0;
+    used[n++] = &core[level];
+    for (int j = level; j >= 1; --j) used[n++] = &ring[j];
+    used[n++] = &outer;
+    return n;
+  }
 };
 
 // The remainder's pieces node by node: the double scalar reference.
 // k[p] and g[p] are the Kronrod and Gauss sums of piece p (weights times
 // integrand, without the half width).
 struct ScalarRemainderNodes {
-  void operator()(const OddRemainder& rem, const RemainderRule::Piece* const* pieces, int n,
+  void operator()(const OddRemainder& rem, const AzimuthLadder::Piece* const* pieces, int n,
                   double* k, double* g) const {
-    const RemainderRule& rule = RemainderRule::Get();
+    const AzimuthLadder& rule = AzimuthLadder::Get(3);
     for (int p = 0; p < n; ++p) {
       double ks = 0, gs = 0;
       for (int i = 0; i < 15; ++i) {
@@ -270,11 +305,12 @@ struct ScalarRemainderNodes {
   }
 };
 
-// The breakpoints of the theta_i rule for E and dfg (see the header).
-std::vector<double> AzimuthalMesh(const GgxAzimuthalE& f, double alpha);
+// The breakpoints of the theta_i rule (see the header): the specular peak
+// at theta_o graded from 2 alpha, the horizon from alpha / (2 (1 + Lambda(wo))).
+std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha);
 
 template <class Nodes>
-GgxAzimuthalE::DfgValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nodes) const {
+AzimuthalValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nodes) const {
   const Angles g = AnglesAt(theta_i);
   const double x = a2_ * g.ct * g.ct + g.st * g.st;
   const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
@@ -282,7 +318,7 @@ GgxAzimuthalE::DfgValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nod
   const double q = b_ * g.ca * g.ct / std::sqrt(xy);
   const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
   const double w = scale_ * G2(g.mu_i, g.s_i) * g.s_i;
-  DfgValues out;
+  AzimuthalValues out;
   out.e = w * phi;
   const double r = 4 * g.ca * g.ct * std::sqrt(xy);
   if (!(r > 0) || !(w > 0)) return out;
@@ -303,23 +339,16 @@ GgxAzimuthalE::DfgValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nod
   // Rem over psi in [0, pi], on pieces graded from 2 cos A (ratio 3): the
   // nodes of every piece, evaluated together, then each piece's K15 and G7.
   const OddRemainder rem(sk, 4 * g.ca * g.ca, 2 * bb);
-  const RemainderRule& ladder = RemainderRule::Get();
-  const RemainderRule::Piece* used[RemainderRule::kMaxLevel + 3];
-  int pieces = 0;
-  constexpr double kPiD = 3.141592653589793;
-  int level = 0;
-  for (double d = kPiD / 2; d > 2 * g.ca && level < RemainderRule::kMaxLevel; d /= 3) ++level;
-  used[pieces++] = &ladder.core[level];
-  for (int j = level; j >= 1; --j) used[pieces++] = &ladder.ring[j];
-  used[pieces++] = &ladder.outer;
-  double k[RemainderRule::kMaxLevel + 3], gs[RemainderRule::kMaxLevel + 3];
+  const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+  const int pieces = AzimuthLadder::Get(3).Select(2 * g.ca, used);
+  double k[AzimuthLadder::kMaxPieces], gs[AzimuthLadder::kMaxPieces];
   nodes(rem, used, pieces, k, gs);
   double rem_k = 0, rem_err = 0;
   for (int p = 0; p < pieces; ++p) {
     rem_k += k[p] * used[p]->half_width;
     rem_err += std::abs(k[p] - gs[p]) * used[p]->half_width;
   }
-  const double norm = a2_ / kPiD;
+  const double norm = a2_ / 3.141592653589793;
   out.bias = w * norm * (closed - 2 * rem_k);
   out.bias_error = w * norm * 2 * rem_err;
   return out;
@@ -335,46 +364,49 @@ struct AzimuthalDfgResult {
   double e = 0, bias = 0, err_e = 0, err_bias = 0, err_scale = 0;
   int pieces = 0;
 };
-template <class Nodes>
-AzimuthalDfgResult GgxAzimuthalDfgWith(double alpha, double mu, Masking masking, double tol,
-                                       int max_pieces, const Nodes& nodes) {
-  // One piece: the Kronrod values and |K15 - G7| of E, bias and scale, and
-  // the azimuthal error of bias carried through the Kronrod weights.
+// The adaptive rule over theta_i for E, bias and scale = E - bias:
+// Gauss-Kronrod 15 on the pieces of `mesh`, the worst piece bisected until
+// the claims of all three meet `tol` (or `max_pieces`). `eval(theta_i)`
+// gives the AzimuthalValues; its azimuthal error estimates are carried
+// through the Kronrod weights into the claims.
+template <class Eval>
+AzimuthalDfgResult AdaptiveAzimuthalRule(const std::vector<double>& mesh, const Eval& eval,
+                                         double tol, int max_pieces) {
   struct Piece {
-    double a, b, e, bias, err_e, err_bias, err_scale, err_azimuth;
-    double Worst() const { return std::max(err_e, std::max(err_bias, err_scale) + err_azimuth); }
+    double a, b, e, bias, err_e, err_bias, err_scale, az_e, az_bias;
+    double Worst() const {
+      return std::max(err_e + az_e, std::max(err_bias, err_scale) + az_bias + az_e);
+    }
   };
-  const GgxAzimuthalE f(alpha, mu, masking);
   const KronrodRule& r = Kronrod15();
   auto kronrod = [&](double a, double b) {
     const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double ke = 0, ge = 0, kb = 0, gb = 0, az = 0;
+    double ke = 0, ge = 0, kb = 0, gb = 0, aze = 0, azb = 0;
     for (int i = 0; i < 15; ++i) {
-      const GgxAzimuthalE::DfgValues v = f.EvalDfg(c + h * r.x[i], nodes);
+      const AzimuthalValues v = eval(c + h * r.x[i]);
       ke += r.wk[i] * v.e;
       ge += r.wg[i] * v.e;
       kb += r.wk[i] * v.bias;
       gb += r.wg[i] * v.bias;
-      az += r.wk[i] * v.bias_error;
+      aze += r.wk[i] * v.e_error;
+      azb += r.wk[i] * v.bias_error;
     }
-    return Piece{a, b, ke * h, kb * h, std::abs(ke - ge) * h, std::abs(kb - gb) * h,
-                 std::abs((ke - kb) - (ge - gb)) * h, az * h};
+    return Piece{a,  b,  ke * h, kb * h, std::abs(ke - ge) * h, std::abs(kb - gb) * h,
+                 std::abs((ke - kb) - (ge - gb)) * h, aze * h, azb * h};
   };
-  const std::vector<double> pts = AzimuthalMesh(f, alpha);
   std::vector<Piece> pieces;
-  pieces.reserve(pts.size() + 64);
-  for (size_t i = 0; i + 1 < pts.size(); ++i) pieces.push_back(kronrod(pts[i], pts[i + 1]));
+  pieces.reserve(mesh.size() + 64);
+  for (size_t i = 0; i + 1 < mesh.size(); ++i) pieces.push_back(kronrod(mesh[i], mesh[i + 1]));
   double err_e = 0, err_b = 0, err_s = 0;
   auto totals = [&] {
     err_e = err_b = err_s = 0;
     for (const Piece& p : pieces) {
-      err_e += p.err_e;
-      err_b += p.err_bias + p.err_azimuth;
-      err_s += p.err_scale + p.err_azimuth;
+      err_e += p.err_e + p.az_e;
+      err_b += p.err_bias + p.az_bias;
+      err_s += p.err_scale + p.az_bias + p.az_e;
     }
   };
   totals();
-  // Bisect the worst piece until all three claims meet the tolerance.
   while (std::max(err_e, std::max(err_b, err_s)) > tol &&
          static_cast<int>(pieces.size()) < max_pieces) {
     size_t worst = 0;
@@ -399,6 +431,14 @@ AzimuthalDfgResult GgxAzimuthalDfgWith(double alpha, double mu, Masking masking,
   out.err_scale = err_s + 4e-16 * std::abs(out.e);
   out.pieces = static_cast<int>(pieces.size());
   return out;
+}
+
+template <class Nodes>
+AzimuthalDfgResult GgxAzimuthalDfgWith(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces, const Nodes& nodes) {
+  const GgxAzimuthalE f(alpha, mu, masking);
+  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha),
+                               [&](double t) { return f.EvalDfg(t, nodes); }, tol, max_pieces);
 }
 
 // The double scalar reference.

@@ -159,39 +159,41 @@ void ValidateBakeSpec(const BakeSpec& spec) {
 
 namespace {
 
-// The deterministic quadrature. Tables that need E only (E, E_avg) of the
-// isotropic GGX use the one-dimensional rule with the azimuth integrated in
-// closed form (azimuthal.h); dfg and the other models the two-dimensional
-// rule over the visible-normal disk. Only E is filled in the first case.
+// The deterministic quadrature: the one-dimensional rules over theta_i of
+// azimuthal.h (GGX: E with the azimuth in closed form; dfg with the
+// Schlick-weighted azimuth) and azimuthal_slope.h (Beckmann, STD: the
+// azimuth numerically). Only E is filled for E and E_avg tables. `spec.simd`
+// picks the rules with their azimuthal nodes in double SIMD lanes.
 template <class Ndf>
 TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int max_nodes,
                          double tol) {
+  const double m = std::max(mu, kMuMin);
+  auto texel = [](const AzimuthalDfgResult& r) {
+    TexelValue v;
+    v.e = r.e;
+    v.bias = r.bias;
+    v.scale = r.e - r.bias;
+    v.err_e = r.err_e;
+    v.err_bias = r.err_bias;
+    v.err_scale = r.err_scale;
+    return v;
+  };
   if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
-    if (spec.table == TableKind::kDfg && ndf.alpha_x() == ndf.alpha_y()) {
-      const double m = std::max(mu, kMuMin), a = ndf.alpha_x();
-      const AzimuthalDfgResult r =
-          spec.simd ? SimdGgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes)
-                    : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes);
-      TexelValue v;
-      v.e = r.e;
-      v.bias = r.bias;
-      v.scale = r.e - r.bias;
-      v.err_e = r.err_e;
-      v.err_bias = r.err_bias;
-      v.err_scale = r.err_scale;
-      return v;
+    const double a = ndf.alpha_x();
+    if (spec.table == TableKind::kDfg) {
+      return texel(spec.simd ? SimdGgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes)
+                             : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes));
     }
-    if (spec.table != TableKind::kDfg && ndf.alpha_x() == ndf.alpha_y()) {
-      const AzimuthalResult r =
-          GgxAzimuthalAlbedo(ndf.alpha_x(), std::max(mu, kMuMin), spec.masking, tol, max_nodes);
-      TexelValue v;
-      v.e = r.value;
-      v.err_e = r.error;
-      return v;
-    }
+    const AzimuthalResult r = GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes);
+    TexelValue v;
+    v.e = r.value;
+    v.err_e = r.error;
+    return v;
+  } else {
+    const bool bias = spec.table == TableKind::kDfg;
+    return texel(spec.simd ? SimdSlopeAzimuthalDfg(ndf, m, spec.masking, bias, tol, max_nodes)
+                           : SlopeAzimuthalDfg(ndf, m, spec.masking, bias, tol, max_nodes));
   }
-  if (!spec.simd) return QuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
-  return SimdQuadratureTexel(ndf, mu, spec.masking, max_nodes, tol);
 }
 
 template <class Ndf>
@@ -286,15 +288,15 @@ std::string IntegratorJson(const BakeSpec& spec) {
                               "rule carried through the Kronrod weights";
         break;
       }
-      j["max_nodes_per_dimension"] = n;
-      j["domain"] = "unit square of the GGX visible-normal sampler with the model's alpha "
-                    "(weight D G2 (wo.m) / (wo.z pdf_ggx(m)) for beckmann and std), split where "
-                    "wi crosses the horizon; std with gamma < 2: inner mesh graded towards the "
-                    "disk rim, azimuth mapped by Sidi's sin^4 transformation";
-      j["rule"] = "Gauss-Legendre (trapezoidal in a periodic azimuth), node ladder 12, 24, 48, ... (doubling) up to the max until two successive rules agree to the tolerance";
-      j["error_estimate"] = "difference between the last two rules of the ladder (plus the "
-                            "difference before it when the node cap stops the ladder short of "
-                            "the tolerance)";
+      j["max_pieces"] = n;
+      j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
+                    "specular peak and the horizon; Lambda(wi) once per theta_i; the azimuth "
+                    "of D (and of D Fc for dfg) by Gauss-Kronrod 15 on pieces graded "
+                    "geometrically (ratio 2) from the lobe's half width";
+      j["rule"] = "Gauss-Kronrod 15 per piece in theta_i, pieces bisected worst first until "
+                  "the error estimates meet the tolerance";
+      j["error_estimate"] = "sum over the pieces of |K15 - G7|, plus that of the azimuthal "
+                            "rule carried through the Kronrod weights";
       break;
     case IntegratorKind::kQmc:
       j["samples"] = 8 * std::max(1, n / 8);

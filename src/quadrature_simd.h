@@ -1,12 +1,11 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The baker's two-dimensional quadrature (integrate.h, QuadratureTexel) with
-// its integrand evaluated in double-precision SIMD lanes: the same nodes,
-// horizon splits, ladder and error estimate as the scalar reference, the
-// quadrature nodes of each piece and the horizon probes of each line
-// several per vector. Dispatched once per texel to the best Highway target
-// (or the one ForceTarget chose).
+// The baker's one-dimensional rules (azimuthal.h for GGX, azimuthal_slope.h
+// for Beckmann and STD) with the nodes of their numerical azimuthal
+// integrals in double SIMD lanes, dispatched once per texel to the best
+// Highway target (or the one ForceTarget chose). The same pieces and nodes
+// as the scalar references GgxAzimuthalDfg and SlopeAzimuthalDfg.
 
 #ifndef BRDFBAKE_SRC_QUADRATURE_SIMD_H_
 #define BRDFBAKE_SRC_QUADRATURE_SIMD_H_
@@ -16,7 +15,7 @@
 #include "brdfbake/ggx.h"
 #include "brdfbake/std_ndf.h"
 #include "azimuthal.h"
-#include "integrate.h"
+#include "azimuthal_slope.h"
 
 namespace brdfbake {
 
@@ -24,15 +23,15 @@ namespace brdfbake {
 AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces);
 
-TexelValue SimdQuadratureTexel(const GgxNdf<double>& ndf, double mu, Masking masking,
-                               int max_nodes, double tol);
+// SlopeAzimuthalDfg with the azimuthal integrals' nodes in lanes.
 #if BRDFBAKE_WITH_BECKMANN
-TexelValue SimdQuadratureTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
-                               int max_nodes, double tol);
+AzimuthalDfgResult SimdSlopeAzimuthalDfg(const BeckmannNdf<double>& ndf, double mu,
+                                         Masking masking, bool with_bias, double tol,
+                                         int max_pieces);
 #endif
 #if BRDFBAKE_WITH_STD
-TexelValue SimdQuadratureTexel(const StdNdf<double>& ndf, double mu, Masking masking,
-                               int max_nodes, double tol);
+AzimuthalDfgResult SimdSlopeAzimuthalDfg(const StdNdf<double>& ndf, double mu, Masking masking,
+                                         bool with_bias, double tol, int max_pieces);
 #endif
 
 }  // namespace brdfbake

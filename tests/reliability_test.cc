@@ -356,12 +356,12 @@ TEST(CliReliabilityTest, ProgressShowsTheRemainingTime) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1)";
   const std::string dir = ScratchDir("progress");
   // A bake of a few seconds (progress shows after one) under a pseudo-terminal
-  // (script(1)): the scalar reference of the quadrature, whose speed does not
-  // move with the SIMD core's.
+  // (script(1)): 4 million QMC samples for each of 16 texels, whose cost does
+  // not move with the quadrature's.
   const ToolRun r = ExecuteShell(
       "script -qec " +
-          Quote("\"$BRDFBAKE\" bake --table dfg --model std --gamma 1.6 --size 9x9 --threads 1 "
-                "--target scalar -o " +
+          Quote("\"$BRDFBAKE\" bake --table E --model ggx --integrator qmc --samples 4000000 "
+                "--size 4x4 --threads 1 -o " +
                 Quote(dir + "/p.exr")) +
           " /dev/null",
       dir);

@@ -1,0 +1,176 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// E(mu) and the split-sum DFG terms of the isotropic Beckmann and STD
+// BRDFs by the one-dimensional rule of azimuthal.h, with the azimuthal
+// integral of D (and of D Fc) taken numerically.
+//
+// For a slope-space model D(h) = P22(r2) / (alpha^2 h.z^4) with
+// r2 = tan^2(theta_h) / alpha^2 (slope_ndf.h). Over the azimuth of wi,
+// with v = |wi + wo|^2 = 4 cos^2 A + t, t = 2 B sin^2(psi / 2),
+// B = 2 sin(theta_i) sin(theta_o) and psi = pi - phi the azimuth from the
+// specular plane, h.z^2 = s^2 / v with s = mu_i + mu_o = 2 cos A cos T and
+//   tan^2(theta_h) = (v - s^2) / s^2 = (4 cos^2 A sin^2 T + t) / s^2,
+// so (no cancellation anywhere)
+//   r2 = sin^2 T / (alpha^2 cos^2 T) + t / (4 alpha^2 cos^2 A cos^2 T),
+//   D = P22(r2) v^2 / (alpha^2 s^4),   wo.h = sqrt(v) / 2.
+// Phi = int_0^{2 pi} D dphi = 2 int_0^pi D dpsi (and the same with
+// Fc = (1 - wo.h)^5) by Gauss-Kronrod 15 on the ladder of azimuthal.h
+// (AzimuthLadder, ratio 2), graded from the lobe's half width in psi,
+// alpha cos A cos T sqrt(8 / B) (where r2 has grown by 1), and for Fc also
+// from the branch point of wo.h at distance 2 cos A. Both integrands are
+// positive and smooth on each piece: the lobe is Gaussian (Beckmann) or a
+// power of a quadratic in sin(psi / 2) (STD), and the ladder's ratio-3
+// pieces resolve it at every scale. The error estimate is the sum of the
+// pieces' |K15 - G7|. G2 depends on theta_i alone (isotropic Lambda), so
+// Lambda(wi) is evaluated once per theta_i node.
+
+#ifndef BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
+#define BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "azimuthal.h"
+#include "brdfbake/brdf.h"
+
+namespace brdfbake {
+
+// The per-theta_i constants of the azimuthal integrand:
+// r2 = r2_0 + r2_t t and v = v_min + t with t = two_b sin^2(psi / 2).
+struct SlopeAzimuth {
+  double r2_0, r2_t, v_min, two_b;
+  bool with_bias;
+};
+
+// The azimuthal integrals piece by piece: the double scalar reference.
+// ke/ge are the Kronrod/Gauss sums of P22(r2) v^2 of each piece (weights
+// times integrand, without the half width), kb/gb those of P22(r2) v^2 Fc.
+// `Ndf` provides StdP22 (slope_ndf.h).
+template <class Ndf>
+struct ScalarSlopeNodes {
+  const Ndf* ndf;
+  void operator()(const SlopeAzimuth& az, const AzimuthLadder::Piece* const* pieces, int n,
+                  double* ke, double* ge, double* kb, double* gb) const {
+    const AzimuthLadder& rule = AzimuthLadder::Get(2);
+    for (int p = 0; p < n; ++p) {
+      double sums[4] = {0, 0, 0, 0};
+      for (int i = 0; i < 15; ++i) {
+        const double t = az.two_b * pieces[p]->s2[i];
+        const double v = az.v_min + t;
+        const double f = ndf->StdP22(az.r2_0 + az.r2_t * t) * (v * v);
+        sums[0] += rule.wk[i] * f;
+        sums[1] += rule.wg[i] * f;
+        if (az.with_bias) {
+          const double m = std::max(0.0, 1 - 0.5 * std::sqrt(v)), m2 = m * m;
+          sums[2] += rule.wk[i] * (f * (m2 * m2 * m));
+          sums[3] += rule.wg[i] * (f * (m2 * m2 * m));
+        }
+      }
+      ke[p] = sums[0];
+      ge[p] = sums[1];
+      kb[p] = sums[2];
+      gb[p] = sums[3];
+    }
+  }
+};
+
+// The integrands over theta_i of E and dfg.bias for an isotropic
+// slope-space model (BeckmannNdf, StdNdf: StdLambda and StdP22).
+template <class Ndf>
+class SlopeAzimuthalE : public AzimuthalFrame {
+ public:
+  SlopeAzimuthalE(const Ndf& ndf, double mu_o, Masking masking)
+      : AzimuthalFrame(mu_o), ndf_(&ndf), alpha_(ndf.alpha_x()),
+        separable_(masking == Masking::kSeparable) {
+    lambda_o_ = LambdaAt(mu_o, s_o_);
+  }
+
+  double lambda_o() const { return lambda_o_; }
+  double alpha() const { return alpha_; }
+
+  template <class Nodes>
+  AzimuthalValues Eval(double theta_i, bool with_bias, const Nodes& nodes) const {
+    const Angles g = AnglesAt(theta_i);
+    AzimuthalValues out;
+    const double lambda_i = LambdaAt(g.mu_i, g.s_i);
+    const double g2 = separable_ ? 1 / ((1 + lambda_i) * (1 + lambda_o_))
+                                 : 1 / (1 + lambda_i + lambda_o_);
+    const double w = scale_ * g2 * g.s_i;
+    if (!(w > 0) || !(g.ca > 0)) return out;
+    const double a2 = alpha_ * alpha_;
+    const double cc = g.ca * g.ct;  // s / 2
+    const double two_b = 4 * g.s_i * s_o_;
+    SlopeAzimuth az;
+    az.r2_0 = g.st * g.st / (a2 * g.ct * g.ct);
+    az.r2_t = 1 / (4 * a2 * cc * cc);
+    az.v_min = 4 * g.ca * g.ca;
+    az.two_b = two_b;
+    az.with_bias = with_bias;
+    // The ladder starts at the lobe's half width (and at the branch point
+    // of wo.h for Fc); with B = 0 (normal incidence) the integrand is
+    // constant in psi.
+    const double b = 0.5 * two_b;
+    double start = b > 0 ? alpha_ * cc * std::sqrt(8 / b) : std::numeric_limits<double>::infinity();
+    if (with_bias) start = std::min(start, 2 * g.ca);
+    const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+    const int pieces = AzimuthLadder::Get(2).Select(start, used);
+    double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
+    double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
+    nodes(az, used, pieces, ke, ge, kb, gb);
+    double phi_e = 0, err_e = 0, phi_b = 0, err_b = 0;
+    for (int p = 0; p < pieces; ++p) {
+      const double h = used[p]->half_width;
+      phi_e += ke[p] * h;
+      err_e += std::abs(ke[p] - ge[p]) * h;
+      phi_b += kb[p] * h;
+      err_b += std::abs(kb[p] - gb[p]) * h;
+    }
+    // D = P22 v^2 / (alpha^2 s^4), s^4 = 16 (cos A cos T)^4; Phi = 2 int_0^pi.
+    const double norm = 2 / (a2 * 16 * (cc * cc) * (cc * cc));
+    out.e = w * norm * phi_e;
+    out.e_error = w * norm * err_e;
+    out.bias = w * norm * phi_b;
+    out.bias_error = w * norm * err_b;
+    return out;
+  }
+
+ private:
+  // Lambda of a direction at cos mu, sin s: StdLambda(mu / (alpha s)); +inf
+  // on the horizon, 0 along the normal.
+  double LambdaAt(double mu, double s) const {
+    if (!(mu > 0)) return std::numeric_limits<double>::infinity();
+    if (!(s > 0)) return 0.0;
+    return ndf_->StdLambda(mu / (alpha_ * s));
+  }
+
+  const Ndf* ndf_;
+  double alpha_;
+  bool separable_;
+  double lambda_o_ = 0;
+};
+
+// E (and with `with_bias` dfg.bias and scale) of an isotropic slope-space
+// model at mu by the adaptive rule over theta_i.
+template <class Ndf, class Nodes>
+AzimuthalDfgResult SlopeAzimuthalDfgWith(const Ndf& ndf, double mu, Masking masking,
+                                         bool with_bias, double tol, int max_pieces,
+                                         const Nodes& nodes) {
+  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking);
+  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()),
+                               [&](double t) { return f.Eval(t, with_bias, nodes); }, tol,
+                               max_pieces);
+}
+
+// The double scalar reference.
+template <class Ndf>
+AzimuthalDfgResult SlopeAzimuthalDfg(const Ndf& ndf, double mu, Masking masking, bool with_bias,
+                                     double tol, int max_pieces) {
+  return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
+                               ScalarSlopeNodes<Ndf>{&ndf});
+}
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
