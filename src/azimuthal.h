@@ -366,9 +366,9 @@ struct AzimuthalDfgResult {
 };
 // The adaptive rule over theta_i for E, bias and scale = E - bias:
 // Gauss-Kronrod 15 on the pieces of `mesh`, the worst piece bisected until
-// the claims of all three meet `tol` (or `max_pieces`). `eval(theta_i)`
-// gives the AzimuthalValues; its azimuthal error estimates are carried
-// through the Kronrod weights into the claims.
+// the claims of all three meet `tol` (or `max_pieces`). `eval(theta, out)`
+// gives the AzimuthalValues at a piece's 15 nodes; their azimuthal error
+// estimates are carried through the Kronrod weights into the claims.
 template <class Eval>
 AzimuthalDfgResult AdaptiveAzimuthalRule(const std::vector<double>& mesh, const Eval& eval,
                                          double tol, int max_pieces) {
@@ -381,9 +381,13 @@ AzimuthalDfgResult AdaptiveAzimuthalRule(const std::vector<double>& mesh, const 
   const KronrodRule& r = Kronrod15();
   auto kronrod = [&](double a, double b) {
     const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double theta[15];
+    AzimuthalValues values[15];
+    for (int i = 0; i < 15; ++i) theta[i] = c + h * r.x[i];
+    eval(theta, values);
     double ke = 0, ge = 0, kb = 0, gb = 0, aze = 0, azb = 0;
     for (int i = 0; i < 15; ++i) {
-      const AzimuthalValues v = eval(c + h * r.x[i]);
+      const AzimuthalValues& v = values[i];
       ke += r.wk[i] * v.e;
       ge += r.wg[i] * v.e;
       kb += r.wk[i] * v.bias;
@@ -437,8 +441,12 @@ template <class Nodes>
 AzimuthalDfgResult GgxAzimuthalDfgWith(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces, const Nodes& nodes) {
   const GgxAzimuthalE f(alpha, mu, masking);
-  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha),
-                               [&](double t) { return f.EvalDfg(t, nodes); }, tol, max_pieces);
+  return AdaptiveAzimuthalRule(
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha),
+      [&](const double* theta, AzimuthalValues* out) {
+        for (int i = 0; i < 15; ++i) out[i] = f.EvalDfg(theta[i], nodes);
+      },
+      tol, max_pieces);
 }
 
 // The double scalar reference.

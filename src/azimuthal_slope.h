@@ -23,7 +23,7 @@
 // power of a quadratic in sin(psi / 2) (STD), and the ladder's ratio-3
 // pieces resolve it at every scale. The error estimate is the sum of the
 // pieces' |K15 - G7|. G2 depends on theta_i alone (isotropic Lambda), so
-// Lambda(wi) is evaluated once per theta_i node.
+// Lambda(wi) is evaluated once per theta_i node, 15 at a time.
 
 #ifndef BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
 #define BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
@@ -44,13 +44,20 @@ struct SlopeAzimuth {
   bool with_bias;
 };
 
-// The azimuthal integrals piece by piece: the double scalar reference.
+// The unit-roughness Lambda of n arguments a (+inf for a <= 0, 0 for
+// a = inf) and the azimuthal integrals piece by piece: the double scalar
+// reference.
 // ke/ge are the Kronrod/Gauss sums of P22(r2) v^2 of each piece (weights
 // times integrand, without the half width), kb/gb those of P22(r2) v^2 Fc.
 // `Ndf` provides StdP22 (slope_ndf.h).
 template <class Ndf>
 struct ScalarSlopeNodes {
   const Ndf* ndf;
+  void Lambda(const double* a, int n, double* out) const {
+    for (int k = 0; k < n; ++k) {
+      out[k] = a[k] > 0 ? ndf->StdLambda(a[k]) : std::numeric_limits<double>::infinity();
+    }
+  }
   void operator()(const SlopeAzimuth& az, const AzimuthLadder::Piece* const* pieces, int n,
                   double* ke, double* ge, double* kb, double* gb) const {
     const AzimuthLadder& rule = AzimuthLadder::Get(2);
@@ -90,11 +97,28 @@ class SlopeAzimuthalE : public AzimuthalFrame {
   double lambda_o() const { return lambda_o_; }
   double alpha() const { return alpha_; }
 
+  // The AzimuthalValues at the 15 nodes of a piece of the theta_i rule:
+  // Lambda(wi) of all 15 at once (nodes.Lambda), then each node's azimuth.
   template <class Nodes>
-  AzimuthalValues Eval(double theta_i, bool with_bias, const Nodes& nodes) const {
-    const Angles g = AnglesAt(theta_i);
+  void EvalPiece(const double* theta, bool with_bias, const Nodes& nodes,
+                 AzimuthalValues* out) const {
+    Angles g[15];
+    double a[15], lambda_i[15];
+    for (int k = 0; k < 15; ++k) {
+      g[k] = AnglesAt(theta[k]);
+      // a = cot(theta_i) / alpha: 0 (Lambda = inf) on the horizon, inf along
+      // the normal.
+      a[k] = g[k].mu_i > 0 ? g[k].mu_i / (alpha_ * g[k].s_i) : 0.0;
+    }
+    nodes.Lambda(a, 15, lambda_i);
+    for (int k = 0; k < 15; ++k) out[k] = Azimuth(g[k], lambda_i[k], with_bias, nodes);
+  }
+
+ private:
+  template <class Nodes>
+  AzimuthalValues Azimuth(const Angles& g, double lambda_i, bool with_bias,
+                          const Nodes& nodes) const {
     AzimuthalValues out;
-    const double lambda_i = LambdaAt(g.mu_i, g.s_i);
     const double g2 = separable_ ? 1 / ((1 + lambda_i) * (1 + lambda_o_))
                                  : 1 / (1 + lambda_i + lambda_o_);
     const double w = scale_ * g2 * g.s_i;
@@ -136,7 +160,6 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     return out;
   }
 
- private:
   // Lambda of a direction at cos mu, sin s: StdLambda(mu / (alpha s)); +inf
   // on the horizon, 0 along the normal.
   double LambdaAt(double mu, double s) const {
@@ -158,9 +181,12 @@ AzimuthalDfgResult SlopeAzimuthalDfgWith(const Ndf& ndf, double mu, Masking mask
                                          bool with_bias, double tol, int max_pieces,
                                          const Nodes& nodes) {
   const SlopeAzimuthalE<Ndf> f(ndf, mu, masking);
-  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()),
-                               [&](double t) { return f.Eval(t, with_bias, nodes); }, tol,
-                               max_pieces);
+  return AdaptiveAzimuthalRule(
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()),
+      [&](const double* theta, AzimuthalValues* out) {
+        f.EvalPiece(theta, with_bias, nodes, out);
+      },
+      tol, max_pieces);
 }
 
 // The double scalar reference.

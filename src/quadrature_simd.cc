@@ -19,6 +19,11 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "simd/math_f64-inl.h"
+#if BRDFBAKE_WITH_STD
+#include "simd/std_f64-inl.h"
+#endif
+
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -61,9 +66,21 @@ struct SimdRemainderNodes {
 // ScalarSlopeNodes) with each piece's 16 nodes in lanes: P22 from the
 // model's lane function (BeckmannOverGgx's exponential, StudentTOverGgx's
 // power, without their (1 + r2)^2 factor).
-template <class P22>
+template <class P22, class LambdaF>
 struct SimdSlopeNodes {
   P22 p22;
+  LambdaF lambda;
+  void Lambda(const double* a, int n, double* out) const {
+    const DF64 d;
+    const int N = static_cast<int>(hn::Lanes(d));
+    HWY_ALIGN double x[HWY_MAX_BYTES / sizeof(double)];
+    HWY_ALIGN double y[HWY_MAX_BYTES / sizeof(double)];
+    for (int i = 0; i < n; i += N) {
+      for (int j = 0; j < N; ++j) x[j] = i + j < n ? a[i + j] : 1.0;
+      hn::Store(lambda(d, hn::Load(d, x)), d, y);
+      for (int j = 0; j < N && i + j < n; ++j) out[i + j] = y[j];
+    }
+  }
   void operator()(const SlopeAzimuth& az, const AzimuthLadder::Piece* const* pieces, int n,
                   double* ke, double* ge, double* kb, double* gb) const {
     using V = hn::Vec<DF64>;
@@ -99,7 +116,14 @@ struct SimdSlopeNodes {
 };
 
 #if BRDFBAKE_WITH_BECKMANN
-// P22 = exp(-r2) / pi (0 beyond r2 = 706, below the smallest normal double).
+// Lambda (simd/math_f64-inl.h) and P22 = exp(-r2) / pi (0 beyond r2 = 706,
+// below the smallest normal double).
+struct BeckmannLambda {
+  template <class V>
+  HWY_INLINE V operator()(DF64 d, V a) const {
+    return BeckmannLambdaF64(d, a);
+  }
+};
 struct BeckmannP22 {
   template <class V>
   HWY_INLINE V operator()(DF64 d, V r2) const {
@@ -113,12 +137,20 @@ AzimuthalDfgResult BeckmannAzimuthalTexel(const BeckmannNdf<double>& ndf, double
                                           Masking masking, bool with_bias, double tol,
                                           int max_pieces) {
   return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
-                               SimdSlopeNodes<BeckmannP22>{});
+                               SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
 }
 #endif
 
 #if BRDFBAKE_WITH_STD
-// P22 = exp(-gamma log1p(r2 / (gamma - 1))) / pi (seed 004 eq. 13).
+// Lambda (simd/std_f64-inl.h) and P22 = exp(-gamma log1p(r2 / (gamma - 1))) / pi
+// (seed 004 eq. 13).
+struct StudentTLambda {
+  StudentTLambdaF64Consts c;
+  template <class V>
+  HWY_INLINE V operator()(DF64 d, V a) const {
+    return StudentTLambdaF64(d, c, a);
+  }
+};
 struct StudentTP22 {
   double gamma, inv_gamma_minus_1;
   template <class V>
@@ -135,10 +167,12 @@ AzimuthalDfgResult StudentTAzimuthalTexel(const StdNdf<double>& ndf, double mu, 
   const double g = ndf.gamma();
   if (std::isinf(g)) {
     return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
-                                 SimdSlopeNodes<BeckmannP22>{});
+                                 SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
   }
-  return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
-                               SimdSlopeNodes<StudentTP22>{{g, 1 / (g - 1)}});
+  return SlopeAzimuthalDfgWith(
+      ndf, mu, masking, with_bias, tol, max_pieces,
+      SimdSlopeNodes<StudentTP22, StudentTLambda>{{g, 1 / (g - 1)},
+                                                 StudentTLambda{StudentTLambdaF64Consts(g)}});
 }
 #endif
 
