@@ -137,12 +137,7 @@ class GgxAzimuthalE : public AzimuthalFrame {
 
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
-    const double x = a2_ * g.ct * g.ct + g.st * g.st;
-    const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
-    const double xy = x * y;
-    const double q = b_ * g.ca * g.ct / std::sqrt(xy);
-    const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
-    return scale_ * G2(g.mu_i, g.s_i) * phi * g.s_i;
+    return scale_ * G2(g.mu_i, g.s_i) * PhiAt(g).phi * g.s_i;
   }
 
   // The integrands of E and of dfg.bias at theta_i, and the error estimate
@@ -154,6 +149,20 @@ class GgxAzimuthalE : public AzimuthalFrame {
   AzimuthalValues EvalDfg(double theta_i, const Nodes& nodes) const;
 
  private:
+  // X, Y (the header's) and Phi = int D dphi at the angles g.
+  struct PhiTerms {
+    double x, y, xy, phi;
+  };
+  PhiTerms PhiAt(const Angles& g) const {
+    PhiTerms p;
+    p.x = a2_ * g.ct * g.ct + g.st * g.st;
+    p.y = a2_ * g.ca * g.ca + g.sa * g.sa;
+    p.xy = p.x * p.y;
+    const double q = b_ * g.ca * g.ct / std::sqrt(p.xy);
+    p.phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * p.x + g.ct * g.ct * p.y) / (2 * p.xy)));
+    return p;
+  }
+
   // G2 of the pair (theta_i, theta_o): Lambda(wi) = a2 s_i^2 / n with
   // n = 2 mu_i (mu_i + sqrt(mu_i^2 + a2 s_i^2)), so G1(wi) = n / (n + a2 s_i^2):
   // 0 on the horizon, no division by zero.
@@ -312,17 +321,13 @@ std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha)
 template <class Nodes>
 AzimuthalValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nodes) const {
   const Angles g = AnglesAt(theta_i);
-  const double x = a2_ * g.ct * g.ct + g.st * g.st;
-  const double y = a2_ * g.ca * g.ca + g.sa * g.sa;
-  const double xy = x * y;
-  const double q = b_ * g.ca * g.ct / std::sqrt(xy);
-  const double phi = 2 * a2_ * (1 + q * (2 + b_ * (g.ca * g.ca * x + g.ct * g.ct * y) / (2 * xy)));
+  const PhiTerms pt = PhiAt(g);
   const double w = scale_ * G2(g.mu_i, g.s_i) * g.s_i;
   AzimuthalValues out;
-  out.e = w * phi;
-  const double r = 4 * g.ca * g.ct * std::sqrt(xy);
+  out.e = w * pt.phi;
+  const double r = 4 * g.ca * g.ct * std::sqrt(pt.xy);
   if (!(r > 0) || !(w > 0)) return out;
-  const double cmb = 4 * g.ca * g.ca * x, cpb = 4 * g.ct * g.ct * y;
+  const double cmb = 4 * g.ca * g.ca * pt.x, cpb = 4 * g.ct * g.ct * pt.y;
   const double c = 0.5 * (cmb + cpb);
   const double bb = 2 * g.s_i * s_o_;
   constexpr double kTwoPi = 6.283185307179586;
