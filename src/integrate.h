@@ -210,8 +210,6 @@ inline constexpr double kCrossingTol = 1e-11;
 // The layer split is only a choice of sub-intervals (the integrand is smooth
 // across it): any point near the layer height serves.
 inline constexpr double kLayerRelTol = 1e-3;
-// Probes per line for bracketing the horizon crossings (at most).
-inline constexpr int kMaxProbes = 24;
 
 // The integrand restricted to one line u2 = const of the quadrature's
 // square, as a function of t: Z(t) = wi.z and Eval(t) = (w, w Fc). Every
@@ -326,23 +324,6 @@ struct GgxDiskLines {
       *w = v;
       *w_fc = v * SchlickWeight(wo_m);
     }
-    // Adds the rule on [a, b] in t, sum of w_k (b - a) u1'(t_k) (w, w Fc) at
-    // t_k = a + (b - a) x_k, to *acc and *acc_fc (node by node, in order).
-    void IntegratePiece(double a, double b, const GaussLegendre& rule, double* acc,
-                        double* acc_fc) const {
-      for (size_t i = 0; i < rule.x.size(); ++i) {
-        const double t = a + (b - a) * rule.x[i];
-        double w, wfc;
-        Eval(t, &w, &wfc);
-        const double jac = rule.w[i] * (b - a) * DU1(t);
-        *acc += jac * w;
-        *acc_fc += jac * wfc;
-      }
-    }
-    // z[k] = Z(k / probes) for k = 0..probes.
-    void Probe(int probes, double* z) const {
-      for (int k = 0; k <= probes; ++k) z[k] = Z(static_cast<double>(k) / probes);
-    }
   };
   Line At(double u2) const {
     const double phi = 6.283185307179586 * u2;
@@ -377,7 +358,14 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
                    bool grade_rim, std::vector<double>* cuts_buf, double* acc, double* acc_fc) {
   std::vector<double>& cuts = *cuts_buf;
   auto integrate_piece = [&](double a, double b) {
-    line.IntegratePiece(a, b, inner, acc, acc_fc);
+    for (size_t i = 0; i < inner.x.size(); ++i) {
+      const double t = a + (b - a) * inner.x[i];
+      double w, wfc;
+      line.Eval(t, &w, &wfc);
+      const double jac = inner.w[i] * (b - a) * DU1(t);
+      *acc += jac * w;
+      *acc_fc += jac * wfc;
+    }
   };
   auto integrate = [&](double a, double b) {
     if (!grade_rim) {
@@ -400,14 +388,12 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
   // Bracket the horizon crossings along t on a probe grid.
   cuts.clear();
   cuts.push_back(0.0);
-  double z_probe[kMaxProbes + 1];
-  line.Probe(probes, z_probe);
   double t_prev = 0.0;
-  double z_prev = z_probe[0];
+  double z_prev = line.Z(0.0);
   const bool first_above = z_prev > 0;
   for (int k = 1; k <= probes; ++k) {
     const double t = static_cast<double>(k) / probes;
-    const double z = z_probe[k];
+    const double z = line.Z(t);
     if ((z > 0) != (z_prev > 0)) {
       cuts.push_back(SolveBracketed(z_at, t_prev, t, z_prev, z, kCrossingTol));
     }
@@ -447,8 +433,8 @@ void IntegrateLine(const LineT& line, const GaussLegendre& inner, int probes, do
   }
 }
 
-template <class Family>
-QuadratureResult QuadratureRule(const Family& family, double layer, bool grade_rim,
+template <class Ndf>
+QuadratureResult QuadratureRule(const LineFamily<Ndf>& family, double layer, bool grade_rim,
                                 int n_outer, const GaussLegendre& inner, int probes) {
   // u2 is the azimuth of the GGX disk: periodic, so the outer rule is the
   // trapezoidal rule, which converges geometrically for smooth periodic
@@ -493,7 +479,7 @@ QuadratureResult QuadratureRule(const Family& family, double layer, bool grade_r
     // symmetry and n even, node j pairs with (n/2 - 1 - j) mod n: each pair
     // is evaluated once and counted twice (a node that is its own mirror,
     // u2 = 1/4 or 3/4 when n = 2 mod 4, once).
-    const bool mirror = Family::kMirrorU2 && n_outer % 2 == 0;
+    const bool mirror = LineFamily<Ndf>::kMirrorU2 && n_outer % 2 == 0;
     for (int j = 0; j < n_outer; ++j) {
       double count = 1;
       if (mirror) {
@@ -558,16 +544,12 @@ inline TexelValue MirrorTexel(double mu) {
 // outer integrand is not smooth (a line grazing the horizon curve) or the
 // rule does not yet resolve the lobe at small alpha. Closer steps (x4/3,
 // x3/2) need O(n^-2.4) for the same guarantee and under-claimed there.
-//
-// `Family` evaluates the lines: LineFamily<Ndf> in double scalar code (the
-// reference), or the SIMD lines of src/quadrature_simd.cc, constructed from
-// the same Integrand.
-template <class Family, class Ndf>
-TexelValue QuadratureTexelWith(const Ndf& ndf, double mu, Masking masking, int max_nodes,
-                               double tol) {
+template <class Ndf>
+TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_nodes,
+                           double tol) {
   const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
   const Integrand<Ndf> f(ndf, wo, masking);
-  const Family family(f);
+  const LineFamily<Ndf> family(f);
   const double layer = HorizonLayer(ndf);
   const bool grade_rim = RimPower(ndf) > 0;
   // For the models sampled through the GGX disk, whose weight varies over
@@ -577,7 +559,7 @@ TexelValue QuadratureTexelWith(const Ndf& ndf, double mu, Masking masking, int m
   // on. GGX keeps its ladder (its weight G2 / G1 is flat except near the
   // horizon, where the layer split resolves it).
   const int min_k = std::is_same_v<Ndf, GgxNdf<double>> ? 1 : 2;
-  const int probes = kMaxProbes;
+  const int probes = 24;
   static const int kLadder[] = {12, 24, 48, 96, 192, 384, 768, 1536, 3072, 4096};
   QuadratureResult prev =
       QuadratureRule(family, layer, grade_rim, kLadder[0], CachedRule(kLadder[0]), probes);
@@ -606,13 +588,6 @@ TexelValue QuadratureTexelWith(const Ndf& ndf, double mu, Masking masking, int m
     v_prev = v;
   }
   return v;
-}
-
-// The double scalar reference of the quadrature.
-template <class Ndf>
-TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_nodes,
-                           double tol) {
-  return QuadratureTexelWith<LineFamily<Ndf>>(ndf, mu, masking, max_nodes, tol);
 }
 
 // Randomized QMC: `replicas` Cranley-Patterson rotations of an
