@@ -75,6 +75,8 @@ const AzimuthLadder& AzimuthLadder::Get(int ratio) {
         p->s2[i] = s * s;
       }
       p->s2[15] = 0.5;
+      const double sa = std::sin(0.5 * a);
+      p->s2_start = sa * sa;
     };
     fill(kPi / 2, kPi, &r.outer);
     fill(0, kPi / 2, &r.core[0]);

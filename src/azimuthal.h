@@ -270,6 +270,7 @@ struct AzimuthLadder {
   struct Piece {
     double half_width;
     double s2[16];  // sin^2(psi / 2) at the nodes; the 16th pads (weight 0)
+    double s2_start;  // sin^2(psi / 2) at the piece's start
   };
   int ratio = 3, levels = 0;
   Piece outer;              // [pi/2, pi]

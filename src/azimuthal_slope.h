@@ -31,8 +31,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "azimuthal.h"
+#include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
 
 namespace brdfbake {
@@ -52,6 +54,10 @@ struct SlopeAzimuth {
 // `Ndf` provides StdP22 (slope_ndf.h).
 template <class Ndf>
 struct ScalarSlopeNodes {
+  // Beckmann's P22 = exp(-r2) / pi is 0 in double beyond r2 = 745; the
+  // STD's decays like a power and never is.
+  static constexpr double kNegligibleR2 =
+      std::is_same_v<Ndf, BeckmannNdf<double>> ? 745.0 : std::numeric_limits<double>::infinity();
   const Ndf* ndf;
   void Lambda(const double* a, int n, double* out) const {
     for (int k = 0; k < n; ++k) {
@@ -139,7 +145,14 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     double start = b > 0 ? alpha_ * cc * std::sqrt(8 / b) : std::numeric_limits<double>::infinity();
     if (with_bias) start = std::min(start, 2 * g.ca);
     const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
-    const int pieces = AzimuthLadder::Get(2).Select(start, used);
+    int pieces = AzimuthLadder::Get(2).Select(start, used);
+    // r2 grows with psi: the pieces from the first one starting at
+    // r2 >= nodes.kNegligibleR2 on (where a Gaussian P22 is below the
+    // smallest double) contribute nothing.
+    while (pieces > 1 &&
+           az.r2_0 + az.r2_t * (two_b * used[pieces - 1]->s2_start) >= nodes.kNegligibleR2) {
+      --pieces;
+    }
     double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
     double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
     nodes(az, used, pieces, ke, ge, kb, gb);

@@ -68,6 +68,7 @@ struct SimdRemainderNodes {
 // power, without their (1 + r2)^2 factor).
 template <class P22, class LambdaF>
 struct SimdSlopeNodes {
+  static constexpr double kNegligibleR2 = P22::kNegligibleR2;
   P22 p22;
   LambdaF lambda;
   void Lambda(const double* a, int n, double* out) const {
@@ -125,6 +126,7 @@ struct BeckmannLambda {
   }
 };
 struct BeckmannP22 {
+  static constexpr double kNegligibleR2 = 706.0;  // 0 from here on (below)
   template <class V>
   HWY_INLINE V operator()(DF64 d, V r2) const {
     const V e = hn::Exp(d, hn::Neg(hn::Min(r2, hn::Set(d, 706.0))));
@@ -152,6 +154,7 @@ struct StudentTLambda {
   }
 };
 struct StudentTP22 {
+  static constexpr double kNegligibleR2 = std::numeric_limits<double>::infinity();
   double gamma, inv_gamma_minus_1;
   template <class V>
   HWY_INLINE V operator()(DF64 d, V r2) const {
