@@ -31,26 +31,16 @@
 #include <boost/math/special_functions/erf.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "ref_util.h"
+
 namespace brdfbake {
 namespace simd_math_f64_test {
 
 using Big = boost::multiprecision::cpp_bin_float_50;
 
-// A reference as an unevaluated sum hi + lo (hi = the value rounded to
-// double), so that got - ref is formed without a second rounding of ref.
-struct Ref {
-  double hi, lo;
-};
-inline Ref ToRef(const Big& v) {
-  const double hi = static_cast<double>(v);
-  if (!std::isfinite(hi)) return {hi, 0.0};
-  return {hi, static_cast<double>(v - Big(hi))};
-}
-// |got - ref| (0 when both are the same infinity).
-inline double AbsErr(double got, const Ref& ref) {
-  if (std::isinf(ref.hi)) return got == ref.hi ? 0.0 : std::numeric_limits<double>::infinity();
-  return std::abs((got - ref.hi) - ref.lo);
-}
+using test_util::AbsErr;
+using test_util::Ref;
+using test_util::ToRef;
 
 // exp(-x^2) in 50 digits (exact input x).
 inline Ref ExpNegSquareRef(double x) {

@@ -43,6 +43,8 @@
 #include <boost/math/special_functions/gamma.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include "ref_util.h"
+
 namespace brdfbake {
 namespace simd_std_f64_test {
 
@@ -56,20 +58,9 @@ inline const std::vector<double>& Gammas() {
   return g;
 }
 
-// A reference as an unevaluated sum hi + lo (hi = the value rounded to
-// double), so that got - ref is formed without a second rounding of ref.
-struct Ref {
-  double hi, lo;
-};
-inline Ref ToRef(const Big& v) {
-  const double hi = static_cast<double>(v);
-  if (!std::isfinite(hi)) return {hi, 0.0};
-  return {hi, static_cast<double>(v - Big(hi))};
-}
-inline double AbsErr(double got, const Ref& ref) {
-  if (std::isinf(ref.hi)) return got == ref.hi ? 0.0 : kInf;
-  return std::abs((got - ref.hi) - ref.lo);
-}
+using test_util::AbsErr;
+using test_util::Ref;
+using test_util::ToRef;
 
 // kt = Gamma(gamma - 1/2) / (sqrt(pi) Gamma(gamma - 1) sqrt(gamma - 1)).
 inline Big KtBig(const Big& g) {
