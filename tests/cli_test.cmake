@@ -194,6 +194,17 @@ foreach(f preset_filament/dfg.h preset_unreal/PreIntegratedGF.dds preset_hdrp/pr
     message(FATAL_ERROR "preset output missing: ${f}")
   endif()
 endforeach()
+# --target: the double scalar reference or a Highway target for the
+# quadrature; unknown names and other integrators are one-line errors.
+foreach(target scalar best)
+  run_tool(TRUE out err bake --table dfg --model beckmann --size 8x8 --target ${target}
+           -o "${out_dir}/target_${target}.exr")
+  if(NOT out MATCHES "wrote .*dfg beckmann 8x8")
+    message(FATAL_ERROR "bake --target ${target}: '${out}'")
+  endif()
+endforeach()
+expect_one_line_error(bake --table E --target NEON -o "${out_dir}/target_bad.exr")
+expect_one_line_error(bake --table E --target scalar --integrator qmc -o "${out_dir}/target_bad.exr")
 # A preset fixes its tables; other presets and formats are named in the error.
 expect_one_line_error(bake --preset filament --size 64x64)
 expect_one_line_error(bake --preset unity)

@@ -335,7 +335,18 @@ struct BakeOptions {
     if (target == "scalar") {
       spec.simd = false;
     } else {
-      brdfbake::ForceTarget(target);
+      try {
+        brdfbake::ForceTarget(target);
+      } catch (const std::invalid_argument& e) {
+        // The bake also takes scalar, the double scalar reference.
+        std::string what = e.what();
+        const std::string best = ", or best)";
+        const size_t at = what.rfind(best);
+        if (at != std::string::npos && at + best.size() == what.size()) {
+          what = what.substr(0, at) + ", best, or scalar for the double scalar reference)";
+        }
+        Bad(what);
+      }
     }
     spec.samples = samples;
     spec.tolerance = tolerance;
