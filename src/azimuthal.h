@@ -227,6 +227,7 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
 // v = 4 cos^2 A + 2 B sin^2(psi/2), by Gauss-Kronrod 15 on pieces graded
 // geometrically (ratio 3) from psi = 2 cos A; its error estimate is the sum
 // of |K15 - G7|.
+
 // T(b) = (5/2) S_5 + (5/4) S_7 + S_9 / 32 (coefficients t[m] of b^m) for
 // a = sqrt(kappa), and the remainder's integrand T(b) / (a + b)^2 at psi,
 // b = sqrt(vmin + two_b sin^2(psi / 2)).

@@ -20,7 +20,7 @@
 // alpha cos A cos T sqrt(8 / B) (where r2 has grown by 1), and for Fc also
 // from the branch point of wo.h at distance 2 cos A. Both integrands are
 // positive and smooth on each piece: the lobe is Gaussian (Beckmann) or a
-// power of a quadratic in sin(psi / 2) (STD), and the ladder's ratio-3
+// power of a quadratic in sin(psi / 2) (STD), and the ladder's ratio-2
 // pieces resolve it at every scale. The error estimate is the sum of the
 // pieces' |K15 - G7|. G2 depends on theta_i alone (isotropic Lambda), so
 // Lambda(wi) is evaluated once per theta_i node, 15 at a time.
@@ -39,6 +39,11 @@
 
 namespace brdfbake {
 
+// From this r2 on Beckmann's P22 = exp(-r2) / pi is below the smallest
+// normal double (and outside Highway's Exp range): pieces of the azimuth
+// that start there contribute nothing, in the scalar and the SIMD rules.
+inline constexpr double kBeckmannNegligibleR2 = 706.0;
+
 // The per-theta_i constants of the azimuthal integrand:
 // r2 = r2_0 + r2_t t and v = v_min + t with t = two_b sin^2(psi / 2).
 struct SlopeAzimuth {
@@ -54,10 +59,10 @@ struct SlopeAzimuth {
 // `Ndf` provides StdP22 (slope_ndf.h).
 template <class Ndf>
 struct ScalarSlopeNodes {
-  // Beckmann's P22 = exp(-r2) / pi is 0 in double beyond r2 = 745; the
-  // STD's decays like a power and never is.
-  static constexpr double kNegligibleR2 =
-      std::is_same_v<Ndf, BeckmannNdf<double>> ? 745.0 : std::numeric_limits<double>::infinity();
+  // The STD's P22 decays like a power and is never negligible.
+  static constexpr double kNegligibleR2 = std::is_same_v<Ndf, BeckmannNdf<double>>
+                                              ? kBeckmannNegligibleR2
+                                              : std::numeric_limits<double>::infinity();
   const Ndf* ndf;
   void Lambda(const double* a, int n, double* out) const {
     for (int k = 0; k < n; ++k) {

@@ -264,8 +264,8 @@ std::string IntegratorJson(const BakeSpec& spec) {
   switch (spec.integrator) {
     case IntegratorKind::kQuadrature:
       j["tolerance"] = spec.tolerance;
+      j["max_pieces"] = n;
       if (spec.model.name == "ggx" && spec.table != TableKind::kDfg) {
-        j["max_pieces"] = n;
         j["domain"] = "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
                       "(isotropic GGX); mesh graded geometrically (ratio 3) from the specular "
                       "peak (scale 2 alpha) and the horizon";
@@ -275,7 +275,6 @@ std::string IntegratorJson(const BakeSpec& spec) {
         break;
       }
       if (spec.model.name == "ggx") {
-        j["max_pieces"] = n;
         j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
                       "specular peak and the horizon; the azimuth of wi integrated in closed "
                       "form for E and for the even powers of wo.h in the Schlick weight, the "
@@ -288,7 +287,6 @@ std::string IntegratorJson(const BakeSpec& spec) {
                               "rule carried through the Kronrod weights";
         break;
       }
-      j["max_pieces"] = n;
       j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
                     "specular peak and the horizon; Lambda(wi) once per theta_i; the azimuth "
                     "of D (and of D Fc for dfg) by Gauss-Kronrod 15 on pieces graded "

@@ -126,7 +126,7 @@ struct BeckmannLambda {
   }
 };
 struct BeckmannP22 {
-  static constexpr double kNegligibleR2 = 706.0;  // 0 from here on (below)
+  static constexpr double kNegligibleR2 = kBeckmannNegligibleR2;
   template <class V>
   HWY_INLINE V operator()(DF64 d, V r2) const {
     const V e = hn::Exp(d, hn::Neg(hn::Min(r2, hn::Set(d, 706.0))));

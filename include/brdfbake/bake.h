@@ -69,7 +69,7 @@ struct BakeSpec {
   ModelParams model;  // ggx, beckmann or std; alpha comes from the roughness axis
   Masking masking = Masking::kHeightCorrelated;
   IntegratorKind integrator = IntegratorKind::kQuadrature;
-  int samples = 0;  // max nodes per dimension (quadrature) or samples per texel; 0 = default
+  int samples = 0;  // max pieces of the theta_i rule (quadrature) or samples per texel; 0 = default
   // quadrature: stop refining when two rules agree to this. 1e-7 is the
   // precision of the float pixels the tables are stored in.
   double tolerance = 1e-7;
