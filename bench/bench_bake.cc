@@ -28,6 +28,7 @@ struct BakeCase {
   const char* model;
   double gamma;
   bool simd;
+  bool gamma_axis = false;  // std over a gamma axis of state.range(2) slices
 };
 
 void BM_Bake(benchmark::State& state, BakeCase c) {
@@ -38,6 +39,7 @@ void BM_Bake(benchmark::State& state, BakeCase c) {
   spec.simd = c.simd;
   spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
   spec.threads = static_cast<int>(state.range(1));
+  if (c.gamma_axis) spec.gamma.size = static_cast<int>(state.range(2));
   Table t;
   for (auto _ : state) {
     t = Bake(spec);
@@ -57,7 +59,8 @@ void BM_Bake(benchmark::State& state, BakeCase c) {
   state.counters["integration_error"] = t.integration_error;
   state.counters["true_error"] = true_err;
   const int64_t texels =
-      c.table == TableKind::kEavg ? spec.roughness.size : int64_t(spec.mu.size) * spec.roughness.size;
+      (c.table == TableKind::kEavg ? spec.roughness.size : int64_t(spec.mu.size) * spec.roughness.size) *
+      (c.gamma_axis ? spec.gamma.size : 1);
   state.SetItemsProcessed(state.iterations() * texels);
 }
 
@@ -95,6 +98,12 @@ BRDFBAKE_BAKE_BENCH(E/std_gamma_inf/simd, TableKind::kE, "std", kInf, true)
     ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
 BRDFBAKE_BAKE_BENCH(E_avg/std_gamma3/simd, TableKind::kEavg, "std", 3, true)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
+// std over the gamma axis (1.501 to inf, tail warp): mu x roughness x gamma,
+// and E_avg over roughness x gamma.
+BENCHMARK_CAPTURE(BM_Bake, E/std_gamma_axis/simd, BakeCase{TableKind::kE, "std", 2, true, true})
+    ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_Bake, E_avg/std_gamma_axis/simd, BakeCase{TableKind::kEavg, "std", 2, true, true})
+    ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
 
 BRDFBAKE_BAKE_BENCH(dfg/ggx/scalar, TableKind::kDfg, "ggx", 2, false)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(3);

@@ -44,6 +44,7 @@ const char* WarpName(Warp w) {
     case Warp::kLinear: return "linear";
     case Warp::kSquare: return "square";
     case Warp::kSqrt: return "sqrt";
+    case Warp::kTail: return "tail";
   }
   return "linear";
 }
@@ -70,7 +71,8 @@ Warp ParseWarp(const std::string& s) {
   if (s == "linear") return Warp::kLinear;
   if (s == "square") return Warp::kSquare;
   if (s == "sqrt") return Warp::kSqrt;
-  Bad("--warp: unknown warp '" + s + "' (expected linear, square or sqrt)");
+  if (s == "tail") return Warp::kTail;
+  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, or tail for the gamma axis)");
 }
 Placement ParsePlacement(const std::string& s) {
   if (s == "centers") return Placement::kCenters;
@@ -92,6 +94,14 @@ double Axis::ValueAt(double fi) const {
   } else {
     t = size == 1 ? 0.0 : fi / (size - 1);
   }
+  if (warp == Warp::kTail) {
+    // ln u linear in t between the ends; gamma = 1.5 + u / (1 - u), with
+    // 1 - u = -expm1(ln u) exact as u -> 1 (gamma -> inf).
+    auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
+    const double lu = (1 - t) * log_u(min) + t * log_u(max);
+    if (lu >= 0) return kInfinity;
+    return 1.5 + std::exp(lu) / -std::expm1(lu);
+  }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
@@ -102,11 +112,19 @@ std::string Axis::ToJson() const {
   nlohmann::json j;
   j["name"] = name;
   j["size"] = size;
-  j["min"] = min;
-  j["max"] = max;
+  auto number = [](double v) { return std::isinf(v) ? nlohmann::json("inf") : nlohmann::json(v); };
+  j["min"] = number(min);
+  j["max"] = number(max);
   j["warp"] = WarpName(warp);
   j["placement"] = PlacementName(placement);
   if (clamp_min > 0) j["clamp_min"] = clamp_min;
+  if (warp == Warp::kTail) {
+    j["map"] = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
+               "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
+    nlohmann::json values = nlohmann::json::array();
+    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
+    j["values"] = values;
+  }
   return j.dump();
 }
 
@@ -130,6 +148,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   std::vector<const Axis*> axes = {&spec.roughness};
   if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
   for (const Axis* a : axes) {
+    if (a->warp == Warp::kTail) Bad("--warp: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
     if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (a->placement == Placement::kEdges && a->size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
@@ -141,6 +160,22 @@ void ValidateBakeSpec(const BakeSpec& spec) {
       std::ostringstream os;
       os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= 1 (got " << a->min
          << ":" << a->max << ")";
+      Bad(os.str());
+    }
+  }
+  if (spec.HasGammaAxis()) {
+    const Axis& g = spec.gamma;
+    if (m != "std") Bad("--size: only std has a gamma axis (got model '" + m + "')");
+    if (g.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
+    if (g.placement == Placement::kEdges && g.size < 2) {
+      Bad("--size: edges placement needs at least 2 entries per axis");
+    }
+    if (g.warp != Warp::kTail) Bad("--warp: the gamma axis takes the tail warp only");
+    const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
+    if (std::isnan(g.min) || std::isnan(g.max) || !(g.min > 1.5) || std::isinf(g.min) || !ordered) {
+      std::ostringstream os;
+      os << "--range: the gamma axis must satisfy 1.5 < min < max <= inf (got " << g.min << ":"
+         << g.max << ")";
       Bad(os.str());
     }
   }
@@ -248,7 +283,9 @@ std::string ModelJson(const BakeSpec& spec) {
   nlohmann::json j;
   j["name"] = spec.model.name;
   j["alpha"] = "roughness^2";
-  if (spec.model.name == "std") {
+  if (spec.model.name == "std" && spec.HasGammaAxis()) {
+    j["gamma"] = "the gamma axis (brdfbake.axes); its last value inf is beckmann";
+  } else if (spec.model.name == "std") {
     if (std::isinf(spec.model.gamma)) j["gamma"] = "inf"; else j["gamma"] = spec.model.gamma;
     if (std::isfinite(spec.model.gamma) && spec.model.gamma >= kStdBeckmannLimitGamma) {
       j["evaluated_as"] = "beckmann (the limit gamma -> inf; gamma >= 1e20 agrees with it to double precision)";
@@ -418,8 +455,9 @@ int ValueChannels(const BakeSpec& spec) {
 }
 
 int64_t TexelCount(const BakeSpec& spec) {
-  return spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
-                                        : int64_t(spec.mu.size) * spec.roughness.size;
+  const int64_t slices = spec.HasGammaAxis() ? spec.gamma.size : 1;
+  return slices * (spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
+                                                  : int64_t(spec.mu.size) * spec.roughness.size);
 }
 
 // The pixel type's value nearest to v, and the next one towards zero.
@@ -492,6 +530,15 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     t.width = ax_mu.size;
     t.height = ax_r.size;
   }
+  // One spec per gamma slice (model.gamma set from the axis), so every
+  // slice is baked exactly as a table at that gamma would be.
+  std::vector<BakeSpec> slice_specs(1, spec);
+  if (spec.HasGammaAxis()) {
+    t.axes.push_back(spec.gamma);
+    t.height *= spec.gamma.size;
+    slice_specs.assign(size_t(spec.gamma.size), spec);
+    for (int k = 0; k < spec.gamma.size; ++k) slice_specs[k].model.gamma = spec.gamma.Value(k);
+  }
   std::vector<std::string> meanings;
   if (spec.table == TableKind::kE) {
     meanings = {spec.complement ? "1-E" : "E"};
@@ -536,9 +583,10 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   std::atomic<int64_t> done{0};
   std::vector<double>& v0 = t.channels[0].values;
   if (eavg) {
-    tbb::parallel_for(0, t.width, [&](int i) {
+    tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
+      const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
       const EavgEstimate e =
-          IntegrateEavg(spec, std::max(ax_r.Value(i), ax_r.clamp_min), uint64_t(i));
+          IntegrateEavg(slice_specs[z], std::max(ax_r.Value(x), ax_r.clamp_min), uint64_t(i));
       const double value = std::clamp(e.value, 0.0, 1.0);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;
@@ -547,8 +595,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   } else {
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
-      const double r = std::max(ax_r.Value(y), ax_r.clamp_min);
-      const TexelValue v = Texel(spec, r * r, std::max(ax_mu.Value(x), ax_mu.clamp_min),
+      const int ry = y % ax_r.size, z = y / ax_r.size;
+      const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
+      const TexelValue v = Texel(slice_specs[z], r * r, std::max(ax_mu.Value(x), ax_mu.clamp_min),
                                  Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       if (spec.table == TableKind::kE) {
         const double e = std::clamp(v.e, 0.0, 1.0);  // ClampToRange's E

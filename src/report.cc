@@ -46,6 +46,62 @@ std::string Num(double v, const char* fmt = "%.6g") {
   return buf;
 }
 
+// Interpolation error along the gamma axis: tables with 2 ... N gamma
+// slices (mu and roughness as given), linear lookup between two slices at
+// the gamma cell midpoints, against the quadrature at that gamma, at the
+// (mu, roughness) nodes of the table (up to `probes` per axis).
+InterpolationRow GammaInterpolation(const BakeSpec& base, int n, int probes) {
+  BakeSpec s = base;
+  s.gamma.size = n;
+  const Table t = Bake(s);
+  const bool eavg = s.table == TableKind::kEavg;
+  const int cells = s.gamma.placement == Placement::kEdges ? n - 1 : n - 1;
+  const int pg = std::min(cells, probes);
+  const int pr = std::min(s.roughness.size, probes);
+  const int pm = eavg ? 1 : std::min(s.mu.size, probes);
+  const int values = s.table == TableKind::kDfg ? 2 : 1;
+  // Exact values computed in parallel; the reduction below is serial so
+  // the result does not depend on the thread count.
+  std::vector<double> exact(size_t(pg) * pr * pm * values), interp(exact.size());
+  const int64_t slice = int64_t(t.width) * (eavg ? 1 : s.roughness.size);
+  tbb::parallel_for(0, pg * pr * pm, [&](int k) {
+    const int cg = (k / (pr * pm)) * cells / pg;
+    const int y = ((k / pm) % pr) * s.roughness.size / pr;
+    const int x = eavg ? y : (k % pm) * s.mu.size / pm;
+    BakeSpec one = s;
+    one.gamma.size = 0;
+    one.model.gamma = s.gamma.ValueAt(cg + 0.5);
+    const double r = std::max(s.roughness.Value(y), s.roughness.clamp_min);
+    const int64_t at = eavg ? x : int64_t(y) * t.width + x;
+    double v[2];
+    if (eavg) {
+      v[0] = IntegrateEavg(one, r).value;
+    } else {
+      const TexelEstimate e = IntegrateTexel(one, r, std::max(s.mu.Value(x), s.mu.clamp_min));
+      v[0] = s.table == TableKind::kE ? e.e : e.scale;
+      v[1] = e.bias;
+    }
+    for (int c = 0; c < values; ++c) {
+      const std::vector<double>& vals = t.channels[c].values;
+      exact[size_t(k) * values + c] = v[c];
+      interp[size_t(k) * values + c] = 0.5 * (vals[cg * slice + at] + vals[(cg + 1) * slice + at]);
+    }
+  });
+  InterpolationRow row;
+  row.size = n;
+  double sum2 = 0;
+  for (size_t i = 0; i < exact.size(); ++i) {
+    const double d = std::abs(interp[i] - exact[i]);
+    row.max_abs_error = std::max(row.max_abs_error, d);
+    sum2 += d * d;
+  }
+  row.max_abs_error_inner = row.max_abs_error;
+  row.probes = int(exact.size());
+  row.rms_error = exact.empty() ? 0 : std::sqrt(sum2 / exact.size());
+  row.bake_seconds = t.seconds;
+  return row;
+}
+
 }  // namespace
 
 Report RunReport(const ReportSpec& spec, const ReportLog& log) {
@@ -124,9 +180,24 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   }
 
   // Interpolation error of bilinear (or linear, for E_avg) lookup at cell
-  // midpoints, against the converged integrator at those points.
+  // midpoints, against the converged integrator at those points; with a
+  // gamma axis, of linear lookup between gamma slices.
   const bool one_d = spec.table.table == TableKind::kEavg;
   for (int n : spec.interpolation_sizes) {
+    if (spec.table.HasGammaAxis()) {
+      if (n < 2) continue;
+      BakeSpec s = spec.table;
+      s.integrator = IntegratorKind::kQuadrature;
+      s.tolerance = std::min(s.tolerance, 1e-8);
+      s.samples = 0;
+      s.error_channel = false;
+      s.complement = false;
+      const InterpolationRow row = GammaInterpolation(s, n, spec.interpolation_probes);
+      say("interpolation along gamma, " + std::to_string(n) + " slices: max error " +
+          Num(row.max_abs_error, "%.2e"));
+      report.interpolation.push_back(row);
+      continue;
+    }
     BakeSpec s = spec.table;
     s.integrator = IntegratorKind::kQuadrature;
     s.tolerance = std::min(s.tolerance, 1e-8);
@@ -306,10 +377,12 @@ void WriteReport(const Report& report, const std::string& dir) {
         << "," << Num(r.rms_error) << "," << Num(r.claimed_max_error) << "\n";
   }
   std::string what = std::string(TableName(t.table)) + " " + t.model.name;
-  if (t.model.name == "std") what += " gamma=" + Num(t.model.gamma);
-  const std::string size = t.table == TableKind::kEavg
-                               ? std::to_string(t.roughness.size)
-                               : std::to_string(t.mu.size) + "x" + std::to_string(t.roughness.size);
+  const bool gamma_axis = t.HasGammaAxis();
+  if (t.model.name == "std" && !gamma_axis) what += " gamma=" + Num(t.model.gamma);
+  std::string size = t.table == TableKind::kEavg
+                         ? std::to_string(t.roughness.size)
+                         : std::to_string(t.mu.size) + "x" + std::to_string(t.roughness.size);
+  if (gamma_axis) size += "x" + std::to_string(t.gamma.size) + " (gamma " + Num(t.gamma.min) + " to " + Num(t.gamma.max) + ")";
   const std::string footnote =
       "error: max |value - reference| over all texels; reference: quadrature at tolerance " +
       Num(report.spec.reference_tolerance) + " (its own estimate " +
@@ -330,7 +403,7 @@ void WriteReport(const Report& report, const std::string& dir) {
   const std::string title = what + " " + size + " (" + MaskingName(t.masking) +
                             "): max error against bake time";
   std::ostringstream icsv;
-  icsv << "size,max_abs_error,max_abs_error_without_first_mu_cell,rms_error,probes,bake_seconds\n";
+  icsv << (gamma_axis ? "gamma_slices" : "size") << ",max_abs_error,max_abs_error_without_first_mu_cell,rms_error,probes,bake_seconds\n";
   Series interp{"all cells", {}, {}};
   Series interp_inner{"without the first mu cell", {}, {}};
   for (const InterpolationRow& r : report.interpolation) {
@@ -346,14 +419,21 @@ void WriteReport(const Report& report, const std::string& dir) {
       {"report.svg", LogLogSvg(title, "bake time (s)", "max abs error", series, footnote)},
       {"interpolation.csv", icsv.str()},
       {"interpolation.svg",
-       LogLogSvg(what + ": error of " + (t.table == TableKind::kEavg ? "linear" : "bilinear") +
-                     " lookup against table size",
-                 "entries per axis", "max abs error",
-                 t.table == TableKind::kEavg ? std::vector<Series>{interp}
-                                             : std::vector<Series>{interp, interp_inner},
-                 std::string("placement ") + PlacementName(t.roughness.placement) + ", warp mu " +
-                     WarpName(t.mu.warp) + ", roughness " + WarpName(t.roughness.warp) +
-                     "; exact values from the quadrature at cell midpoints")}};
+       gamma_axis
+           ? LogLogSvg(what + " " + size + ": error of linear lookup between gamma slices",
+                       "gamma slices", "max abs error", {interp},
+                       std::string("placement ") + PlacementName(t.gamma.placement) +
+                           ", warp gamma tail; exact values from the quadrature at the gamma cell "
+                           "midpoints, at the table's mu and roughness nodes")
+           : LogLogSvg(what + ": error of " + (t.table == TableKind::kEavg ? "linear" : "bilinear") +
+                           " lookup against table size",
+                       "entries per axis", "max abs error",
+                       t.table == TableKind::kEavg ? std::vector<Series>{interp}
+                                                   : std::vector<Series>{interp, interp_inner},
+                       std::string("placement ") + PlacementName(t.roughness.placement) +
+                           ", warp mu " + WarpName(t.mu.warp) + ", roughness " +
+                           WarpName(t.roughness.warp) +
+                           "; exact values from the quadrature at cell midpoints")}};
   // All or nothing: every file is written to its temporary first; only
   // when all four are complete are they renamed, one after the other.
   std::vector<std::unique_ptr<AtomicFile>> out;

@@ -276,13 +276,21 @@ struct BakeOptions {
     for_report = report;
     app->add_option("--table,-t", table, "E | E_avg | dfg");
     app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
-    app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]")->capture_default_str();
+    app->add_option("--gamma", gamma,
+                    "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
+                    "over a gamma axis")
+        ->capture_default_str();
     app->add_option("--size", size,
                     "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
-                        (report ? "16" : "32") + ")");
-    app->add_option("--warp", warp, "linear | square | sqrt, or per axis: mu=linear,roughness=square")
+                        (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
+                        "gamma slices over (1.5, inf]");
+    app->add_option("--warp", warp,
+                    "linear | square | sqrt, or per axis: mu=linear,roughness=square "
+                    "(the gamma axis: gamma=tail, its only warp)")
         ->capture_default_str();
-    app->add_option("--range", range, "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1");
+    app->add_option("--range", range,
+                    "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
+                    "gamma=min:max within (1.5, inf], default 1.501:inf");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
@@ -359,25 +367,45 @@ struct BakeOptions {
     }
     spec.half = pixel == "half";
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
+    // std without --gamma takes one more --size entry: the gamma axis.
+    const bool gamma_ok = model == "std" && !Given(app, "--gamma");
+    const size_t entries = !Given(app, "--size") || size.empty()
+                               ? 0
+                               : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
+    const size_t plain = eavg ? 1 : 2;
+    if (entries == plain + 1 && !gamma_ok) {
+      Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
+          " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
+    }
+    const bool gamma_axis = gamma_ok && entries == plain + 1;
     if (eavg) {
       if (!Given(app, "--size")) {
         spec.roughness.size = for_report ? 16 : 32;
-      } else if (size.find('x') != std::string::npos) {
+      } else if (size.find('x') != std::string::npos && !gamma_axis) {
         Bad("--size: E_avg has one axis (roughness): expected N, e.g. --size 32 (got '" + size + "')");
       } else {
-        spec.roughness.size = ParseSize(size, 1, "N")[0];
+        const std::vector<int> n = ParseSize(size, gamma_axis ? 2 : 1, gamma_axis ? "NxD" : "N");
+        spec.roughness.size = n[0];
+        if (gamma_axis) spec.gamma.size = n[1];
       }
     } else {
-      const std::vector<int> wh = ParseSize(size, 2, "WxH (mu x roughness, e.g. 32x32)");
+      const std::vector<int> wh =
+          gamma_axis ? ParseSize(size, 3, "WxHxD (mu x roughness x gamma, e.g. 32x32x16)")
+                     : ParseSize(size, 2,
+                                 gamma_ok ? "WxH (mu x roughness, e.g. 32x32) or WxHxD (x gamma)"
+                                          : "WxH (mu x roughness, e.g. 32x32)");
       spec.mu.size = wh[0];
       spec.roughness.size = wh[1];
+      if (gamma_axis) spec.gamma.size = wh[2];
     }
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
-    spec.mu.placement = spec.roughness.placement = pl;
-    // Per-axis settings: "value" for every axis of the table, or
+    spec.mu.placement = spec.roughness.placement = spec.gamma.placement = pl;
+    // Per-axis settings: "value" for every axis of the table but gamma, or
     // "axis=value"; each axis at most once.
     std::vector<brdfbake::Axis*> axes = {&spec.roughness};
     if (!eavg) axes.insert(axes.begin(), &spec.mu);
+    std::vector<brdfbake::Axis*> named = axes;
+    if (gamma_axis) named.push_back(&spec.gamma);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
                         const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
       std::vector<std::string> seen;
@@ -391,14 +419,17 @@ struct BakeOptions {
         } else {
           const std::string name = item.substr(0, eq);
           value = item.substr(eq + 1);
-          for (brdfbake::Axis* a : axes) {
+          for (brdfbake::Axis* a : named) {
             if (a->name == name) targets.push_back(a);
           }
           if (targets.empty()) {
+            const std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
+                                         (gamma_axis ? " or gamma" : "");
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
-                                      : "unknown axis '" + name + "' (expected " +
-                                            (eavg ? "roughness" : "mu or roughness") + ")"));
+                 : name == "gamma"
+                     ? std::string("no gamma axis (std without --gamma and a third --size entry has one)")
+                     : "unknown axis '" + name + "' (expected " + expected + ")"));
           }
         }
         for (brdfbake::Axis* a : targets) {
@@ -476,8 +507,13 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
                 const brdfbake::Image* image = nullptr) {
   const double claim = image ? image->max_abs_error : table.max_abs_error;
   const int w = image ? image->width : table.width, h = image ? image->height : table.height;
-  std::printf("wrote %s: %s %s %dx%d, %s integrator, baked in %.3f s, max abs error %.2e\n",
-              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), w, h,
+  std::string dims = std::to_string(w) + "x" + std::to_string(h);
+  if (table.spec.HasGammaAxis()) {
+    dims += " (" + std::to_string(table.spec.gamma.size) + " gamma slices of " +
+            std::to_string(h / table.spec.gamma.size) + " rows)";
+  }
+  std::printf("wrote %s: %s %s %s, %s integrator, baked in %.3f s, max abs error %.2e\n",
+              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), dims.c_str(),
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
 }
 
@@ -584,6 +620,10 @@ int RunBake(const BakeOptions& opts) {
   const bool shader = !opts.shader.empty();
   const brdfbake::ShaderLanguage lang =
       shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  if (shader && spec.HasGammaAxis()) {
+    Bad("--shader: the lookup functions read tables over mu and roughness; a table with a gamma "
+        "axis is written without one");
+  }
   brdfbake::CheckOutputPath(opts.output);
   if (shader) brdfbake::CheckOutputPath(ShaderPath(opts.output, lang));
   Progress progress;

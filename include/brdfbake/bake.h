@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,14 @@
 namespace brdfbake {
 
 enum class TableKind { kE, kEavg, kDfg };
-enum class Warp { kLinear, kSquare, kSqrt };
+
+inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// kTail is the gamma axis's warp (STD over gamma, gamma in (1.5, inf]):
+// u = (gamma - 1.5) / (gamma - 0.5) is log-linear in t,
+// u = u(min)^(1 - t) u(max)^t, so gamma = inf (u = 1) can end the axis and
+// the knee of E near gamma = 1.5 (E ~ z / (z + C), z = gamma - 1.5, with C
+// from 1e-4 to 0.1 across texels) gets slices at every scale of z.
+enum class Warp { kLinear, kSquare, kSqrt, kTail };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -47,7 +55,7 @@ Placement ParsePlacement(const std::string& s);
 IntegratorKind ParseIntegrator(const std::string& s);
 
 struct Axis {
-  std::string name;  // "mu" or "roughness"
+  std::string name;  // "mu", "roughness" or "gamma"
   int size = 32;
   double min = 0, max = 1;
   Warp warp = Warp::kLinear;
@@ -57,10 +65,11 @@ struct Axis {
   double clamp_min = 0;
 
   // docs/format.md: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
-  // value = min + (max - min) w(t).
+  // value = min + (max - min) w(t); the tail warp maps t as its comment says.
   double Value(int i) const { return ValueAt(i); }
   // The same map at a fractional index (e.g. i + 0.5, a cell midpoint).
   double ValueAt(double fi) const;
+  // Lists "values" (with "inf" for infinity) when the warp is tail.
   std::string ToJson() const;
 };
 
@@ -76,6 +85,11 @@ struct BakeSpec {
   uint64_t seed = 1;
   Axis mu{"mu", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   Axis roughness{"roughness", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
+  // std only: a third axis over gamma (E and dfg: slices of mu x roughness;
+  // E_avg: rows over gamma), which then replaces model.gamma. size 0 = no
+  // gamma axis, the table is baked at model.gamma.
+  Axis gamma{"gamma", 0, 1.501, kInfinity, Warp::kTail, Placement::kEdges};
+  bool HasGammaAxis() const { return gamma.size > 0; }
   // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
   // instead of the value, dfg adds it as a third channel.
   bool complement = false;
@@ -117,6 +131,7 @@ struct Channel {
 struct Table {
   BakeSpec spec;
   std::vector<Axis> axes;  // fastest varying first
+  // A gamma axis stacks its slices vertically: height = rows x slices.
   int width = 0, height = 0;
   std::vector<Channel> channels;
   double max_abs_error = 0;   // largest estimated error of any stored value
