@@ -20,6 +20,7 @@
 #include <tbb/parallel_for.h>
 
 #include "brdfbake/version.h"
+#include "aniso_ggx.h"
 #include "azimuthal.h"
 #include "integrate.h"
 #include "quadrature_simd.h"
@@ -140,13 +141,24 @@ int BakeSpec::EffectiveSamples() const {
 }
 
 void ValidateBakeSpec(const BakeSpec& spec) {
-  ValidateModelParams(spec.model);
+  const bool aniso = spec.Anisotropic();
+  ModelParams params = spec.model;
+  if (aniso) params.name = "ggx";  // its widths come from the axes
+  ValidateModelParams(params);
   const std::string& m = spec.model.name;
-  if (m != "ggx" && m != "beckmann" && m != "std") {
-    Bad("--model: tables are baked for ggx, beckmann and std (got '" + m + "')");
+  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso) {
+    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" + m + "')");
+  }
+  if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
+  if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
+    Bad("--integrator: ggx-aniso tables are baked with the quadrature only");
   }
   std::vector<const Axis*> axes = {&spec.roughness};
   if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
+  if (aniso) {
+    if (spec.table != TableKind::kEavg) axes.insert(axes.begin() + 1, &spec.phi);
+    axes.push_back(&spec.anisotropy);
+  }
   for (const Axis* a : axes) {
     if (a->warp == Warp::kTail) Bad("--warp: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
     if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
@@ -156,10 +168,13 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     // One entry may sit at one value (min = max), as the report's probes do.
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
     if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
-    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 || a->max > 1) {
+    const bool angle = a->name == "phi_o";
+    const double upper = angle ? kHalfPi : 1.0;
+    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 ||
+        a->max > upper * (1 + 1e-15)) {
       std::ostringstream os;
-      os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= 1 (got " << a->min
-         << ":" << a->max << ")";
+      os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= "
+         << (angle ? "pi/2 (radians)" : "1") << " (got " << a->min << ":" << a->max << ")";
       Bad(os.str());
     }
   }
@@ -282,6 +297,14 @@ TexelValue Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_s
 std::string ModelJson(const BakeSpec& spec) {
   nlohmann::json j;
   j["name"] = spec.model.name;
+  if (spec.Anisotropic()) {
+    j["alpha_t"] = "mix(roughness^2, 1, anisotropy^2), along the tangent (x)";
+    j["alpha_b"] = "roughness^2, along the bitangent (y)";
+    j["definition"] = "glTF KHR_materials_anisotropy (anisotropy = its strength)";
+    j["phi_o"] = "azimuth of wo from the tangent, radians; E is even in phi_o and symmetric "
+                 "about pi/2, so [0, pi/2] covers every azimuth";
+    return j.dump();
+  }
   j["alpha"] = "roughness^2";
   if (spec.model.name == "std" && spec.HasGammaAxis()) {
     j["gamma"] = "the gamma axis (brdfbake.axes); its last value inf is beckmann";
@@ -302,6 +325,18 @@ std::string IntegratorJson(const BakeSpec& spec) {
     case IntegratorKind::kQuadrature:
       j["tolerance"] = spec.tolerance;
       j["max_pieces"] = n;
+      if (spec.Anisotropic()) {
+        j["domain"] = "the slope plane of the half vector, in the stretched polar coordinates "
+                      "(psi, u = rho^2 / (1 + rho^2)) in which the GGX slope density is uniform; "
+                      "wi above the horizon is a disk in slopes, reached along each ray in "
+                      "closed form";
+        j["rule"] = "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
+                    "Gauss-Kronrod 15 in sqrt(u) on pieces graded by 4 towards the disk's edge "
+                    "down to its masking layer (double scalar)";
+        j["error_estimate"] = "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of "
+                              "|K15 - G7| carried through the Kronrod weights";
+        break;
+      }
       if (spec.model.name == "ggx" && spec.table != TableKind::kDfg) {
         j["domain"] = "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
                       "(isotropic GGX); mesh graded geometrically (ratio 3) from the specular "
@@ -353,7 +388,12 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["error_estimate"] = "difference from the converged quadrature (tolerance 1e-10) plus its error";
       break;
   }
-  if (spec.table == TableKind::kEavg) {
+  if (spec.table == TableKind::kEavg && spec.Anisotropic()) {
+    j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu by adaptive "
+                 "Gauss-Kronrod 15 in sqrt(mu) as for the other models, A(mu) the average of "
+                 "E(mu, phi_o) over phi_o in [0, pi/2] by adaptive Gauss-Kronrod 15; error: the "
+                 "rules' |K15 - G7| plus the propagated errors of E";
+  } else if (spec.table == TableKind::kEavg) {
     if (spec.integrator == IntegratorKind::kQuadrature) {
       j["E_avg"] = "2 int_0^1 E(mu) mu dmu, adaptive Gauss-Kronrod 15 in sqrt(mu) from the "
                    "pieces [0, 1/4], [1/4, 1], the worst bisected until the error estimate "
@@ -372,45 +412,106 @@ std::string IntegratorJson(const BakeSpec& spec) {
 
 }  // namespace
 
-EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
-  const double alpha = roughness * roughness;
-  // E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds.
-  if (spec.integrator == IntegratorKind::kQuadrature) {
-    // Adaptive Gauss-Kronrod 15 in s from the pieces [0, 1/4], [1/4, 1]:
-    // the worst piece is bisected until the sum of |K15 - G7| plus the
-    // propagated error of E meets the tolerance (or bisection stops
-    // helping: the rule's part below a tenth of it, or 64 pieces). E near
-    // grazing has a boundary layer, and for the heavy-tailed STD a
-    // non-smooth one, which a fixed rule resolved only to ~1e-5.
+namespace {
+
+// E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds by adaptive
+// Gauss-Kronrod 15 in s from the pieces [0, 1/4], [1/4, 1]: the worst piece
+// is bisected until the sum of |K15 - G7| plus the propagated error of E
+// meets the tolerance (or bisection stops helping: the rule's part below a
+// tenth of it, or 64 pieces). E near grazing has a boundary layer, and for
+// the heavy-tailed STD a non-smooth one, which a fixed rule resolved only to
+// ~1e-5. `e_at(mu)` gives E and its error.
+template <class EAt>
+EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
+  struct Piece {
+    double a, b, value, err, prop;
+  };
+  const KronrodRule& r = Kronrod15();
+  auto piece = [&](double a, double b) {
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double k = 0, g = 0, prop = 0;
+    for (int i = 0; i < 15; ++i) {
+      const double sv = c + h * r.x[i];
+      const TexelValue v = e_at(sv * sv);
+      const double jac = 4 * sv * sv * sv;
+      k += r.wk[i] * jac * v.e;
+      g += r.wg[i] * jac * v.e;
+      prop += r.wk[i] * jac * v.err_e;
+    }
+    return Piece{a, b, k * h, std::abs(k - g) * h, prop * h};
+  };
+  std::vector<Piece> pieces = {piece(0.0, 0.25), piece(0.25, 1.0)};
+  auto sums = [&](double* rule, double* prop) {
+    *rule = *prop = 0;
+    for (const Piece& p : pieces) {
+      *rule += p.err;
+      *prop += p.prop;
+    }
+  };
+  double rule_err, prop_err;
+  sums(&rule_err, &prop_err);
+  while (rule_err + prop_err > tolerance && rule_err > 0.1 * tolerance && pieces.size() < 64) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    pieces[worst] = piece(p.a, m);
+    pieces.push_back(piece(m, p.b));
+    sums(&rule_err, &prop_err);
+  }
+  double value = 0;
+  for (const Piece& p : pieces) value += p.value;
+  return {value, rule_err + prop_err + 4e-16 * value};
+}
+
+// ggx-aniso: E at one texel by the slope-plane rule (aniso_ggx.h); below
+// alpha_t = 1e-4 (hence alpha_b too) a mirror, as for ggx.
+TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, double phi) {
+  const double alpha_t = AnisotropyAlphaT(r, s);
+  if (alpha_t < kMinAlpha<double>) return MirrorTexel(mu);
+  const AzimuthalResult a = AnisoGgxAlbedo(alpha_t, r * r, std::max(mu, kMuMin), phi,
+                                           spec.masking, spec.tolerance, spec.EffectiveSamples());
+  TexelValue v;
+  v.e = a.value;
+  v.err_e = a.error;
+  return v;
+}
+
+// ggx-aniso: E_avg = (1 / pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu
+// (AdaptiveEavg) with A(mu) the average of E(mu, phi_o) over phi_o in
+// [0, pi/2] (E is even in phi_o and symmetric about pi/2). At grazing E
+// changes over phi_o within about alpha_b / alpha_t of pi/2, where the
+// effective width sqrt(alpha_t^2 cos^2 + alpha_b^2 sin^2) turns from
+// alpha_t to alpha_b: A is adaptive Gauss-Kronrod 15, the worst piece
+// bisected until its |K15 - G7| sum is below a third of the tolerance.
+EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
+  const KronrodRule& rule = Kronrod15();
+  auto average_over_phi = [&](double mu) {
     struct Piece {
       double a, b, value, err, prop;
     };
-    const KronrodRule& r = Kronrod15();
     auto piece = [&](double a, double b) {
       const double c = 0.5 * (a + b), h = 0.5 * (b - a);
       double k = 0, g = 0, prop = 0;
       for (int i = 0; i < 15; ++i) {
-        const double sv = c + h * r.x[i];
-        const TexelValue v = Texel(spec, alpha, sv * sv, 0);
-        const double jac = 4 * sv * sv * sv;
-        k += r.wk[i] * jac * v.e;
-        g += r.wg[i] * jac * v.e;
-        prop += r.wk[i] * jac * v.err_e;
+        const TexelValue v = AnisoTexel(spec, r, s, mu, c + h * rule.x[i]);
+        k += rule.wk[i] * v.e;
+        g += rule.wg[i] * v.e;
+        prop += rule.wk[i] * v.err_e;
       }
-      return Piece{a, b, k * h, std::abs(k - g) * h, prop * h};
+      // The average over [0, pi/2]: weight h / (pi / 2).
+      const double scale = h / kHalfPi;
+      return Piece{a, b, k * scale, std::abs(k - g) * scale, prop * scale};
     };
-    std::vector<Piece> pieces = {piece(0.0, 0.25), piece(0.25, 1.0)};
-    auto sums = [&](double* rule, double* prop) {
-      *rule = *prop = 0;
-      for (const Piece& p : pieces) {
-        *rule += p.err;
-        *prop += p.prop;
-      }
+    std::vector<Piece> pieces = {piece(0.0, kHalfPi)};
+    auto rule_error = [&] {
+      double e = 0;
+      for (const Piece& p : pieces) e += p.err;
+      return e;
     };
-    double rule_err, prop_err;
-    sums(&rule_err, &prop_err);
-    while (rule_err + prop_err > spec.tolerance && rule_err > 0.1 * spec.tolerance &&
-           pieces.size() < 64) {
+    while (rule_error() > spec.tolerance / 3 && pieces.size() < 32) {
       size_t worst = 0;
       for (size_t i = 1; i < pieces.size(); ++i) {
         if (pieces[i].err > pieces[worst].err) worst = i;
@@ -419,11 +520,23 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
       const double m = 0.5 * (p.a + p.b);
       pieces[worst] = piece(p.a, m);
       pieces.push_back(piece(m, p.b));
-      sums(&rule_err, &prop_err);
     }
-    double value = 0;
-    for (const Piece& p : pieces) value += p.value;
-    return {value, rule_err + prop_err + 4e-16 * value};
+    TexelValue v;
+    for (const Piece& p : pieces) {
+      v.e += p.value;
+      v.err_e += p.err + p.prop;
+    }
+    return v;
+  };
+  return AdaptiveEavg(average_over_phi, spec.tolerance);
+}
+
+}  // namespace
+
+EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
+  const double alpha = roughness * roughness;
+  if (spec.integrator == IntegratorKind::kQuadrature) {
+    return AdaptiveEavg([&](double mu) { return Texel(spec, alpha, mu, 0); }, spec.tolerance);
   }
   // The sampling integrators: a fixed rule, 32-node Gauss-Legendre in s
   // with the 16-node rule for the error estimate (each E carries its own
@@ -455,6 +568,10 @@ int ValueChannels(const BakeSpec& spec) {
 }
 
 int64_t TexelCount(const BakeSpec& spec) {
+  if (spec.Anisotropic()) {
+    const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
+    return spec.table == TableKind::kEavg ? rs : rs * spec.mu.size * spec.phi.size;
+  }
   const int64_t slices = spec.HasGammaAxis() ? spec.gamma.size : 1;
   return slices * (spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
                                                   : int64_t(spec.mu.size) * spec.roughness.size);
@@ -539,6 +656,16 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     slice_specs.assign(size_t(spec.gamma.size), spec);
     for (int k = 0; k < spec.gamma.size; ++k) slice_specs[k].model.gamma = spec.gamma.Value(k);
   }
+  const bool aniso = spec.Anisotropic();
+  if (aniso) {
+    if (eavg) {
+      t.axes = {ax_r, spec.anisotropy};
+      t.height = spec.anisotropy.size;
+    } else {
+      t.axes = {ax_mu, spec.phi, ax_r, spec.anisotropy};
+      t.height = spec.phi.size * ax_r.size * spec.anisotropy.size;
+    }
+  }
   std::vector<std::string> meanings;
   if (spec.table == TableKind::kE) {
     meanings = {spec.complement ? "1-E" : "E"};
@@ -585,8 +712,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   if (eavg) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
-      const EavgEstimate e =
-          IntegrateEavg(slice_specs[z], std::max(ax_r.Value(x), ax_r.clamp_min), uint64_t(i));
+      const double r = std::max(ax_r.Value(x), ax_r.clamp_min);
+      const EavgEstimate e = aniso ? AnisoEavg(spec, r, spec.anisotropy.Value(z))
+                                   : IntegrateEavg(slice_specs[z], r, uint64_t(i));
       const double value = std::clamp(e.value, 0.0, 1.0);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;
@@ -595,10 +723,18 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   } else {
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
-      const int ry = y % ax_r.size, z = y / ax_r.size;
-      const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
-      const TexelValue v = Texel(slice_specs[z], r * r, std::max(ax_mu.Value(x), ax_mu.clamp_min),
-                                 Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+      const double mu = std::max(ax_mu.Value(x), ax_mu.clamp_min);
+      TexelValue v;
+      if (aniso) {
+        // Rows: phi_o fastest, then roughness, then anisotropy.
+        const int yp = y % spec.phi.size, rest = y / spec.phi.size;
+        const double r = std::max(ax_r.Value(rest % ax_r.size), ax_r.clamp_min);
+        v = AnisoTexel(spec, r, spec.anisotropy.Value(rest / ax_r.size), mu, spec.phi.Value(yp));
+      } else {
+        const int ry = y % ax_r.size, z = y / ax_r.size;
+        const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
+        v = Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+      }
       if (spec.table == TableKind::kE) {
         const double e = std::clamp(v.e, 0.0, 1.0);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;
@@ -672,6 +808,18 @@ TexelEstimate ClampToRange(const TexelEstimate& v) {
   c.scale = s;
   c.bias = b;
   return c;
+}
+
+TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy,
+                                  double mu, double phi_o) {
+  ValidateBakeSpec(spec);
+  const TexelValue v = AnisoTexel(spec, roughness, anisotropy, mu, phi_o);
+  return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
+}
+
+EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double anisotropy) {
+  ValidateBakeSpec(spec);
+  return AnisoEavg(spec, roughness, anisotropy);
 }
 
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,

@@ -34,7 +34,14 @@ const std::vector<std::string>& EvalQuantities() {
 bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg"; }
 
 void ValidateEvalRequest(const EvalRequest& req) {
-  ValidateModelParams(req.model);
+  const bool aniso = req.model.name == "ggx-aniso";
+  ModelParams params = req.model;
+  if (aniso) params.name = "ggx";  // the widths come from roughness and anisotropy
+  ValidateModelParams(params);
+  if (aniso && !(req.anisotropy >= 0 && req.anisotropy <= 1)) {
+    Bad("--anisotropy must lie in [0, 1] (the KHR_materials_anisotropy strength)");
+  }
+  if (!aniso && req.anisotropy != 0) Bad("--anisotropy applies to --model ggx-aniso only");
   if (req.quantities.empty()) Bad("--quantity: at least one quantity is required");
   for (const std::string& q : req.quantities) {
     bool ok = false;
@@ -46,9 +53,10 @@ void ValidateEvalRequest(const EvalRequest& req) {
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
       const std::string& m = req.model.name;
-      if (m != "ggx" && m != "beckmann" && m != "std") {
-        Bad("--quantity: " + q + " is baked for ggx, beckmann and std only (got '" + m + "')");
+      if (m != "ggx" && m != "beckmann" && m != "std" && !aniso) {
+        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann and std only (got '" + m + "')");
       }
+      if (aniso && q == "dfg") Bad("--quantity: ggx-aniso has E and E_avg (no dfg)");
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
             "not --alpha-x/--alpha-y");
@@ -58,6 +66,7 @@ void ValidateEvalRequest(const EvalRequest& req) {
       }
       continue;
     }
+    if (aniso) Bad("--quantity: ggx-aniso has the table quantities E and E_avg only (got '" + q + "')");
     if (table_sweep) {
       Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
           "direction (got '" + q + "')");
@@ -110,6 +119,15 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
   BakeSpec spec;
   spec.model = req.model;
   spec.masking = req.masking;
+  if (spec.Anisotropic()) {
+    if (q == "E_avg") {
+      const EavgEstimate e = IntegrateAnisoEavg(spec, roughness, req.anisotropy);
+      return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
+    }
+    const TexelEstimate v =
+        IntegrateAnisoTexel(spec, roughness, req.anisotropy, std::clamp(mu, 0.0, 1.0), req.phi_o);
+    return "," + Fmt(std::clamp(v.e, 0.0, 1.0)) + "," + Fmt(v.err_e);
+  }
   if (q == "E_avg") {
     const EavgEstimate e = IntegrateEavg(spec, roughness);
     return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
@@ -125,7 +143,9 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
 void EvalCsv(const EvalRequest& req, std::ostream& out) {
   ValidateEvalRequest(req);
   const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
-  const std::unique_ptr<Model> model = MakeModel(req.model);
+  // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
+  const std::unique_ptr<Model> model =
+      req.model.name == "ggx-aniso" ? nullptr : MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 

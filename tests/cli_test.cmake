@@ -226,6 +226,27 @@ expect_one_line_error(bake --table E --model std --size 6x5x4 --shader glsl -o "
 if(EXISTS "${out_dir}/gamma_bad.exr")
   message(FATAL_ERROR "a rejected gamma-axis bake left gamma_bad.exr behind")
 endif()
+# ggx-aniso: E over mu x phi_o x roughness x anisotropy, E_avg over
+# roughness x anisotropy; eval gives one value of either.
+run_tool(TRUE out err bake --table E --model ggx-aniso --size 4x3x3x2 -o "${out_dir}/aniso.exr")
+if(NOT out MATCHES "wrote .*E ggx-aniso 4x18")
+  message(FATAL_ERROR "bake ggx-aniso --size 4x3x3x2: '${out}'")
+endif()
+run_tool(TRUE out err bake --table E_avg --model ggx-aniso --size 3x2 --range roughness=0.3:1
+         -o "${out_dir}/aniso_avg.exr")
+run_tool(TRUE out err eval --quantity E --model ggx-aniso --roughness 0.5 --anisotropy 0.8
+         --mu-o 0.3 --phi-o 40)
+if(NOT out MATCHES "^mu,roughness,E,E_error\n0.29999999999999999,0.5,0\\.75")
+  message(FATAL_ERROR "eval ggx-aniso E: '${out}'")
+endif()
+expect_one_line_error(bake --table dfg --model ggx-aniso -o "${out_dir}/aniso_bad.exr")
+expect_one_line_error(bake --table E --model ggx-aniso --size 4x4 -o "${out_dir}/aniso_bad.exr")
+expect_one_line_error(bake --table E --model ggx-aniso --integrator qmc -o "${out_dir}/aniso_bad.exr")
+expect_one_line_error(bake --table E --model ggx-aniso --size 4x3x3x2 --range phi_o=0:3
+                      -o "${out_dir}/aniso_bad.exr")
+expect_one_line_error(eval --quantity D --model ggx-aniso --roughness 0.5)
+expect_one_line_error(eval --quantity E --model ggx-aniso --roughness 0.5 --anisotropy 2)
+expect_one_line_error(eval --quantity E --model ggx --roughness 0.5 --anisotropy 0.5)
 # A preset fixes its tables; other presets and formats are named in the error.
 expect_one_line_error(bake --preset filament --size 64x64)
 expect_one_line_error(bake --preset unity)

@@ -26,10 +26,13 @@ namespace brdfbake {
 // at azimuth 0 and a given theta_h, both wo.h > 0 and wi.z > 0 are of the
 // form cos(phi_h) > c, so the valid azimuths are one arc |phi_h| < phi_max
 // found in closed form, and the integrand is smooth on it.
+// `phi_o` turns wo (and the half vectors with it) about the normal: the
+// arc conditions depend only on the azimuth relative to wo.
 template <class Ndf>
-inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double tol) {
+inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double tol,
+                            double phi_o = 0.0) {
   const double mu_o = std::max(mu, 1e-7);
-  const Vec3<double> wo = FromMuPhi(mu_o, 0.0);
+  const Vec3<double> wo = FromMuPhi(mu_o, phi_o);
   const double so = std::sqrt(std::max(0.0, 1 - mu_o * mu_o));
   // The arc is cos(phi_h) > c(theta_h).
   auto ArcCos = [&](double th) {
@@ -45,7 +48,7 @@ inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double t
     const double c = ArcCos(th);
     if (c >= 1) return 0.0;
     auto f = [&](double phi) {
-      const Vec3<double> h(sh * std::cos(phi), sh * std::sin(phi), ch);
+      const Vec3<double> h(sh * std::cos(phi + phi_o), sh * std::sin(phi + phi_o), ch);
       const double wo_h = Dot(wo, h);
       const Vec3<double> wi = Reflect(wo, h);
       if (!(wo_h > 0) || !(wi.z > 0)) return 0.0;
@@ -54,7 +57,10 @@ inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double t
     const double phi_max = c <= -1 ? kPi<double> : std::acos(c);
     // tanh-sinh: the integrand can have square-root behaviour at the arc's ends.
     static thread_local boost::math::quadrature::tanh_sinh<double> ts(12);
-    return sh * 2 * ts.integrate(f, 0.0, phi_max, tol);
+    if (phi_o == 0.0) return sh * 2 * ts.integrate(f, 0.0, phi_max, tol);
+    // Without the mirror symmetry of an isotropic model about wo's plane.
+    auto both = [&](double phi) { return f(phi) + f(-phi); };
+    return sh * ts.integrate(both, 0.0, phi_max, tol);
   };
   // Split theta_h where the arc becomes full (c = -1) or empty (c = 1): the
   // outer integrand has square-root behaviour there.

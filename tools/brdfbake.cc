@@ -135,7 +135,8 @@ struct ModelOptions {
 
   void Add(CLI::App* a) {
     app = a;
-    app->add_option("--model,-m", model, "ggx | beckmann | std | ellipsoid | sel")
+    app->add_option("--model,-m", model,
+                    "ggx | beckmann | std | ellipsoid | sel, or ggx-aniso (E, E_avg only)")
         ->capture_default_str();
     app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25");
     app->add_option("--alpha-x", alpha_x, "alpha along the tangent");
@@ -173,7 +174,15 @@ struct ModelOptions {
     p.theta_x = theta_x_deg * kDegree;
     p.theta_y = theta_y_deg * kDegree;
     p.theta_z = theta_z_deg * kDegree;
-    brdfbake::ValidateModelParams(p);
+    brdfbake::ModelParams check = p;
+    if (model == "ggx-aniso") {
+      // A table model: its widths come from --roughness and --anisotropy.
+      if (!alpha_x.empty() || !alpha_y.empty()) {
+        Bad("--alpha-x/--alpha-y: ggx-aniso takes --roughness and --anisotropy");
+      }
+      check.name = "ggx";
+    }
+    brdfbake::ValidateModelParams(check);
     return p;
   }
 };
@@ -275,7 +284,9 @@ struct BakeOptions {
     app = a;
     for_report = report;
     app->add_option("--table,-t", table, "E | E_avg | dfg");
-    app->add_option("--model,-m", model, "ggx | beckmann | std")->capture_default_str();
+    app->add_option("--model,-m", model,
+                    "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy)")
+        ->capture_default_str();
     app->add_option("--gamma", gamma,
                     "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
                     "over a gamma axis")
@@ -373,12 +384,30 @@ struct BakeOptions {
                                ? 0
                                : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const size_t plain = eavg ? 1 : 2;
-    if (entries == plain + 1 && !gamma_ok) {
+    if (entries == plain + 1 && !gamma_ok && model != "ggx-aniso") {
       Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
           " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
     }
     const bool gamma_axis = gamma_ok && entries == plain + 1;
-    if (eavg) {
+    const bool aniso = model == "ggx-aniso";
+    if (aniso) {
+      // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
+      const std::vector<int> n =
+          !Given(app, "--size")
+              ? (eavg ? std::vector<int>{32, 16} : std::vector<int>{32, 16, 32, 16})
+              : ParseSize(size, eavg ? 2 : 4,
+                          eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
+                               : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)");
+      if (eavg) {
+        spec.roughness.size = n[0];
+        spec.anisotropy.size = n[1];
+      } else {
+        spec.mu.size = n[0];
+        spec.phi.size = n[1];
+        spec.roughness.size = n[2];
+        spec.anisotropy.size = n[3];
+      }
+    } else if (eavg) {
       if (!Given(app, "--size")) {
         spec.roughness.size = for_report ? 16 : 32;
       } else if (size.find('x') != std::string::npos && !gamma_axis) {
@@ -400,10 +429,15 @@ struct BakeOptions {
     }
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
     spec.mu.placement = spec.roughness.placement = spec.gamma.placement = pl;
+    spec.phi.placement = spec.anisotropy.placement = pl;
     // Per-axis settings: "value" for every axis of the table but gamma, or
     // "axis=value"; each axis at most once.
     std::vector<brdfbake::Axis*> axes = {&spec.roughness};
     if (!eavg) axes.insert(axes.begin(), &spec.mu);
+    if (aniso) {
+      if (!eavg) axes.insert(axes.begin() + 1, &spec.phi);
+      axes.push_back(&spec.anisotropy);
+    }
     std::vector<brdfbake::Axis*> named = axes;
     if (gamma_axis) named.push_back(&spec.gamma);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
@@ -423,8 +457,9 @@ struct BakeOptions {
             if (a->name == name) targets.push_back(a);
           }
           if (targets.empty()) {
-            const std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
-                                         (gamma_axis ? " or gamma" : "");
+            std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
+                                   (gamma_axis ? " or gamma" : "");
+            if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
@@ -721,6 +756,10 @@ struct EvalOptions {
     eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf, E, dfg)")
         ->capture_default_str();
     eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
+    eval->add_option("--anisotropy", req.anisotropy,
+                     "ggx-aniso: KHR_materials_anisotropy strength s in [0, 1] (alpha_t = "
+                     "mix(r^2, 1, s^2), alpha_b = r^2)")
+        ->capture_default_str();
     eval->add_option("--grid", grid_kind,
                      "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
                      "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");

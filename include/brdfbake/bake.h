@@ -22,6 +22,7 @@ namespace brdfbake {
 enum class TableKind { kE, kEavg, kDfg };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
+inline constexpr double kHalfPi = 1.5707963267948966;
 // kTail is the gamma axis's warp (STD over gamma, gamma in (1.5, inf]):
 // u = (gamma - 1.5) / (gamma - 0.5) is log-linear in t,
 // u = u(min)^(1 - t) u(max)^t, so gamma = inf (u = 1) can end the axis and
@@ -90,6 +91,14 @@ struct BakeSpec {
   // gamma axis, the table is baked at model.gamma.
   Axis gamma{"gamma", 0, 1.501, kInfinity, Warp::kTail, Placement::kEdges};
   bool HasGammaAxis() const { return gamma.size > 0; }
+  // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
+  // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over
+  // mu x phi_o x roughness x anisotropy, E_avg over roughness x anisotropy.
+  // phi_o is the azimuth of wo from the tangent in radians; E is even in
+  // phi_o and symmetric about pi/2, so [0, pi/2] covers every azimuth.
+  Axis phi{"phi_o", 16, 0.0, kHalfPi, Warp::kLinear, Placement::kEdges};
+  Axis anisotropy{"anisotropy", 16, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
+  bool Anisotropic() const { return model.name == "ggx-aniso"; }
   // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
   // instead of the value, dfg adds it as a third channel.
   bool complement = false;
@@ -171,6 +180,12 @@ struct EavgEstimate {
   double value = 0, error = 0;
 };
 EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index = 0);
+
+// ggx-aniso: E at (roughness, anisotropy, mu, phi_o) and E_avg at
+// (roughness, anisotropy), as the tables bake them (the quadrature).
+TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy,
+                                  double mu, double phi_o);
+EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double anisotropy);
 
 // "axes fastest first: ..." and the axis map, for the brdfbake.layout attribute.
 extern const char* const kLayoutText;

@@ -38,6 +38,7 @@ struct EvalRequest {
   double mu_o = 1.0;   // cos(theta) of the fixed view wo
   double phi_o = 0.0;  // azimuth of wo, radians
   double phi = 0.0;    // azimuth of the swept direction, radians
+  double anisotropy = 0.0;  // ggx-aniso (E, E_avg): KHR_materials_anisotropy strength
   std::string sweep = "mu";  // mu | theta | roughness | none
   double from = 0.0, to = 1.0;
   int count = 11;
