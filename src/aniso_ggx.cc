@@ -11,18 +11,19 @@ namespace brdfbake {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586;
+// Each ray's pieces shrink by this factor towards the disk's edge.
+constexpr double kRayGrading = 0.25;
 
 struct Frame {
   double ax, ay, wx, wy, wz, cx, cy, lambda_o;
   bool separable;
+  // Eval's G2 = 2 Z / (z_weight Z + sqrt(Z^2 + P)) g_scale.
+  double z_weight, g_scale;
   // GGX Lambda = (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))), 1/a^2 = |alpha o w_xy|^2 / w.z^2.
   double Lambda(double x, double y, double z) const {
     const double px = ax * x, py = ay * y;
     const double inv_a2 = (px * px + py * py) / (z * z);
     return inv_a2 / (2 * (1 + std::sqrt(1 + inv_a2)));
-  }
-  double G2(double lambda_i) const {
-    return separable ? 1 / ((1 + lambda_i) * (1 + lambda_o)) : 1 / (1 + lambda_i + lambda_o);
   }
 };
 
@@ -42,7 +43,14 @@ struct Ray {
     u_b = rho_b * rho_b * one_minus_ub;
   }
 
-  // G2 (1 + rho c.e) at u = u_b - w.
+  // G2 (1 + rho c.e) at u = u_b - w. With M = (1 - u_b) (1 - u) (rho_b + rho)
+  // (rho_b - rho = w / M) and N^2 = 1 + rho^2 |e|^2, wi scaled by N^2 M is
+  //   Z  = wo.z |e|^2 w (rho + 1 / (S + c.e))           (its z, >= 0)
+  //   XY = -(2 wo.z lin m + wo_xy N^2) M                (m = rho e)
+  // and 1 + Lambda(wi) = (1 + sqrt(1 + P / Z^2)) / 2, P = |alpha o XY|^2, so
+  //   height-correlated: G2 = 2 Z / ((1 + 2 Lambda(wo)) Z + sqrt(Z^2 + P)),
+  //   separable:         G2 = 2 Z / (Z + sqrt(Z^2 + P)) / (1 + Lambda(wo)):
+  // one division and one square root besides rho's.
   double Eval(const Frame& f, double w) const {
     const double u = std::max(0.0, u_b - w);
     const double omu = one_minus_ub + w;  // 1 - u
@@ -50,13 +58,14 @@ struct Ray {
     const double p = rho * ex, q = rho * ey;
     const double n2 = 1 + p * p + q * q;
     const double lin = 1 + rho * ce;
-    // rho_b - rho = (rho_b^2 - rho^2) / (rho_b + rho), rho_b^2 - rho^2 = w / ((1 - u_b) (1 - u)).
-    const double drho = w / (one_minus_ub * omu * (rho_b + rho));
-    const double wiz = f.wz * ee * drho * (rho + inv_s_plus_ce) / n2;
-    if (!(wiz > 0) || !(lin > 0)) return 0;
-    const double k = 2 * f.wz * lin / n2;
-    const double wix = -k * p - f.wx, wiy = -k * q - f.wy;
-    return f.G2(f.Lambda(wix, wiy, wiz)) * lin;
+    const double m = one_minus_ub * omu * (rho_b + rho);
+    const double z = f.wz * ee * w * (rho + inv_s_plus_ce);
+    if (!(z > 0) || !(lin > 0)) return 0;
+    const double k = 2 * f.wz * lin;
+    const double x = -(k * p + f.wx * n2) * m, y = -(k * q + f.wy * n2) * m;
+    const double ax = f.ax * x, ay = f.ay * y;
+    const double root = std::sqrt(z * z + (ax * ax + ay * ay));
+    return 2 * z * lin / (f.z_weight * z + root) * f.g_scale;
   }
 
   // The integral over [0, u_b] and its error estimate. The slope rho is
@@ -106,7 +115,7 @@ struct Ray {
     int n = 0;
     double hi = v_b;
     for (int level = 0; level < 60 && hi > x_stop; ++level) {
-      const double lo = 0.25 * hi;
+      const double lo = kRayGrading * hi;
       pieces[n++] = piece(lo, hi);
       hi = lo;
     }
@@ -156,7 +165,11 @@ AzimuthalResult AnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double
   f.cy = -f.wy / f.wz;
   f.separable = masking == Masking::kSeparable;
   f.lambda_o = f.Lambda(f.wx, f.wy, f.wz);
-  const double skip_eps = 1e-3 * tol;
+  f.z_weight = f.separable ? 1 : 1 + 2 * f.lambda_o;
+  f.g_scale = f.separable ? 1 / (1 + f.lambda_o) : 1;
+  // A ray's part next to the edge is left out where its bound is below
+  // skip_eps (the bound is added to the ray's error).
+  const double skip_eps = 0.05 * tol;
   // Each ray's error enters E with the psi rule's weights (summing to 1):
   // a ray within a fifth of the tolerance leaves the rest to the psi rule.
   const double ray_tol = 0.2 * tol;

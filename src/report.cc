@@ -102,6 +102,70 @@ InterpolationRow GammaInterpolation(const BakeSpec& base, int n, int probes) {
   return row;
 }
 
+// The isotropic widths the collapses give for alpha_t, alpha_b and the
+// view's azimuth phi_o from the tangent.
+double CollapsedAlpha(const std::string& collapse, double at, double ab, double phi) {
+  // Cycles uses sqrt(sqrt(alpha_t alpha_b)) as roughness, MaterialX and
+  // Enterprise PBR the geometric mean: both are alpha = sqrt(alpha_t alpha_b).
+  if (collapse == "geometric-mean") return std::sqrt(at * ab);
+  if (collapse == "arithmetic-mean") return 0.5 * (at + ab);
+  // The width the view sees: Lambda(wo) of the anisotropic GGX equals the
+  // isotropic one at this alpha, so G1(wo) is exact.
+  const double c = std::cos(phi), s = std::sin(phi);
+  return std::sqrt(at * at * c * c + ab * ab * s * s);
+}
+
+std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const ReportLog& say) {
+  const char* const collapses[] = {"geometric-mean", "arithmetic-mean", "view-projected"};
+  const int nm = spec.mu.size, np = spec.phi.size, nr = spec.roughness.size;
+  std::vector<CollapseRow> rows;
+  for (int ys = 0; ys < spec.anisotropy.size; ++ys) {
+    const double s = spec.anisotropy.Value(ys);
+    // True E and the three collapsed values at every (mu, phi_o, r), in
+    // parallel; the reduction is serial (thread-count independent).
+    std::vector<double> truth(size_t(nm) * np * nr), iso(truth.size() * 3);
+    tbb::parallel_for(0, nm * np * nr, [&](int k) {
+      const int x = k % nm, yp = (k / nm) % np, yr = k / (nm * np);
+      const double r = std::max(spec.roughness.Value(yr), spec.roughness.clamp_min);
+      const double mu = std::max(spec.mu.Value(x), spec.mu.clamp_min), phi = spec.phi.Value(yp);
+      truth[k] = std::clamp(IntegrateAnisoTexel(spec, r, s, mu, phi).e, 0.0, 1.0);
+      BakeSpec g;
+      g.masking = spec.masking;
+      g.tolerance = spec.tolerance;
+      const double at = r * r + (1 - r * r) * s * s, ab = r * r;
+      for (int c = 0; c < 3; ++c) {
+        const double alpha = CollapsedAlpha(collapses[c], at, ab, phi);
+        iso[size_t(k) * 3 + c] = std::clamp(IntegrateTexel(g, std::sqrt(alpha), mu).e, 0.0, 1.0);
+      }
+    });
+    for (int c = 0; c < 3; ++c) {
+      CollapseRow row;
+      row.anisotropy = s;
+      row.collapse = collapses[c];
+      double sum2 = 0;
+      for (size_t k = 0; k < truth.size(); ++k) {
+        const double d = std::abs(iso[k * 3 + c] - truth[k]);
+        sum2 += d * d;
+        if (d > row.max_abs_error) {
+          row.max_abs_error = d;
+          row.worst_roughness = spec.roughness.Value(int(k) / (nm * np));
+          row.worst_mu = spec.mu.Value(int(k) % nm);
+          row.worst_phi = spec.phi.Value((int(k) / nm) % np);
+        }
+      }
+      row.rms_error = truth.empty() ? 0 : std::sqrt(sum2 / truth.size());
+      if (say) {
+        say("anisotropy " + Num(s, "%.3g") + ", " + row.collapse + ": max error " +
+            Num(row.max_abs_error, "%.2e") + " (r " + Num(row.worst_roughness, "%.3g") + ", mu " +
+            Num(row.worst_mu, "%.3g") + ", phi_o " + Num(row.worst_phi * 180 / kPi<double>, "%.3g") +
+            " deg), rms " + Num(row.rms_error, "%.2e"));
+      }
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
 }  // namespace
 
 Report RunReport(const ReportSpec& spec, const ReportLog& log) {
@@ -114,6 +178,13 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   };
   Report report;
   report.spec = spec;
+  if (spec.table.Anisotropic()) {
+    if (spec.table.table != TableKind::kE) {
+      throw std::invalid_argument("report: ggx-aniso reports the collapse study of E (--table E)");
+    }
+    report.collapse = CollapseStudy(spec.table, say);
+    return report;
+  }
 
   // The converged reference.
   BakeSpec ref_spec = spec.table;
@@ -366,8 +437,72 @@ std::string LogLogSvg(const std::string& title, const std::string& x_label,
   return o.str();
 }
 
+namespace {
+
+// All or nothing: every file is written to its temporary first; only when
+// all are complete are they renamed, one after the other.
+void WriteFiles(const std::vector<std::pair<std::string, std::string>>& files,
+                const std::string& dir) {
+  std::vector<std::unique_ptr<AtomicFile>> out;
+  for (const auto& f : files) {
+    out.push_back(std::make_unique<AtomicFile>(dir + "/" + f.first));
+    out.back()->Append(f.second);
+  }
+  std::string renamed;
+  for (size_t i = 0; i < out.size(); ++i) {
+    try {
+      out[i]->Commit();
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string(e.what()) + (renamed.empty() ? "; no report file was written"
+                                                                         : "; written before the failure:" + renamed));
+    }
+    renamed += " " + files[i].first;
+  }
+}
+
+void WriteCollapse(const Report& report, const std::string& dir) {
+  const BakeSpec& t = report.spec.table;
+  std::ostringstream csv;
+  csv << "anisotropy,collapse,max_abs_error,rms_error,worst_roughness,worst_mu,worst_phi_o_deg\n";
+  std::vector<Series> series;
+  for (const CollapseRow& r : report.collapse) {
+    csv << Num(r.anisotropy) << "," << r.collapse << "," << Num(r.max_abs_error) << ","
+        << Num(r.rms_error) << "," << Num(r.worst_roughness) << "," << Num(r.worst_mu) << ","
+        << Num(r.worst_phi * 180 / kPi<double>) << "\n";
+    if (!(r.anisotropy > 0)) continue;  // log axes: s = 0 has no error
+    Series* s = nullptr;
+    for (Series& x : series) {
+      if (x.name == r.collapse) s = &x;
+    }
+    if (!s) {
+      series.push_back({r.collapse, {}, {}});
+      s = &series.back();
+    }
+    s->x.push_back(r.anisotropy);
+    s->y.push_back(std::max(r.max_abs_error, 1e-12));
+  }
+  const std::string footnote =
+      "max |E_iso(collapsed alpha) - E_aniso| over mu " + Num(t.mu.min) + ".." + Num(t.mu.max) +
+      " (" + std::to_string(t.mu.size) + "), phi_o 0..90 deg (" + std::to_string(t.phi.size) +
+      "), roughness " + Num(t.roughness.min) + ".." + Num(t.roughness.max) + " (" +
+      std::to_string(t.roughness.size) + "); exact isotropic E, no table lookup";
+  WriteFiles({{"collapse.csv", csv.str()},
+              {"collapse.svg",
+               LogLogSvg("ggx-aniso E (" + std::string(MaskingName(t.masking)) +
+                             "): the cost of one isotropic width",
+                         "anisotropy strength s (KHR_materials_anisotropy)", "max abs error of E",
+                         series, footnote)}},
+             dir);
+}
+
+}  // namespace
+
 void WriteReport(const Report& report, const std::string& dir) {
   const BakeSpec& t = report.spec.table;
+  if (t.Anisotropic()) {
+    WriteCollapse(report, dir);
+    return;
+  }
   std::ostringstream csv;
   csv << "integrator,budget_name,budget,seconds_median,seconds_min,max_abs_error,rms_error,"
          "claimed_max_error\n";
@@ -434,23 +569,7 @@ void WriteReport(const Report& report, const std::string& dir) {
                            ", warp mu " + WarpName(t.mu.warp) + ", roughness " +
                            WarpName(t.roughness.warp) +
                            "; exact values from the quadrature at cell midpoints")}};
-  // All or nothing: every file is written to its temporary first; only
-  // when all four are complete are they renamed, one after the other.
-  std::vector<std::unique_ptr<AtomicFile>> out;
-  for (const auto& f : files) {
-    out.push_back(std::make_unique<AtomicFile>(dir + "/" + f.first));
-    out.back()->Append(f.second);
-  }
-  std::string renamed;
-  for (size_t i = 0; i < out.size(); ++i) {
-    try {
-      out[i]->Commit();
-    } catch (const std::exception& e) {
-      throw std::runtime_error(std::string(e.what()) + (renamed.empty() ? "; no report file was written"
-                                                                         : "; written before the failure:" + renamed));
-    }
-    renamed += " " + files[i].first;
-  }
+  WriteFiles(files, dir);
 }
 
 }  // namespace brdfbake

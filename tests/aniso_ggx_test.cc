@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 #include "quadrature.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/ggx.h"
+#include "brdfbake/report.h"
 #include "reference_albedo.h"
 
 namespace brdfbake {
@@ -210,6 +212,32 @@ TEST(AnisoGgxTest, EavgAgreesWithIsotropicAndADirectRule) {
   EXPECT_NEAR(t.channels[0].values[3 + 1], direct, t.integration_error + 1e-8);
   std::printf("E_avg(r %.2f, s %.0f) %.10f, direct rule %.10f, claimed %.2g\n", r, s,
               t.channels[0].values[4], direct, t.integration_error);
+}
+
+// The collapse study: no error at s = 0, a large one (the geometric mean
+// of the widths at s = 1 is off by tenths), and the two files written.
+TEST(AnisoGgxTest, CollapseReport) {
+  ReportSpec rs;
+  rs.table = AnisoSpec(TableKind::kE);
+  rs.table.mu.min = 0.05;
+  rs.table.roughness.min = 0.1;
+  rs.table.anisotropy.size = 2;
+  const Report r = RunReport(rs);
+  ASSERT_EQ(r.collapse.size(), 6u);
+  for (const CollapseRow& row : r.collapse) {
+    if (row.anisotropy == 0) {
+      EXPECT_LT(row.max_abs_error, 1e-12) << row.collapse;
+    } else {
+      EXPECT_GT(row.max_abs_error, 0.1) << row.collapse;
+    }
+  }
+  const std::string dir = ::testing::TempDir() + "/brdfbake_collapse";
+  std::filesystem::create_directories(dir);
+  WriteReport(r, dir);
+  for (const char* f : {"/collapse.csv", "/collapse.svg"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + f)) << f;
+    std::filesystem::remove(dir + f);
+  }
 }
 
 TEST(AnisoGgxTest, RejectsWhatItCannotBake) {

@@ -394,7 +394,8 @@ struct BakeOptions {
       // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
       const std::vector<int> n =
           !Given(app, "--size")
-              ? (eavg ? std::vector<int>{32, 16} : std::vector<int>{32, 16, 32, 16})
+              ? (eavg ? std::vector<int>{32, 16}
+                      : for_report ? std::vector<int>{12, 7, 10, 8} : std::vector<int>{32, 16, 32, 16})
               : ParseSize(size, eavg ? 2 : 4,
                           eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
                                : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)");
@@ -700,14 +701,18 @@ int RunReportCommand(const BakeOptions& opts, int repeats, double reference_tole
   if (rs.repeats < 1 || rs.repeats > 100) Bad("--repeats must be in [1, 100]");
   // The directory is made and checked before the work starts.
   MakeOutputDirectory(opts.output);
-  for (const char* f : {"report.csv", "report.svg", "interpolation.csv", "interpolation.svg"}) {
-    brdfbake::CheckOutputPath(opts.output + "/" + f);
-  }
+  const bool aniso = rs.table.Anisotropic();
+  const std::vector<const char*> files =
+      aniso ? std::vector<const char*>{"collapse.csv", "collapse.svg"}
+            : std::vector<const char*>{"report.csv", "report.svg", "interpolation.csv",
+                                       "interpolation.svg"};
+  for (const char* f : files) brdfbake::CheckOutputPath(opts.output + "/" + f);
   const brdfbake::Report r = brdfbake::RunReport(
       rs, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
   brdfbake::WriteReport(r, opts.output);
-  std::printf("wrote %s/report.csv, report.svg, interpolation.csv, interpolation.svg\n",
-              OneLine(opts.output).c_str());
+  std::printf("wrote %s/%s\n", OneLine(opts.output).c_str(),
+              aniso ? "collapse.csv, collapse.svg"
+                    : "report.csv, report.svg, interpolation.csv, interpolation.svg");
   return 0;
 }
 

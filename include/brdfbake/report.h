@@ -42,12 +42,25 @@ struct InterpolationRow {
   double bake_seconds = 0;
 };
 
+// ggx-aniso: what collapsing an anisotropic material to one isotropic GGX
+// width costs, for one anisotropy strength and one collapse: the largest
+// and RMS difference of the isotropic E (the exact value, not a table
+// lookup) at the collapsed width from the true anisotropic E, over the
+// spec's mu, phi_o and roughness axes.
+struct CollapseRow {
+  double anisotropy = 0;
+  std::string collapse;  // geometric-mean, arithmetic-mean, view-projected
+  double max_abs_error = 0, rms_error = 0;
+  double worst_roughness = 0, worst_mu = 0, worst_phi = 0;  // where the max is
+};
+
 struct Report {
   ReportSpec spec;
   double reference_seconds = 0;
   double reference_claimed_error = 0;
   std::vector<ReportRow> rows;
   std::vector<InterpolationRow> interpolation;
+  std::vector<CollapseRow> collapse;  // ggx-aniso only (instead of the above)
 };
 
 using ReportLog = std::function<void(const std::string&)>;
@@ -55,7 +68,8 @@ using ReportLog = std::function<void(const std::string&)>;
 Report RunReport(const ReportSpec& spec, const ReportLog& log = nullptr);
 
 // Writes DIR/report.csv, DIR/report.svg, DIR/interpolation.csv and
-// DIR/interpolation.svg (each through a temporary file and a rename).
+// DIR/interpolation.svg (each through a temporary file and a rename); for
+// ggx-aniso, DIR/collapse.csv and DIR/collapse.svg.
 void WriteReport(const Report& report, const std::string& dir);
 
 // The SVG plots alone (exposed for tests).
