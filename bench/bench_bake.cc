@@ -105,6 +105,29 @@ BENCHMARK_CAPTURE(BM_Bake, E/std_gamma_axis/simd, BakeCase{TableKind::kE, "std",
 BENCHMARK_CAPTURE(BM_Bake, E_avg/std_gamma_axis/simd, BakeCase{TableKind::kEavg, "std", 2, true, true})
     ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
 
+// ggx-aniso: E over mu x phi_o x roughness x anisotropy (the sizes in the
+// name; range(0) and range(1) are the size of the mu and roughness axes and
+// the threads), E_avg over roughness x anisotropy.
+void BM_BakeAniso(benchmark::State& state, TableKind table) {
+  BakeSpec spec;
+  spec.table = table;
+  spec.model.name = "ggx-aniso";
+  spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
+  spec.phi.size = spec.anisotropy.size = static_cast<int>(state.range(0)) / 2;
+  spec.threads = static_cast<int>(state.range(1));
+  Table t;
+  for (auto _ : state) {
+    t = Bake(spec);
+    benchmark::DoNotOptimize(t.channels[0].values.data());
+  }
+  state.counters["integration_error"] = t.integration_error;
+  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
+}
+BENCHMARK_CAPTURE(BM_BakeAniso, E/ggx-aniso/simd/32x16x32x16, TableKind::kE)
+    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeAniso, E_avg/ggx-aniso/simd/8x4, TableKind::kEavg)
+    ->Args({8, 2})->BRDFBAKE_BAKE_ARGS(3);
+
 BRDFBAKE_BAKE_BENCH(dfg/ggx/scalar, TableKind::kDfg, "ggx", 2, false)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(3);
 BRDFBAKE_BAKE_BENCH(E/beckmann/scalar, TableKind::kE, "beckmann", 2, false)

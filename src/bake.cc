@@ -471,8 +471,12 @@ EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
 TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, double phi) {
   const double alpha_t = AnisotropyAlphaT(r, s);
   if (alpha_t < kMinAlpha<double>) return MirrorTexel(mu);
-  const AzimuthalResult a = AnisoGgxAlbedo(alpha_t, r * r, std::max(mu, kMuMin), phi,
-                                           spec.masking, spec.tolerance, spec.EffectiveSamples());
+  const double m = std::max(mu, kMuMin);
+  const AzimuthalResult a =
+      spec.simd ? SimdAnisoGgxAlbedo(alpha_t, r * r, m, phi, spec.masking, spec.tolerance,
+                                     spec.EffectiveSamples())
+                : AnisoGgxAlbedo(alpha_t, r * r, m, phi, spec.masking, spec.tolerance,
+                                 spec.EffectiveSamples());
   TexelValue v;
   v.e = a.value;
   v.err_e = a.error;

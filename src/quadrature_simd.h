@@ -19,6 +19,10 @@
 
 namespace brdfbake {
 
+// AnisoGgxAlbedo (aniso_ggx.h) with each ray piece's nodes in lanes.
+AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double phi,
+                                   Masking masking, double tol, int max_pieces);
+
 // GgxAzimuthalDfg with the azimuthal remainder's nodes in lanes.
 AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces);
