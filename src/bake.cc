@@ -414,6 +414,20 @@ std::string IntegratorJson(const BakeSpec& spec) {
 
 namespace {
 
+// Replaces the piece with the largest `err` by its two halves, made by
+// piece(a, b).
+template <class Piece, class Make>
+void BisectWorst(std::vector<Piece>* pieces, const Make& piece) {
+  size_t worst = 0;
+  for (size_t i = 1; i < pieces->size(); ++i) {
+    if ((*pieces)[i].err > (*pieces)[worst].err) worst = i;
+  }
+  const Piece p = (*pieces)[worst];
+  const double m = 0.5 * (p.a + p.b);
+  (*pieces)[worst] = piece(p.a, m);
+  pieces->push_back(piece(m, p.b));
+}
+
 // E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds by adaptive
 // Gauss-Kronrod 15 in s from the pieces [0, 1/4], [1/4, 1]: the worst piece
 // is bisected until the sum of |K15 - G7| plus the propagated error of E
@@ -451,14 +465,7 @@ EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
   double rule_err, prop_err;
   sums(&rule_err, &prop_err);
   while (rule_err + prop_err > tolerance && rule_err > 0.1 * tolerance && pieces.size() < 64) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.a, m);
-    pieces.push_back(piece(m, p.b));
+    BisectWorst(&pieces, piece);
     sums(&rule_err, &prop_err);
   }
   double value = 0;
@@ -515,16 +522,7 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
       for (const Piece& p : pieces) e += p.err;
       return e;
     };
-    while (rule_error() > spec.tolerance / 3 && pieces.size() < 32) {
-      size_t worst = 0;
-      for (size_t i = 1; i < pieces.size(); ++i) {
-        if (pieces[i].err > pieces[worst].err) worst = i;
-      }
-      const Piece p = pieces[worst];
-      const double m = 0.5 * (p.a + p.b);
-      pieces[worst] = piece(p.a, m);
-      pieces.push_back(piece(m, p.b));
-    }
+    while (rule_error() > spec.tolerance / 3 && pieces.size() < 32) BisectWorst(&pieces, piece);
     TexelValue v;
     for (const Piece& p : pieces) {
       v.e += p.value;

@@ -255,26 +255,20 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   // gamma axis, of linear lookup between gamma slices.
   const bool one_d = spec.table.table == TableKind::kEavg;
   for (int n : spec.interpolation_sizes) {
-    if (spec.table.HasGammaAxis()) {
-      if (n < 2) continue;
-      BakeSpec s = spec.table;
-      s.integrator = IntegratorKind::kQuadrature;
-      s.tolerance = std::min(s.tolerance, 1e-8);
-      s.samples = 0;
-      s.error_channel = false;
-      s.complement = false;
-      const InterpolationRow row = GammaInterpolation(s, n, spec.interpolation_probes);
-      say("interpolation along gamma, " + std::to_string(n) + " slices: max error " +
-          Num(row.max_abs_error, "%.2e"));
-      report.interpolation.push_back(row);
-      continue;
-    }
     BakeSpec s = spec.table;
     s.integrator = IntegratorKind::kQuadrature;
     s.tolerance = std::min(s.tolerance, 1e-8);
     s.samples = 0;
     s.error_channel = false;
     s.complement = false;
+    if (spec.table.HasGammaAxis()) {
+      if (n < 2) continue;
+      const InterpolationRow row = GammaInterpolation(s, n, spec.interpolation_probes);
+      say("interpolation along gamma, " + std::to_string(n) + " slices: max error " +
+          Num(row.max_abs_error, "%.2e"));
+      report.interpolation.push_back(row);
+      continue;
+    }
     s.roughness.size = n;
     if (!one_d) s.mu.size = n;
     if ((s.roughness.placement == Placement::kEdges && n < 2) || n < 1) continue;

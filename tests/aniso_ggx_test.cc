@@ -182,15 +182,6 @@ TEST(AnisoGgxTest, SimdTableAgreesWithTheScalarReference) {
   }
 }
 
-TEST(AnisoGgxTest, BitIdenticalAtAnyThreadCount) {
-  BakeSpec spec = AnisoSpec(TableKind::kE);
-  spec.threads = 1;
-  const Table a = Bake(spec);
-  spec.threads = 2;
-  const Table b = Bake(spec);
-  ASSERT_EQ(a.channels[0].values, b.channels[0].values);
-}
-
 // E_avg: the anisotropy = 0 row is the ggx E_avg; one anisotropic entry
 // against a tensor Gauss-Legendre rule over (sqrt(mu), phi_o) of E.
 TEST(AnisoGgxTest, EavgAgreesWithIsotropicAndADirectRule) {

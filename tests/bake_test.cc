@@ -210,12 +210,27 @@ TEST(BakeTest, EavgMeetsItsToleranceAndClaim) {
   }
 }
 
+// Quadrature and QMC; std over a gamma axis; ggx-aniso's 4D table.
 TEST(BakeTest, BitIdenticalAtAnyThreadCount) {
+  std::vector<BakeSpec> specs;
   for (IntegratorKind kind : {IntegratorKind::kQuadrature, IntegratorKind::kQmc}) {
     BakeSpec spec;
     spec.integrator = kind;
     spec.samples = kind == IntegratorKind::kQmc ? 512 : 64;
     spec.mu.size = spec.roughness.size = 12;
+    specs.push_back(spec);
+  }
+  BakeSpec gamma;
+  gamma.model.name = "std";
+  gamma.mu.size = gamma.roughness.size = 6;
+  gamma.gamma.size = 5;
+  specs.push_back(gamma);
+  BakeSpec aniso;
+  aniso.model.name = "ggx-aniso";
+  aniso.mu.size = aniso.roughness.size = 4;
+  aniso.phi.size = aniso.anisotropy.size = 3;
+  specs.push_back(aniso);
+  for (BakeSpec spec : specs) {
     spec.threads = 1;
     const Table a = Bake(spec);
     spec.threads = 2;
