@@ -21,6 +21,7 @@
 
 #include "brdfbake/version.h"
 #include "aniso_ggx.h"
+#include "sel_norm.h"
 #include "azimuthal.h"
 #include "integrate.h"
 #include "quadrature_simd.h"
@@ -37,6 +38,7 @@ const char* TableName(TableKind t) {
     case TableKind::kE: return "E";
     case TableKind::kEavg: return "E_avg";
     case TableKind::kDfg: return "dfg";
+    case TableKind::kSelNorm: return "sel_norm";
   }
   return "E";
 }
@@ -66,7 +68,8 @@ TableKind ParseTable(const std::string& s) {
   if (s == "E") return TableKind::kE;
   if (s == "E_avg") return TableKind::kEavg;
   if (s == "dfg") return TableKind::kDfg;
-  Bad("--table: unknown table '" + s + "' (expected E, E_avg or dfg)");
+  if (s == "sel_norm") return TableKind::kSelNorm;
+  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg or sel_norm)");
 }
 Warp ParseWarp(const std::string& s) {
   if (s == "linear") return Warp::kLinear;
@@ -146,7 +149,15 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (aniso) params.name = "ggx";  // its widths come from the axes
   ValidateModelParams(params);
   const std::string& m = spec.model.name;
-  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso) {
+  const bool sel = spec.table == TableKind::kSelNorm;
+  if (sel != (m == "sel")) {
+    Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
+            : "--model sel: its table is sel_norm (--table sel_norm)");
+  }
+  if (sel && (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
+    Bad("--table sel_norm: the quadrature only, without --complement");
+  }
+  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !sel) {
     Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" + m + "')");
   }
   if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
@@ -155,6 +166,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   std::vector<const Axis*> axes = {&spec.roughness};
   if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
+  if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
   if (aniso) {
     if (spec.table != TableKind::kEavg) axes.insert(axes.begin() + 1, &spec.phi);
     axes.push_back(&spec.anisotropy);
@@ -297,6 +309,13 @@ TexelValue Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_s
 std::string ModelJson(const BakeSpec& spec) {
   nlohmann::json j;
   j["name"] = spec.model.name;
+  if (spec.table == TableKind::kSelNorm) {
+    j["definition"] = "squared ellipsoidal lobe K(w; Q, alpha_x, alpha_y) of seed 002; its "
+                      "integral does not depend on Q";
+    j["closed_form"] = "alpha_x = alpha_y = alpha: N = 4 pi alpha^2; as both go to 0, "
+                       "N / (4 pi alpha_x alpha_y) -> 1";
+    return j.dump();
+  }
   if (spec.Anisotropic()) {
     j["alpha_t"] = "mix(roughness^2, 1, anisotropy^2), along the tangent (x)";
     j["alpha_b"] = "roughness^2, along the bitangent (y)";
@@ -325,6 +344,15 @@ std::string IntegratorJson(const BakeSpec& spec) {
     case IntegratorKind::kQuadrature:
       j["tolerance"] = spec.tolerance;
       j["max_pieces"] = n;
+      if (spec.table == TableKind::kSelNorm) {
+        j["domain"] = "N = 4 pi alpha_x alpha_y G, G = (2/pi) int_0^{pi/2} int_0^1 g dx dphi over "
+                      "the half vector of the stretched direction and the lobe axis in GGX "
+                      "slope coordinates (x = 1 - u), g = 1 / |v' / k| (src/sel_norm.h)";
+        j["rule"] = "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak "
+                    "of g, worst pieces bisected; the tolerance applies to G";
+        j["error_estimate"] = "sum of |K15 - G7| of both rules";
+        break;
+      }
       if (spec.Anisotropic()) {
         j["domain"] = "the slope plane of the half vector, in the stretched polar coordinates "
                       "(psi, u = rho^2 / (1 + rho^2)) in which the GGX slope density is uniform; "
@@ -566,10 +594,12 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
 namespace {
 
 int ValueChannels(const BakeSpec& spec) {
+  if (spec.table == TableKind::kSelNorm) return 2;
   return spec.table == TableKind::kDfg ? (spec.complement ? 3 : 2) : 1;
 }
 
 int64_t TexelCount(const BakeSpec& spec) {
+  if (spec.table == TableKind::kSelNorm) return int64_t(spec.alpha_x.size) * spec.alpha_y.size;
   if (spec.Anisotropic()) {
     const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
     return spec.table == TableKind::kEavg ? rs : rs * spec.mu.size * spec.phi.size;
@@ -596,6 +626,11 @@ const char* Definition(const std::string& meaning) {
   if (meaning == "1-E") return "1 - E(mu), computed in double before rounding";
   if (meaning == "E_avg") return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
   if (meaning == "1-E_avg") return "1 - E_avg, computed in double before rounding";
+  if (meaning == "sel.integral") {
+    return "N = integral over the sphere of the squared ellipsoidal lobe K (seed 002); K / N "
+           "integrates to 1; independent of the lobe's rotation";
+  }
+  if (meaning == "sel.ratio") return "N / (4 pi alpha_x alpha_y): 1 for alpha_x = alpha_y";
   if (meaning == "dfg.scale") {
     return "integral of (f/F) (1 - Fc) cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
            "the specular albedo is F0 scale + F90 bias";
@@ -658,6 +693,12 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     slice_specs.assign(size_t(spec.gamma.size), spec);
     for (int k = 0; k < spec.gamma.size; ++k) slice_specs[k].model.gamma = spec.gamma.Value(k);
   }
+  const bool sel = spec.table == TableKind::kSelNorm;
+  if (sel) {
+    t.axes = {spec.alpha_x, spec.alpha_y};
+    t.width = spec.alpha_x.size;
+    t.height = spec.alpha_y.size;
+  }
   const bool aniso = spec.Anisotropic();
   if (aniso) {
     if (eavg) {
@@ -673,6 +714,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     meanings = {spec.complement ? "1-E" : "E"};
   } else if (eavg) {
     meanings = {spec.complement ? "1-E_avg" : "E_avg"};
+  } else if (sel) {
+    // "sel.0_integral" sorts before "sel.1_ratio" (OpenEXR sorts channels).
+    meanings = {"sel.integral", "sel.ratio"};
   } else {
     meanings = {"dfg.scale", "dfg.bias"};
     if (spec.complement) meanings.push_back("1-E");
@@ -687,6 +731,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       if (spec.table == TableKind::kDfg) {
         name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
       }
+      if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
       t.channels.push_back({name, meanings[c], Definition(meanings[c]), {}, {}, {}});
     }
     if (spec.error_channel) t.channels.push_back({"error", "error", Definition("error"), {}, {}, {}});
@@ -711,7 +756,17 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   }
   std::atomic<int64_t> done{0};
   std::vector<double>& v0 = t.channels[0].values;
-  if (eavg) {
+  if (sel) {
+    tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
+      const int x = static_cast<int>(i % t.width), y = static_cast<int>(i / t.width);
+      const SelIntegral n = SelLobeIntegral(spec.alpha_x.Value(x), spec.alpha_y.Value(y),
+                                            spec.tolerance);
+      v0[i] = n.n;
+      t.channels[1].values[i] = n.ratio;
+      error[i] = std::max(n.n_error, n.ratio_error);
+      if (progress) progress(++done, total);
+    });
+  } else if (eavg) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
       const double r = std::max(ax_r.Value(x), ax_r.clamp_min);

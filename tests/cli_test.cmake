@@ -247,6 +247,15 @@ expect_one_line_error(bake --table E --model ggx-aniso --size 4x3x3x2 --range ph
 expect_one_line_error(eval --quantity D --model ggx-aniso --roughness 0.5)
 expect_one_line_error(eval --quantity E --model ggx-aniso --roughness 0.5 --anisotropy 2)
 expect_one_line_error(eval --quantity E --model ggx --roughness 0.5 --anisotropy 0.5)
+# sel_norm: the integral of the sel lobe over alpha_x x alpha_y, EXR only.
+run_tool(TRUE out err bake --table sel_norm --model sel --size 4x3 -o "${out_dir}/sel_norm.exr")
+if(NOT out MATCHES "wrote .*sel_norm sel 4x3")
+  message(FATAL_ERROR "bake sel_norm: '${out}'")
+endif()
+expect_one_line_error(bake --table sel_norm -o "${out_dir}/sel_bad.exr")
+expect_one_line_error(bake --table E --model sel -o "${out_dir}/sel_bad.exr")
+expect_one_line_error(bake --table sel_norm --model sel -o "${out_dir}/sel_bad.h")
+expect_one_line_error(bake --table sel_norm --model sel --complement -o "${out_dir}/sel_bad.exr")
 # A preset fixes its tables; other presets and formats are named in the error.
 expect_one_line_error(bake --preset filament --size 64x64)
 expect_one_line_error(bake --preset unity)

@@ -5,7 +5,9 @@
 // against GGX, its geometric definition (the squared distance from the origin
 // to an ellipsoid), and its frame convention.
 
+#include "brdfbake/bake.h"
 #include "brdfbake/sel.h"
+#include "sel_norm.h"
 
 #include <gtest/gtest.h>
 
@@ -195,6 +197,68 @@ TEST(SelTest, FloatMatchesDoubleAndIsFinite) {
   }
   std::printf("SEL float vs double: max relative error %.2e\n", max_err);
   EXPECT_LE(max_err, 1e-5);
+}
+
+}  // namespace
+}  // namespace brdfbake
+
+namespace brdfbake {
+namespace {
+
+// N = int K dw over the sphere (src/sel_norm.h) against the sphere
+// integral of SelLobe::K by nested adaptive Gauss-Kronrod (Boost), with
+// the lobe turned by a rotation Q (N does not depend on it).
+TEST(SelTest, IntegralMatchesTheSphereIntegral) {
+  struct Case {
+    double ax, ay;
+  };
+  for (const Case& c : {Case{0.3, 0.6}, Case{1.0, 0.1}, Case{0.2, 1.0}, Case{0.5, 0.5},
+                        Case{0.15, 0.4}}) {
+    const SelLobe<double> lobe = SelLobe<double>::FromAngles(c.ax, c.ay, 0.3, -1.1, 0.7);
+    const double ref = test::IntegrateHemisphereTheta(
+        [&](const test::Dir& w) { return lobe.K(w); }, 0.0, kPi<double>, 1e-11);
+    const SelIntegral n = SelLobeIntegral(c.ax, c.ay, 1e-10);
+    EXPECT_NEAR(n.n, ref, 1e-9 * ref + n.n_error) << c.ax << " " << c.ay;
+    std::printf("alpha %.2f x %.2f: N %.12f, sphere integral %.12f, claimed %.1e\n", c.ax, c.ay,
+                n.n, ref, n.n_error);
+  }
+}
+
+// The closed forms: alpha_x = alpha_y gives the squared spheroidal lobe's
+// 4 pi alpha^2; as both widths go to 0, N / (4 pi alpha_x alpha_y) -> 1.
+TEST(SelTest, IntegralClosedForms) {
+  for (double a : {1e-3, 0.05, 0.5, 1.0}) {
+    const SelIntegral n = SelLobeIntegral(a, a, 1e-10);
+    EXPECT_NEAR(n.n, 4 * kPi<double> * a * a, 1e-13 * n.n) << a;
+  }
+  for (double a : {1e-3, 1e-2}) {
+    const SelIntegral n = SelLobeIntegral(a, 3 * a, 1e-10);
+    EXPECT_GT(n.ratio, 1.0);
+    EXPECT_LT(n.ratio - 1, 10 * 9 * a * a) << a;
+  }
+}
+
+// The sel_norm table holds N and the ratio at its axes' values.
+TEST(SelTest, NormTable) {
+  BakeSpec spec;
+  spec.table = TableKind::kSelNorm;
+  spec.model.name = "sel";
+  spec.alpha_x.size = 4;
+  spec.alpha_y.size = 3;
+  spec.alpha_x.min = 0.1;
+  const Table t = Bake(spec);
+  ASSERT_EQ(t.channels.size(), 2u);
+  EXPECT_EQ(t.channels[0].name, "sel.0_integral");
+  EXPECT_EQ(t.channels[1].name, "sel.1_ratio");
+  for (int y = 0; y < 3; ++y) {
+    for (int x = 0; x < 4; ++x) {
+      const SelIntegral n = SelLobeIntegral(spec.alpha_x.Value(x), spec.alpha_y.Value(y), 1e-7);
+      EXPECT_EQ(t.channels[0].values[y * 4 + x], n.n);
+      EXPECT_EQ(t.channels[1].values[y * 4 + x], n.ratio);
+    }
+  }
+  spec.model.name = "ggx";
+  EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
 }
 
 }  // namespace

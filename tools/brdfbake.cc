@@ -283,7 +283,7 @@ struct BakeOptions {
   void Add(CLI::App* a, bool report) {
     app = a;
     for_report = report;
-    app->add_option("--table,-t", table, "E | E_avg | dfg");
+    app->add_option("--table,-t", table, "E | E_avg | dfg | sel_norm (with --model sel)");
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy)")
         ->capture_default_str();
@@ -390,7 +390,14 @@ struct BakeOptions {
     }
     const bool gamma_axis = gamma_ok && entries == plain + 1;
     const bool aniso = model == "ggx-aniso";
-    if (aniso) {
+    const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
+    if (sel) {
+      if (Given(app, "--size")) {
+        const std::vector<int> n = ParseSize(size, 2, "WxH (alpha_x x alpha_y, e.g. 32x32)");
+        spec.alpha_x.size = n[0];
+        spec.alpha_y.size = n[1];
+      }
+    } else if (aniso) {
       // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
       const std::vector<int> n =
           !Given(app, "--size")
@@ -431,6 +438,7 @@ struct BakeOptions {
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
     spec.mu.placement = spec.roughness.placement = spec.gamma.placement = pl;
     spec.phi.placement = spec.anisotropy.placement = pl;
+    spec.alpha_x.placement = spec.alpha_y.placement = pl;
     // Per-axis settings: "value" for every axis of the table but gamma, or
     // "axis=value"; each axis at most once.
     std::vector<brdfbake::Axis*> axes = {&spec.roughness};
@@ -439,6 +447,7 @@ struct BakeOptions {
       if (!eavg) axes.insert(axes.begin() + 1, &spec.phi);
       axes.push_back(&spec.anisotropy);
     }
+    if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
     std::vector<brdfbake::Axis*> named = axes;
     if (gamma_axis) named.push_back(&spec.gamma);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
@@ -461,6 +470,7 @@ struct BakeOptions {
             std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
                                    (gamma_axis ? " or gamma" : "");
             if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
+            if (sel) expected = "alpha_x or alpha_y";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
@@ -656,6 +666,12 @@ int RunBake(const BakeOptions& opts) {
   const bool shader = !opts.shader.empty();
   const brdfbake::ShaderLanguage lang =
       shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
+    Bad("-o: sel_norm tables are written as .exr");
+  }
+  if (shader && spec.table == brdfbake::TableKind::kSelNorm) {
+    Bad("--shader: no lookup function is written for sel_norm tables");
+  }
   if (shader && spec.HasGammaAxis()) {
     Bad("--shader: the lookup functions read tables over mu and roughness; a table with a gamma "
         "axis is written without one");
@@ -665,9 +681,12 @@ int RunBake(const BakeOptions& opts) {
   Progress progress;
   const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
   progress.Finish();
-  brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
-  if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
-  const brdfbake::Image image = brdfbake::ArrangeTable(table, layout);
+  brdfbake::Image image;  // the arrangement of a non-EXR container and of the shader lookup
+  if (container != brdfbake::Container::kExr || shader) {
+    brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
+    if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
+    image = brdfbake::ArrangeTable(table, layout);
+  }
   if (container == brdfbake::Container::kExr) {
     brdfbake::WriteExr(table, opts.output);
   } else {

@@ -19,7 +19,9 @@
 
 namespace brdfbake {
 
-enum class TableKind { kE, kEavg, kDfg };
+// kSelNorm: the integral over the sphere of the squared ellipsoidal lobe
+// (model sel, seed 002) over alpha_x x alpha_y (sel_norm.h).
+enum class TableKind { kE, kEavg, kDfg, kSelNorm };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kHalfPi = 1.5707963267948966;
@@ -99,6 +101,9 @@ struct BakeSpec {
   Axis phi{"phi_o", 16, 0.0, kHalfPi, Warp::kLinear, Placement::kEdges};
   Axis anisotropy{"anisotropy", 16, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   bool Anisotropic() const { return model.name == "ggx-aniso"; }
+  // sel_norm: the lobe's widths, in [0, 1] (clamped below at 1e-4).
+  Axis alpha_x{"alpha_x", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
+  Axis alpha_y{"alpha_y", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
   // instead of the value, dfg adds it as a third channel.
   bool complement = false;

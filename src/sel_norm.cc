@@ -1,0 +1,145 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "sel_norm.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace brdfbake {
+namespace {
+
+constexpr double kHalfPiSel = 1.5707963267948966;
+
+struct Piece {
+  double a, b, value, err, prop = 0;  // prop: the inner rules' errors, weighted
+};
+
+// Gauss-Kronrod 15 on pieces of [lo, hi] graded by 4 towards `toward`
+// (lo or hi) down to `finest`, then the worst bisected until the summed
+// |K15 - G7| is at most tol (or 200 pieces). Returns the integral and its
+// error estimate.
+template <class F>
+void Adaptive(const F& f, double lo, double hi, bool toward_lo, double finest, double tol,
+              double* value, double* error) {
+  const KronrodRule& r = Kronrod15();
+  auto piece = [&](double a, double b) {
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double k = 0, g = 0;
+    for (int i = 0; i < 15; ++i) {
+      const double v = f(c + h * r.x[i]);
+      k += r.wk[i] * v;
+      g += r.wg[i] * v;
+    }
+    return Piece{a, b, k * h, std::abs(k - g) * h, 0};
+  };
+  std::vector<Piece> pieces;
+  double width = hi - lo;
+  double edge = toward_lo ? hi : lo;  // the end of the graded part not yet covered
+  while (width > 4 * finest && pieces.size() < 40) {
+    const double next = 0.25 * width;
+    pieces.push_back(toward_lo ? piece(lo + next, edge) : piece(edge, hi - next));
+    edge = toward_lo ? lo + next : hi - next;
+    width = next;
+  }
+  pieces.push_back(toward_lo ? piece(lo, edge) : piece(edge, hi));
+  auto sum_err = [&] {
+    double e = 0;
+    for (const Piece& p : pieces) e += p.err;
+    return e;
+  };
+  while (sum_err() > tol && pieces.size() < 200) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    pieces[worst] = piece(p.a, m);
+    pieces.push_back(piece(m, p.b));
+  }
+  *value = 0;
+  for (const Piece& p : pieces) *value += p.value;
+  *error = sum_err();
+}
+
+}  // namespace
+
+SelIntegral SelLobeIntegral(double alpha_x, double alpha_y, double tol) {
+  const double ax = std::clamp(alpha_x, 1e-4, 1.0), ay = std::clamp(alpha_y, 1e-4, 1.0);
+  const double a = std::max(ax, ay), a2 = a * a;
+  // 1 / k^2 per axis: (alpha / a)^2.
+  const double ikx2 = (ax / a) * (ax / a), iky2 = (ay / a) * (ay / a);
+  // g peaks on the equator (theta' = pi/2) along the wider alpha's axis:
+  // phi = 0 when alpha_x > alpha_y, over a width alpha_min / alpha_max.
+  const bool peak_at_zero = ax >= ay;
+  const double peak_width = std::min(ax, ay) / a;
+  // The inner integral over phi at x, with its error: (2 / pi) int g dphi.
+  auto over_phi = [&](double x, double* err) {
+    const double d = x + a2 * (1 - x);  // (1 + t) x
+    const double s2 = 4 * a2 * (1 - x) * x / (d * d);
+    const double c = (x - a2 * (1 - x)) / d;
+    auto g = [&](double phi) {
+      const double cp = std::cos(phi), sp = std::sin(phi);
+      return 1 / std::sqrt(s2 * (cp * cp * ikx2 + sp * sp * iky2) + c * c);
+    };
+    double v, e;
+    Adaptive(g, 0.0, kHalfPiSel, peak_at_zero, 0.25 * peak_width, 0.1 * tol, &v, &e);
+    *err = e / kHalfPiSel;
+    return v / kHalfPiSel;
+  };
+  // The x rule evaluates over_phi at its nodes; the inner errors enter with
+  // the Kronrod weights.
+  const KronrodRule& r = Kronrod15();
+  std::vector<Piece> pieces;
+  auto piece = [&](double lo, double hi) {
+    const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+    double k = 0, g = 0, pe = 0;
+    for (int i = 0; i < 15; ++i) {
+      double e;
+      const double v = over_phi(c + h * r.x[i], &e);
+      k += r.wk[i] * v;
+      g += r.wg[i] * v;
+      pe += r.wk[i] * e;
+    }
+    return Piece{lo, hi, k * h, std::abs(k - g) * h, pe * h};
+  };
+  // Graded towards x = 0 down to a^2 / 4, where theta' = 2 theta_h passes
+  // pi / 2 (t = 1 at x = a^2 / (1 + a^2)).
+  double edge = 1.0;
+  while (edge > a2 && pieces.size() < 40) {
+    pieces.push_back(piece(0.25 * edge, edge));
+    edge *= 0.25;
+  }
+  pieces.push_back(piece(0.0, edge));
+  auto totals = [&](double* rule, double* inner) {
+    *rule = *inner = 0;
+    for (const Piece& p : pieces) {
+      *rule += p.err;
+      *inner += p.prop;
+    }
+  };
+  double rule_err, inner_err;
+  totals(&rule_err, &inner_err);
+  while (rule_err > 0.5 * tol && pieces.size() < 200) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    pieces[worst] = piece(p.a, m);
+    pieces.push_back(piece(m, p.b));
+    totals(&rule_err, &inner_err);
+  }
+  SelIntegral out;
+  for (const Piece& p : pieces) out.ratio += p.value;
+  out.ratio_error = rule_err + inner_err + 4e-16 * out.ratio;
+  const double scale = 4 * 3.141592653589793 * ax * ay;
+  out.n = scale * out.ratio;
+  out.n_error = scale * out.ratio_error;
+  return out;
+}
+
+}  // namespace brdfbake
