@@ -128,6 +128,32 @@ BENCHMARK_CAPTURE(BM_BakeAniso, E/ggx-aniso/simd/32x16x32x16, TableKind::kE)
 BENCHMARK_CAPTURE(BM_BakeAniso, E_avg/ggx-aniso/simd/8x4, TableKind::kEavg)
     ->Args({8, 2})->BRDFBAKE_BAKE_ARGS(3);
 
+// One ellipsoid material (alpha 0.3 x 0.6, theta_x 20, theta_z 30 degrees):
+// E over mu x phi_o, and its E_avg.
+void BM_BakeEllipsoid(benchmark::State& state, TableKind table) {
+  BakeSpec spec;
+  spec.table = table;
+  spec.model.name = "ellipsoid";
+  spec.model.alpha_x = 0.3;
+  spec.model.alpha_y = 0.6;
+  spec.model.theta_x = 20 * 3.14159265358979323846 / 180;
+  spec.model.theta_z = 30 * 3.14159265358979323846 / 180;
+  spec.mu.size = spec.phi.size = static_cast<int>(state.range(0));
+  spec.phi.max = 2 * 3.14159265358979323846;
+  spec.threads = static_cast<int>(state.range(1));
+  Table t;
+  for (auto _ : state) {
+    t = Bake(spec);
+    benchmark::DoNotOptimize(t.channels[0].values.data());
+  }
+  state.counters["integration_error"] = t.integration_error;
+  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
+}
+BENCHMARK_CAPTURE(BM_BakeEllipsoid, E/ellipsoid/64x64, TableKind::kE)
+    ->Args({64, 2})->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeEllipsoid, E_avg/ellipsoid, TableKind::kEavg)
+    ->Args({1, 2})->BRDFBAKE_BAKE_ARGS(3);
+
 BRDFBAKE_BAKE_BENCH(dfg/ggx/scalar, TableKind::kDfg, "ggx", 2, false)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(3);
 BRDFBAKE_BAKE_BENCH(E/beckmann/scalar, TableKind::kE, "beckmann", 2, false)

@@ -21,6 +21,7 @@
 
 #include "brdfbake/version.h"
 #include "aniso_ggx.h"
+#include "ellipsoid_albedo.h"
 #include "sel_norm.h"
 #include "azimuthal.h"
 #include "integrate.h"
@@ -157,7 +158,14 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (sel && (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
     Bad("--table sel_norm: the quadrature only, without --complement");
   }
-  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !sel) {
+  const bool ellipsoid = m == "ellipsoid";
+  if (ellipsoid && spec.table == TableKind::kDfg) {
+    Bad("--table: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
+  }
+  if (ellipsoid && spec.integrator != IntegratorKind::kQuadrature) {
+    Bad("--integrator: ellipsoid tables are baked with the quadrature only");
+  }
+  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !sel && !ellipsoid) {
     Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" + m + "')");
   }
   if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
@@ -167,6 +175,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   std::vector<const Axis*> axes = {&spec.roughness};
   if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
   if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
+  if (ellipsoid) {
+    axes.clear();
+    if (spec.table == TableKind::kE) axes = {&spec.mu, &spec.phi};
+  }
   if (aniso) {
     if (spec.table != TableKind::kEavg) axes.insert(axes.begin() + 1, &spec.phi);
     axes.push_back(&spec.anisotropy);
@@ -181,12 +193,13 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
     if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
     const bool angle = a->name == "phi_o";
-    const double upper = angle ? kHalfPi : 1.0;
+    const double upper = angle ? (ellipsoid ? 2 * kPi<double> : kHalfPi) : 1.0;
     if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 ||
         a->max > upper * (1 + 1e-15)) {
       std::ostringstream os;
       os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= "
-         << (angle ? "pi/2 (radians)" : "1") << " (got " << a->min << ":" << a->max << ")";
+         << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1") << " (got "
+         << a->min << ":" << a->max << ")";
       Bad(os.str());
     }
   }
@@ -316,6 +329,20 @@ std::string ModelJson(const BakeSpec& spec) {
                        "N / (4 pi alpha_x alpha_y) -> 1";
     return j.dump();
   }
+  if (spec.model.name == "ellipsoid") {
+    const ModelParams& p = spec.model;
+    j["alpha_x"] = p.alpha_x;
+    j["alpha_y"] = p.alpha_y;
+    j["theta_x"] = p.theta_x;
+    j["theta_y"] = p.theta_y;
+    j["theta_z"] = p.theta_z;
+    j["definition"] = "Walter et al. ellipsoid NDF (seed 000), A = S R, S = diag(alpha_x, "
+                      "alpha_y, 1), R = Rx(theta_x) Ry(theta_y) Rz(theta_z), angles in radians; "
+                      "G1 of eq. 6 (clamped at 1)";
+    j["phi_o"] = "azimuth of wo from the x axis, radians; no symmetry: E(phi_o) != E(-phi_o) "
+                 "once the ellipsoid is tilted";
+    return j.dump();
+  }
   if (spec.Anisotropic()) {
     j["alpha_t"] = "mix(roughness^2, 1, anisotropy^2), along the tangent (x)";
     j["alpha_b"] = "roughness^2, along the bitangent (y)";
@@ -351,6 +378,18 @@ std::string IntegratorJson(const BakeSpec& spec) {
         j["rule"] = "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak "
                     "of g, worst pieces bisected; the tolerance applies to G";
         j["error_estimate"] = "sum of |K15 - G7| of both rules";
+        break;
+      }
+      if (spec.model.name == "ellipsoid") {
+        j["domain"] = "the slope plane of the half vector: the ellipsoid's slope density is a "
+                      "sheared and shifted GGX, uniform in polar coordinates (psi, u) around its "
+                      "peak; wi above the horizon is a disk in slopes, crossed by each ray in a "
+                      "segment found in closed form (src/ellipsoid_albedo.h)";
+        j["rule"] = "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
+                    "Gauss-Kronrod 15 in sqrt(u), graded towards the horizon crossings and "
+                    "bisected worst first to a fifth of the tolerance (double scalar)";
+        j["error_estimate"] = "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of "
+                              "|K15 - G7| carried through the Kronrod weights";
         break;
       }
       if (spec.Anisotropic()) {
@@ -416,7 +455,11 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["error_estimate"] = "difference from the converged quadrature (tolerance 1e-10) plus its error";
       break;
   }
-  if (spec.table == TableKind::kEavg && spec.Anisotropic()) {
+  if (spec.table == TableKind::kEavg && spec.model.name == "ellipsoid") {
+    j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo by Gauss-Legendre 24 in sqrt(mu) times the "
+                 "periodic trapezoid rule (32 nodes) in phi_o over [0, 2 pi); error: the "
+                 "difference from Gauss-Legendre 12 times 16 nodes plus the propagated errors of E";
+  } else if (spec.table == TableKind::kEavg && spec.Anisotropic()) {
     j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu by adaptive "
                  "Gauss-Kronrod 15 in sqrt(mu) as for the other models, A(mu) the average of "
                  "E(mu, phi_o) over phi_o in [0, pi/2] by adaptive Gauss-Kronrod 15; error: the "
@@ -518,14 +561,14 @@ TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, doubl
   return v;
 }
 
-// ggx-aniso: E_avg = (1 / pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu
-// (AdaptiveEavg) with A(mu) the average of E(mu, phi_o) over phi_o in
-// [0, pi/2] (E is even in phi_o and symmetric about pi/2). At grazing E
-// changes over phi_o within about alpha_b / alpha_t of pi/2, where the
-// effective width sqrt(alpha_t^2 cos^2 + alpha_b^2 sin^2) turns from
-// alpha_t to alpha_b: A is adaptive Gauss-Kronrod 15, the worst piece
-// bisected until its |K15 - G7| sum is below a third of the tolerance.
-EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
+// E_avg = (1 / pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu
+// (AdaptiveEavg) with A(mu) the average of e_at(mu, phi_o) over
+// [0, phi_max]. A is adaptive Gauss-Kronrod 15, the worst piece bisected
+// until its |K15 - G7| sum is below a third of the tolerance: at grazing an
+// anisotropic E changes over phi_o within about alpha_b / alpha_t of the
+// narrow axis, where the effective width turns from alpha_t to alpha_b.
+template <class EAt>
+EavgEstimate HemisphericalEavg(const EAt& e_at, double phi_max, double tolerance) {
   const KronrodRule& rule = Kronrod15();
   auto average_over_phi = [&](double mu) {
     struct Piece {
@@ -535,22 +578,21 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
       const double c = 0.5 * (a + b), h = 0.5 * (b - a);
       double k = 0, g = 0, prop = 0;
       for (int i = 0; i < 15; ++i) {
-        const TexelValue v = AnisoTexel(spec, r, s, mu, c + h * rule.x[i]);
+        const TexelValue v = e_at(mu, c + h * rule.x[i]);
         k += rule.wk[i] * v.e;
         g += rule.wg[i] * v.e;
         prop += rule.wk[i] * v.err_e;
       }
-      // The average over [0, pi/2]: weight h / (pi / 2).
-      const double scale = h / kHalfPi;
+      const double scale = h / phi_max;  // the average over [0, phi_max]
       return Piece{a, b, k * scale, std::abs(k - g) * scale, prop * scale};
     };
-    std::vector<Piece> pieces = {piece(0.0, kHalfPi)};
+    std::vector<Piece> pieces = {piece(0.0, phi_max)};
     auto rule_error = [&] {
       double e = 0;
       for (const Piece& p : pieces) e += p.err;
       return e;
     };
-    while (rule_error() > spec.tolerance / 3 && pieces.size() < 32) BisectWorst(&pieces, piece);
+    while (rule_error() > tolerance / 3 && pieces.size() < 32) BisectWorst(&pieces, piece);
     TexelValue v;
     for (const Piece& p : pieces) {
       v.e += p.value;
@@ -558,7 +600,73 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
     }
     return v;
   };
-  return AdaptiveEavg(average_over_phi, spec.tolerance);
+  return AdaptiveEavg(average_over_phi, tolerance);
+}
+
+// ggx-aniso: E is even in phi_o and symmetric about pi/2, so [0, pi/2]
+// covers every azimuth.
+EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
+  return HemisphericalEavg(
+      [&](double mu, double phi) { return AnisoTexel(spec, r, s, mu, phi); }, kHalfPi,
+      spec.tolerance);
+}
+
+// ellipsoid: E at (mu, phi_o) by the slope-plane rule (ellipsoid_albedo.h)
+// for the material in spec.model.
+TexelValue EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
+  const ModelParams& m = spec.model;
+  const AzimuthalResult a =
+      EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z,
+                      std::max(mu, kMuMin), phi, spec.masking, spec.tolerance,
+                      spec.EffectiveSamples());
+  TexelValue v;
+  v.e = a.value;
+  v.err_e = a.error;
+  return v;
+}
+
+// E_avg = (1 / pi) int E cos dwo = (2 / pi) int_0^{2 pi} dphi int_0^1 E(s^2, phi) s^3 ds
+// by a tensor rule: Gauss-Legendre 24 in s = sqrt(mu) times the periodic
+// trapezoid rule with 32 nodes in phi (a rotated ellipsoid has no
+// azimuthal symmetry), against Gauss-Legendre 12 times 16 nodes for the
+// error estimate, plus the propagated errors of E. E has a kink along the
+// curve where G1(wo)'s clamp turns on, on which both rules converge
+// algebraically: the coarse rule's error is then about four times the fine
+// one's, and their difference bounds it. The E values (960 of them) are
+// computed in parallel and summed in a fixed order.
+EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
+  static const GaussLegendre fine_s(24), coarse_s(12);
+  constexpr int kFinePhi = 32, kCoarsePhi = 16;
+  struct Node {
+    double s, w, phi;
+    bool fine;
+  };
+  std::vector<Node> nodes;
+  for (int rule = 0; rule < 2; ++rule) {
+    const GaussLegendre& gl = rule == 0 ? fine_s : coarse_s;
+    const int nphi = rule == 0 ? kFinePhi : kCoarsePhi;
+    for (size_t i = 0; i < gl.x.size(); ++i) {
+      for (int j = 0; j < nphi; ++j) {
+        nodes.push_back({gl.x[i], gl.w[i] / nphi, 2 * kPi<double> * j / nphi, rule == 0});
+      }
+    }
+  }
+  std::vector<TexelValue> e(nodes.size());
+  tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
+    e[k] = EllipsoidTexel(spec, nodes[k].s * nodes[k].s, nodes[k].phi);
+  });
+  double fine = 0, coarse = 0, prop = 0;
+  for (size_t k = 0; k < nodes.size(); ++k) {
+    // 4 s^3 ds on [0, 1] (the rule's x and w are on [0, 1]), averaged over phi.
+    const double w = 4 * nodes[k].w * nodes[k].s * nodes[k].s * nodes[k].s;
+    if (nodes[k].fine) {
+      fine += w * e[k].e;
+      prop += w * e[k].err_e;
+    } else {
+      coarse += w * e[k].e;
+    }
+  }
+  return {fine, std::abs(fine - coarse) + prop + 4e-16 * fine};
 }
 
 }  // namespace
@@ -599,6 +707,9 @@ int ValueChannels(const BakeSpec& spec) {
 }
 
 int64_t TexelCount(const BakeSpec& spec) {
+  if (spec.model.name == "ellipsoid") {
+    return spec.table == TableKind::kEavg ? 1 : int64_t(spec.mu.size) * spec.phi.size;
+  }
   if (spec.table == TableKind::kSelNorm) return int64_t(spec.alpha_x.size) * spec.alpha_y.size;
   if (spec.Anisotropic()) {
     const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
@@ -699,6 +810,16 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     t.width = spec.alpha_x.size;
     t.height = spec.alpha_y.size;
   }
+  const bool ellipsoid = spec.model.name == "ellipsoid";
+  if (ellipsoid) {
+    t.axes.clear();
+    t.width = t.height = 1;
+    if (!eavg) {
+      t.axes = {ax_mu, spec.phi};
+      t.width = ax_mu.size;
+      t.height = spec.phi.size;
+    }
+  }
   const bool aniso = spec.Anisotropic();
   if (aniso) {
     if (eavg) {
@@ -770,8 +891,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
       const double r = std::max(ax_r.Value(x), ax_r.clamp_min);
-      const EavgEstimate e = aniso ? AnisoEavg(spec, r, spec.anisotropy.Value(z))
-                                   : IntegrateEavg(slice_specs[z], r, uint64_t(i));
+      const EavgEstimate e = ellipsoid ? EllipsoidEavg(spec)
+                             : aniso   ? AnisoEavg(spec, r, spec.anisotropy.Value(z))
+                                       : IntegrateEavg(slice_specs[z], r, uint64_t(i));
       const double value = std::clamp(e.value, 0.0, 1.0);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;
@@ -782,7 +904,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
       const double mu = std::max(ax_mu.Value(x), ax_mu.clamp_min);
       TexelValue v;
-      if (aniso) {
+      if (ellipsoid) {
+        v = EllipsoidTexel(spec, mu, spec.phi.Value(y));
+      } else if (aniso) {
         // Rows: phi_o fastest, then roughness, then anisotropy.
         const int yp = y % spec.phi.size, rest = y / spec.phi.size;
         const double r = std::max(ax_r.Value(rest % ax_r.size), ax_r.clamp_min);

@@ -247,6 +247,16 @@ expect_one_line_error(bake --table E --model ggx-aniso --size 4x3x3x2 --range ph
 expect_one_line_error(eval --quantity D --model ggx-aniso --roughness 0.5)
 expect_one_line_error(eval --quantity E --model ggx-aniso --roughness 0.5 --anisotropy 2)
 expect_one_line_error(eval --quantity E --model ggx --roughness 0.5 --anisotropy 0.5)
+# ellipsoid: one material's E over mu x phi_o in [0, 2 pi], and its E_avg.
+run_tool(TRUE out err bake --table E --model ellipsoid --alpha-x 0.3 --alpha-y 0.6 --theta-x 20
+         --theta-z 30 --size 4x5 -o "${out_dir}/ellipsoid.exr")
+if(NOT out MATCHES "wrote .*E ellipsoid 4x5")
+  message(FATAL_ERROR "bake ellipsoid: '${out}'")
+endif()
+expect_one_line_error(bake --table E --model ggx --alpha-x 0.3 -o "${out_dir}/ell_bad.exr")
+expect_one_line_error(bake --table dfg --model ellipsoid -o "${out_dir}/ell_bad.exr")
+expect_one_line_error(bake --table E_avg --model ellipsoid --size 8 -o "${out_dir}/ell_bad.exr")
+expect_one_line_error(bake --table E --model ellipsoid --size 4x5 --range phi_o=0:7 -o "${out_dir}/ell_bad.exr")
 # sel_norm: the integral of the sel lobe over alpha_x x alpha_y, EXR only.
 run_tool(TRUE out err bake --table sel_norm --model sel --size 4x3 -o "${out_dir}/sel_norm.exr")
 if(NOT out MATCHES "wrote .*sel_norm sel 4x3")

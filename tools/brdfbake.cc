@@ -274,6 +274,8 @@ struct BakeOptions {
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
   std::string pixel = "float", output, seed = "1", preset, format, shader, scene;
   std::string target = "best";
+  std::string alpha_x = "0.25", alpha_y = "0.25";  // ellipsoid
+  double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
   bool complement = false, error_channel = false;
@@ -313,6 +315,11 @@ struct BakeOptions {
       app->add_option("-o,--output", output, "output directory (created if missing)")->required();
       return;
     }
+    app->add_option("--alpha-x", alpha_x, "ellipsoid: width along x")->capture_default_str();
+    app->add_option("--alpha-y", alpha_y, "ellipsoid: width along y")->capture_default_str();
+    app->add_option("--theta-x", theta_x_deg, "ellipsoid: rotation about x, degrees");
+    app->add_option("--theta-y", theta_y_deg, "ellipsoid: rotation about y, degrees");
+    app->add_option("--theta-z", theta_z_deg, "ellipsoid: rotation about z, degrees");
     app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
     app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
     app->add_option("--target", target,
@@ -391,7 +398,29 @@ struct BakeOptions {
     const bool gamma_axis = gamma_ok && entries == plain + 1;
     const bool aniso = model == "ggx-aniso";
     const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
-    if (sel) {
+    const bool ellipsoid = model == "ellipsoid";
+    if (!for_report) {
+      for (const char* o : {"--alpha-x", "--alpha-y", "--theta-x", "--theta-y", "--theta-z"}) {
+        if (Given(app, o) && !ellipsoid) {
+          Bad(std::string(o) + ": only ellipsoid tables take a material's widths and angles");
+        }
+      }
+    }
+    if (ellipsoid) {
+      spec.model.alpha_x = ParseNumber("--alpha-x", alpha_x);
+      spec.model.alpha_y = ParseNumber("--alpha-y", alpha_y);
+      spec.model.theta_x = theta_x_deg * kDegree;
+      spec.model.theta_y = theta_y_deg * kDegree;
+      spec.model.theta_z = theta_z_deg * kDegree;
+      spec.phi.max = 2 * brdfbake::kPi<double>;  // no azimuthal symmetry
+      if (eavg) {
+        if (Given(app, "--size")) Bad("--size: the ellipsoid's E_avg is one value (no axes)");
+      } else if (Given(app, "--size")) {
+        const std::vector<int> n = ParseSize(size, 2, "WxH (mu x phi_o, e.g. 64x64)");
+        spec.mu.size = n[0];
+        spec.phi.size = n[1];
+      }
+    } else if (sel) {
       if (Given(app, "--size")) {
         const std::vector<int> n = ParseSize(size, 2, "WxH (alpha_x x alpha_y, e.g. 32x32)");
         spec.alpha_x.size = n[0];
@@ -448,6 +477,10 @@ struct BakeOptions {
       axes.push_back(&spec.anisotropy);
     }
     if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
+    if (ellipsoid) {
+      axes.clear();
+      if (!eavg) axes = {&spec.mu, &spec.phi};
+    }
     std::vector<brdfbake::Axis*> named = axes;
     if (gamma_axis) named.push_back(&spec.gamma);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
@@ -471,6 +504,7 @@ struct BakeOptions {
                                    (gamma_axis ? " or gamma" : "");
             if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
             if (sel) expected = "alpha_x or alpha_y";
+            if (ellipsoid) expected = eavg ? "none (E_avg is one value)" : "mu or phi_o";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
