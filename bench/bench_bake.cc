@@ -105,6 +105,17 @@ BENCHMARK_CAPTURE(BM_Bake, E/std_gamma_axis/simd, BakeCase{TableKind::kE, "std",
 BENCHMARK_CAPTURE(BM_Bake, E_avg/std_gamma_axis/simd, BakeCase{TableKind::kEavg, "std", 2, true, true})
     ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
 
+// The timed loop of the model-specific entries below.
+void TimeBake(benchmark::State& state, const BakeSpec& spec) {
+  Table t;
+  for (auto _ : state) {
+    t = Bake(spec);
+    benchmark::DoNotOptimize(t.channels[0].values.data());
+  }
+  state.counters["integration_error"] = t.integration_error;
+  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
+}
+
 // ggx-aniso: E over mu x phi_o x roughness x anisotropy (the sizes in the
 // name; range(0) and range(1) are the size of the mu and roughness axes and
 // the threads), E_avg over roughness x anisotropy.
@@ -115,13 +126,7 @@ void BM_BakeAniso(benchmark::State& state, TableKind table) {
   spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
   spec.phi.size = spec.anisotropy.size = static_cast<int>(state.range(0)) / 2;
   spec.threads = static_cast<int>(state.range(1));
-  Table t;
-  for (auto _ : state) {
-    t = Bake(spec);
-    benchmark::DoNotOptimize(t.channels[0].values.data());
-  }
-  state.counters["integration_error"] = t.integration_error;
-  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
+  TimeBake(state, spec);
 }
 BENCHMARK_CAPTURE(BM_BakeAniso, E/ggx-aniso/simd/32x16x32x16, TableKind::kE)
     ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(3);
@@ -141,13 +146,7 @@ void BM_BakeEllipsoid(benchmark::State& state, TableKind table) {
   spec.mu.size = spec.phi.size = static_cast<int>(state.range(0));
   spec.phi.max = 2 * 3.14159265358979323846;
   spec.threads = static_cast<int>(state.range(1));
-  Table t;
-  for (auto _ : state) {
-    t = Bake(spec);
-    benchmark::DoNotOptimize(t.channels[0].values.data());
-  }
-  state.counters["integration_error"] = t.integration_error;
-  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
+  TimeBake(state, spec);
 }
 BENCHMARK_CAPTURE(BM_BakeEllipsoid, E/ellipsoid/64x64, TableKind::kE)
     ->Args({64, 2})->BRDFBAKE_BAKE_ARGS(3);

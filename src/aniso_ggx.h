@@ -27,9 +27,10 @@
 // until the summed error estimate meets the tolerance; along each ray,
 // Gauss-Kronrod 15 on pieces in w = u_b - u graded geometrically (ratio 4)
 // from u_b down to the edge layer, whose width is estimated from wi.z's
-// slope at the edge; the last piece [0, w_min] is either integrated or,
-// where its contribution is bounded below 1e-3 of the tolerance, left out
-// and its bound added to the error.
+// slope at the edge, then the ray's worst piece bisected until the ray
+// meets a fifth of the tolerance; the last piece next to the edge is left
+// out where its contribution is bounded below 1/20 of the tolerance, and
+// its bound added to the error. The psi rule is PsiRule (adaptive_rule.h).
 
 #ifndef BRDFBAKE_SRC_ANISO_GGX_H_
 #define BRDFBAKE_SRC_ANISO_GGX_H_

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "aniso_ggx.h"
+#include "adaptive_rule.h"
 #include "azimuthal.h"
 
 namespace brdfbake {
@@ -24,8 +25,9 @@ inline constexpr double kAnisoTwoPi = 6.283185307179586;
 // Each ray's pieces shrink by this factor towards the disk's edge.
 inline constexpr double kAnisoRayGrading = 0.25;
 
-struct AnisoFrame {
-  double ax, ay, wx, wy, wz, cx, cy, lambda_o;
+struct AnisoFrame : SlopeView {
+  AnisoFrame(double mu, double phi) : SlopeView(mu, phi) {}
+  double ax, ay, lambda_o;
   bool separable;
   // Eval's G2 = 2 Z / (z_weight Z + sqrt(Z^2 + P)) g_scale.
   double z_weight, g_scale;
@@ -151,10 +153,6 @@ struct AnisoRay {
   }
 };
 
-struct AnisoPsiPiece {
-  double a, b, value, err, prop;
-};
-
 struct ScalarAnisoNodes {
   void operator()(const AnisoFrame& f, const AnisoRay& ray, double v_b, double c, double h,
                   double* k, double* g) const {
@@ -173,16 +171,9 @@ template <class Nodes>
 AzimuthalResult AnisoGgxAlbedoWith(double alpha_x, double alpha_y, double mu, double phi,
                                    Masking masking, double tol, int max_pieces,
                                    const Nodes& nodes) {
-  constexpr double kTwoPi = kAnisoTwoPi;
-  AnisoFrame f;
+  AnisoFrame f(mu, phi);
   f.ax = std::clamp(alpha_x, 1e-4, 1e4);
   f.ay = std::clamp(alpha_y, 1e-4, 1e4);
-  f.wz = std::clamp(mu, 1e-7, 1.0);
-  const double so = std::sqrt((1 - f.wz) * (1 + f.wz));
-  f.wx = so * std::cos(phi);
-  f.wy = so * std::sin(phi);
-  f.cx = -f.wx / f.wz;
-  f.cy = -f.wy / f.wz;
   f.separable = masking == Masking::kSeparable;
   f.lambda_o = f.Lambda(f.wx, f.wy, f.wz);
   f.z_weight = f.separable ? 1 : 1 + 2 * f.lambda_o;
@@ -193,70 +184,20 @@ AzimuthalResult AnisoGgxAlbedoWith(double alpha_x, double alpha_y, double mu, do
   // Each ray's error enters E with the psi rule's weights (summing to 1):
   // a ray within a fifth of the tolerance leaves the rest to the psi rule.
   const double ray_tol = 0.2 * tol;
-  const KronrodRule& r = Kronrod15();
-  auto piece = [&](double a, double b) {
-    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double k = 0, g = 0, prop = 0;
-    for (int i = 0; i < 15; ++i) {
-      double v, e;
-      AnisoRay(f, c + h * r.x[i]).Integrate(f, skip_eps, ray_tol, nodes, &v, &e);
-      k += r.wk[i] * v;
-      g += r.wg[i] * v;
-      prop += r.wk[i] * e;
-    }
-    return AnisoPsiPiece{a, b, k * h / kTwoPi, std::abs(k - g) * h / kTwoPi, prop * h / kTwoPi};
-  };
-  // First cuts where c.e = 0 (cos psi alpha_x c_x + sin psi alpha_y c_y = 0)
-  // and halfway between. Near those two rays the edge's distance
-  // 1 / (S - c.e) turns from about 1 / |e| to 1 / (2 |c.e|) over
-  // delta = |e| / |d(c.e)/dpsi| (about mu at grazing): the mesh is graded
-  // geometrically (ratio 4, from pi/8) towards them down to delta / 4, so
-  // that a feature narrower than the Kronrod nodes' spacing cannot go unseen.
+  // First cuts where c.e = 0 (cos psi alpha_x c_x + sin psi alpha_y c_y = 0).
+  // Near those two rays the edge's distance 1 / (S - c.e) turns from about
+  // 1 / |e| to 1 / (2 |c.e|) over delta = |e| / |d(c.e)/dpsi| (about mu at
+  // grazing), to which PsiRule grades its first pieces.
   const double psi0 = std::atan2(f.cx * f.ax, -f.cy * f.ay);
   const double e0x = f.ax * std::cos(psi0), e0y = f.ay * std::sin(psi0);
   const double dce = std::abs(-f.cx * f.ax * std::sin(psi0) + f.cy * f.ay * std::cos(psi0));
-  const double delta = dce > 0 ? std::sqrt(e0x * e0x + e0y * e0y) / dce : kTwoPi;
-  std::vector<double> cuts = {0.25 * kTwoPi};  // offsets from a feature ray
-  for (double d = kTwoPi / 16; d > 0.25 * delta && cuts.size() < 40; d *= 0.25) cuts.push_back(d);
-  cuts.push_back(0);
-  std::vector<AnisoPsiPiece> pieces;
-  for (int k = 0; k < 4; ++k) {
-    // Quarter k runs from psi0 + k pi/2; even quarters start at a feature
-    // ray, odd ones end at one.
-    const double base = psi0 + k * 0.25 * kTwoPi;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double near = cuts[i + 1], far = cuts[i];
-      if (k % 2 == 0) {
-        pieces.push_back(piece(base + near, base + far));
-      } else {
-        pieces.push_back(piece(base + 0.25 * kTwoPi - far, base + 0.25 * kTwoPi - near));
-      }
-    }
-  }
-  auto total_error = [&] {
-    double e = 0;
-    for (const AnisoPsiPiece& p : pieces) e += p.err + p.prop;
-    return e;
+  const double delta = dce > 0 ? std::sqrt(e0x * e0x + e0y * e0y) / dce : 2 * kAnisoTwoPi;
+  auto ray = [&](double psi, double* err) {
+    double v;
+    AnisoRay(f, psi).Integrate(f, skip_eps, ray_tol, nodes, &v, err);
+    return v;
   };
-  double err = total_error();
-  while (err > tol && static_cast<int>(pieces.size()) < std::max(4, max_pieces)) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const AnisoPsiPiece p = pieces[worst];
-    // Bisection stops helping once the rays' own errors dominate.
-    if (p.err <= 0.05 * tol / pieces.size()) break;
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.a, m);
-    pieces.push_back(piece(m, p.b));
-    err = total_error();
-  }
-  AzimuthalResult out;
-  for (const AnisoPsiPiece& p : pieces) out.value += p.value;
-  out.error = err + 4e-16 * out.value;
-  out.pieces = static_cast<int>(pieces.size());
-  return out;
+  return PsiRule(ray, psi0, delta, tol, max_pieces);
 }
 
 }  // namespace brdfbake

@@ -20,6 +20,7 @@
 #include <tbb/parallel_for.h>
 
 #include "brdfbake/version.h"
+#include "adaptive_rule.h"
 #include "aniso_ggx.h"
 #include "ellipsoid_albedo.h"
 #include "sel_norm.h"
@@ -367,41 +368,44 @@ std::string IntegratorJson(const BakeSpec& spec) {
   nlohmann::json j;
   const int n = spec.EffectiveSamples();
   j["method"] = IntegratorName(spec.integrator);
+  auto describe = [&](const char* domain, const char* rule, const char* error_estimate) {
+    j["domain"] = domain;
+    j["rule"] = rule;
+    j["error_estimate"] = error_estimate;
+  };
   switch (spec.integrator) {
     case IntegratorKind::kQuadrature:
       j["tolerance"] = spec.tolerance;
       j["max_pieces"] = n;
       if (spec.table == TableKind::kSelNorm) {
-        j["domain"] = "N = 4 pi alpha_x alpha_y G, G = (2/pi) int_0^{pi/2} int_0^1 g dx dphi over "
-                      "the half vector of the stretched direction and the lobe axis in GGX "
-                      "slope coordinates (x = 1 - u), g = 1 / |v' / k| (src/sel_norm.h)";
-        j["rule"] = "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak "
-                    "of g, worst pieces bisected; the tolerance applies to G";
-        j["error_estimate"] = "sum of |K15 - G7| of both rules";
+        describe("N = 4 pi alpha_x alpha_y G, G = (2/pi) int_0^{pi/2} int_0^1 g dx dphi over the "
+                 "half vector of the stretched direction and the lobe axis in GGX slope "
+                 "coordinates (x = 1 - u), g = 1 / |v' / k| (src/sel_norm.h)",
+                 "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak of g, "
+                 "worst pieces bisected; the tolerance applies to G",
+                 "sum of |K15 - G7| of both rules");
         break;
       }
-      if (spec.model.name == "ellipsoid") {
-        j["domain"] = "the slope plane of the half vector: the ellipsoid's slope density is a "
-                      "sheared and shifted GGX, uniform in polar coordinates (psi, u) around its "
-                      "peak; wi above the horizon is a disk in slopes, crossed by each ray in a "
-                      "segment found in closed form (src/ellipsoid_albedo.h)";
-        j["rule"] = "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
-                    "Gauss-Kronrod 15 in sqrt(u), graded towards the horizon crossings and "
-                    "bisected worst first to a fifth of the tolerance (double scalar)";
-        j["error_estimate"] = "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of "
-                              "|K15 - G7| carried through the Kronrod weights";
-        break;
-      }
-      if (spec.Anisotropic()) {
-        j["domain"] = "the slope plane of the half vector, in the stretched polar coordinates "
-                      "(psi, u = rho^2 / (1 + rho^2)) in which the GGX slope density is uniform; "
-                      "wi above the horizon is a disk in slopes, reached along each ray in "
-                      "closed form";
-        j["rule"] = "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
-                    "Gauss-Kronrod 15 in sqrt(u) on pieces graded by 4 towards the disk's edge "
-                    "down to its masking layer (double scalar)";
-        j["error_estimate"] = "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of "
-                              "|K15 - G7| carried through the Kronrod weights";
+      if (spec.model.name == "ellipsoid" || spec.Anisotropic()) {
+        describe(spec.Anisotropic()
+                     ? "the slope plane of the half vector, in the stretched polar coordinates "
+                       "(psi, u = rho^2 / (1 + rho^2)) in which the GGX slope density is uniform; "
+                       "wi above the horizon is a disk in slopes, reached along each ray in "
+                       "closed form (src/aniso_ggx.h)"
+                     : "the slope plane of the half vector: the ellipsoid's slope density is a "
+                       "sheared and shifted GGX, uniform in polar coordinates (psi, u) around its "
+                       "peak; wi above the horizon is a disk in slopes, crossed by each ray in a "
+                       "segment found in closed form (src/ellipsoid_albedo.h)",
+                 spec.Anisotropic()
+                     ? "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
+                       "Gauss-Kronrod 15 in sqrt(u) on pieces graded by 4 towards the disk's "
+                       "edge down to its masking layer (nodes in double SIMD lanes)"
+                     : "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
+                       "Gauss-Kronrod 15 in sqrt(u), graded towards the horizon crossings, cut "
+                       "at the kinks of G1's clamp and bisected worst first to a fifth of the "
+                       "tolerance (double scalar)",
+                 "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of |K15 - G7| "
+                 "carried through the Kronrod weights");
         break;
       }
       if (spec.model.name == "ggx" && spec.table != TableKind::kDfg) {
@@ -485,20 +489,6 @@ std::string IntegratorJson(const BakeSpec& spec) {
 
 namespace {
 
-// Replaces the piece with the largest `err` by its two halves, made by
-// piece(a, b).
-template <class Piece, class Make>
-void BisectWorst(std::vector<Piece>* pieces, const Make& piece) {
-  size_t worst = 0;
-  for (size_t i = 1; i < pieces->size(); ++i) {
-    if ((*pieces)[i].err > (*pieces)[worst].err) worst = i;
-  }
-  const Piece p = (*pieces)[worst];
-  const double m = 0.5 * (p.a + p.b);
-  (*pieces)[worst] = piece(p.a, m);
-  pieces->push_back(piece(m, p.b));
-}
-
 // E_avg = 2 int E(mu) mu dmu = 4 int_0^1 E(s^2) s^3 ds by adaptive
 // Gauss-Kronrod 15 in s from the pieces [0, 1/4], [1/4, 1]: the worst piece
 // is bisected until the sum of |K15 - G7| plus the propagated error of E
@@ -508,22 +498,14 @@ void BisectWorst(std::vector<Piece>* pieces, const Make& piece) {
 // ~1e-5. `e_at(mu)` gives E and its error.
 template <class EAt>
 EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
-  struct Piece {
-    double a, b, value, err, prop;
-  };
-  const KronrodRule& r = Kronrod15();
+  using Piece = GkPiece;
   auto piece = [&](double a, double b) {
-    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double k = 0, g = 0, prop = 0;
-    for (int i = 0; i < 15; ++i) {
-      const double sv = c + h * r.x[i];
+    return KronrodPiece(a, b, 1.0, [&](double sv, double* err) {
       const TexelValue v = e_at(sv * sv);
       const double jac = 4 * sv * sv * sv;
-      k += r.wk[i] * jac * v.e;
-      g += r.wg[i] * jac * v.e;
-      prop += r.wk[i] * jac * v.err_e;
-    }
-    return Piece{a, b, k * h, std::abs(k - g) * h, prop * h};
+      *err = jac * v.err_e;
+      return jac * v.e;
+    });
   };
   std::vector<Piece> pieces = {piece(0.0, 0.25), piece(0.25, 1.0)};
   auto sums = [&](double* rule, double* prop) {
@@ -569,22 +551,15 @@ TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, doubl
 // narrow axis, where the effective width turns from alpha_t to alpha_b.
 template <class EAt>
 EavgEstimate HemisphericalEavg(const EAt& e_at, double phi_max, double tolerance) {
-  const KronrodRule& rule = Kronrod15();
   auto average_over_phi = [&](double mu) {
-    struct Piece {
-      double a, b, value, err, prop;
-    };
+    using Piece = GkPiece;
     auto piece = [&](double a, double b) {
-      const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-      double k = 0, g = 0, prop = 0;
-      for (int i = 0; i < 15; ++i) {
-        const TexelValue v = e_at(mu, c + h * rule.x[i]);
-        k += rule.wk[i] * v.e;
-        g += rule.wg[i] * v.e;
-        prop += rule.wk[i] * v.err_e;
-      }
-      const double scale = h / phi_max;  // the average over [0, phi_max]
-      return Piece{a, b, k * scale, std::abs(k - g) * scale, prop * scale};
+      // The average over [0, phi_max].
+      return KronrodPiece(a, b, 1 / phi_max, [&](double phi, double* err) {
+        const TexelValue v = e_at(mu, phi);
+        *err = v.err_e;
+        return v.e;
+      });
     };
     std::vector<Piece> pieces = {piece(0.0, phi_max)};
     auto rule_error = [&] {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "brdfbake/ellipsoid.h"
+#include "adaptive_rule.h"
 #include "integrate.h"
 
 namespace brdfbake {
@@ -18,9 +19,9 @@ constexpr double kTwoPi = 6.283185307179586;
 // adaptive bisection refines from there.
 constexpr int kLevels = 3;
 
-struct Frame {
+struct Frame : SlopeView {
   EllipsoidNdf<double> ndf;
-  double wx = 0, wy = 0, wz = 1, cx = 0, cy = 0, lambda_o = 0;
+  double lambda_o = 0;
   bool separable = false;
   double s0x = 0, s0y = 0;         // the slope of the density's peak
   double l11 = 1, l12 = 0, l22 = 1;  // L, upper triangular: s = s0 + L v
@@ -37,7 +38,7 @@ struct Frame {
     return rho_h * Length(aw) - Dot(aw, h_dir);
   }
 
-  explicit Frame(const EllipsoidNdf<double>& n) : ndf(n) {}
+  Frame(const EllipsoidNdf<double>& n, double mu, double phi) : SlopeView(mu, phi), ndf(n) {}
   double G2(double lambda_i) const {
     return separable ? 1 / ((1 + lambda_i) * (1 + lambda_o)) : 1 / (1 + lambda_i + lambda_o);
   }
@@ -134,16 +135,7 @@ class Ray {
       for (const Piece& p : pieces) e += p.err;
       return e;
     };
-    while (sum_err() > f_.ray_tol && pieces.size() < 96) {
-      size_t worst = 0;
-      for (size_t i = 1; i < pieces.size(); ++i) {
-        if (pieces[i].err > pieces[worst].err) worst = i;
-      }
-      const Piece p = pieces[worst];
-      const double m = 0.5 * (p.a + p.b);
-      pieces[worst] = make(p.a, m);
-      pieces.push_back(make(m, p.b));
-    }
+    while (sum_err() > f_.ray_tol && pieces.size() < 96) BisectWorst(&pieces, make);
     for (const Piece& p : pieces) *value += p.value;
     *error = sum_err();
   }
@@ -210,13 +202,7 @@ AzimuthalResult EllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x, 
                                 double theta_z, double mu, double phi, Masking masking,
                                 double tol, int max_pieces) {
   const double ax = std::clamp(alpha_x, 1e-4, 1e4), ay = std::clamp(alpha_y, 1e-4, 1e4);
-  Frame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z));
-  f.wz = std::clamp(mu, 1e-7, 1.0);
-  const double so = std::sqrt((1 - f.wz) * (1 + f.wz));
-  f.wx = so * std::cos(phi);
-  f.wy = so * std::sin(phi);
-  f.cx = -f.wx / f.wz;
-  f.cy = -f.wy / f.wz;
+  Frame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z), mu, phi);
   f.separable = masking == Masking::kSeparable;
   f.lambda_o = f.ndf.Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.ray_tol = 0.2 * tol;
@@ -257,25 +243,9 @@ AzimuthalResult EllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x, 
   // |d|^2 - R^2 = |s0|^2 - 2 s0.c + (|c|^2 - 1 / wo.z^2), the last term -1.
   f.d2_minus_r2 = f.s0x * f.s0x + f.s0y * f.s0y - 2 * (f.s0x * f.cx + f.s0y * f.cy) - 1;
 
-  const KronrodRule& r = Kronrod15();
-  struct PsiPiece {
-    double a, b, value, err, prop;
-  };
-  auto piece = [&](double a, double b2) {
-    const double c = 0.5 * (a + b2), h = 0.5 * (b2 - a);
-    double k = 0, g = 0, prop = 0;
-    for (int i = 0; i < 15; ++i) {
-      double v, e;
-      Ray(f, c + h * r.x[i]).Integrate(&v, &e);
-      k += r.wk[i] * v;
-      g += r.wg[i] * v;
-      prop += r.wk[i] * e;
-    }
-    return PsiPiece{a, b2, k * h / kTwoPi, std::abs(k - g) * h / kTwoPi, prop * h / kTwoPi};
-  };
-  // First cuts where d.e = 0 (cos psi dx l11 + sin psi (dx l12 + dy l22) = 0),
-  // graded towards them at grazing as in aniso_ggx.h (delta = |e| sqrt(R^2 -
-  // |d|^2) / |d(d.e)/dpsi|) when s0 lies inside the disk.
+  // First cuts where d.e = 0 (cos psi dx l11 + sin psi (dx l12 + dy l22) = 0);
+  // at grazing PsiRule grades towards them as in aniso_ggx.h, with delta =
+  // |e| sqrt(R^2 - |d|^2) / |d(d.e)/dpsi| when s0 lies inside the disk.
   const double ca = f.dx * f.l11, cb = f.dx * f.l12 + f.dy * f.l22;
   const double psi0 = std::atan2(ca, -cb);
   const double e0x = f.l11 * std::cos(psi0) + f.l12 * std::sin(psi0), e0y = f.l22 * std::sin(psi0);
@@ -283,45 +253,13 @@ AzimuthalResult EllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x, 
   const double inside = -f.d2_minus_r2;
   const double delta = dde > 0 && inside > 0
                            ? std::sqrt(e0x * e0x + e0y * e0y) * std::sqrt(inside) / dde
-                           : kTwoPi;
-  std::vector<double> cuts = {0.25 * kTwoPi};
-  for (double d = kTwoPi / 16; d > 0.25 * delta && cuts.size() < 40; d *= 0.25) cuts.push_back(d);
-  cuts.push_back(0);
-  std::vector<PsiPiece> pieces;
-  for (int k = 0; k < 4; ++k) {
-    const double base = psi0 + k * 0.25 * kTwoPi;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double near = cuts[i + 1], far = cuts[i];
-      if (k % 2 == 0) {
-        pieces.push_back(piece(base + near, base + far));
-      } else {
-        pieces.push_back(piece(base + 0.25 * kTwoPi - far, base + 0.25 * kTwoPi - near));
-      }
-    }
-  }
-  auto total_error = [&] {
-    double e = 0;
-    for (const PsiPiece& p : pieces) e += p.err + p.prop;
-    return e;
+                           : 2 * kTwoPi;
+  auto ray = [&](double psi, double* err) {
+    double v;
+    Ray(f, psi).Integrate(&v, err);
+    return v;
   };
-  double err = total_error();
-  while (err > tol && static_cast<int>(pieces.size()) < std::max(4, max_pieces)) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const PsiPiece p = pieces[worst];
-    if (p.err <= 0.05 * tol / pieces.size()) break;
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.a, m);
-    pieces.push_back(piece(m, p.b));
-    err = total_error();
-  }
-  AzimuthalResult out;
-  for (const PsiPiece& p : pieces) out.value += p.value;
-  out.error = err + 4e-16 * out.value;
-  out.pieces = static_cast<int>(pieces.size());
-  return out;
+  return PsiRule(ray, psi0, delta, tol, max_pieces);
 }
 
 }  // namespace brdfbake

@@ -7,14 +7,14 @@
 #include <cmath>
 #include <vector>
 
+#include "adaptive_rule.h"
+
 namespace brdfbake {
 namespace {
 
 constexpr double kHalfPiSel = 1.5707963267948966;
 
-struct Piece {
-  double a, b, value, err, prop = 0;  // prop: the inner rules' errors, weighted
-};
+using Piece = GkPiece;
 
 // Gauss-Kronrod 15 on pieces of [lo, hi] graded by 4 towards `toward`
 // (lo or hi) down to `finest`, then the worst bisected until the summed
@@ -23,16 +23,8 @@ struct Piece {
 template <class F>
 void Adaptive(const F& f, double lo, double hi, bool toward_lo, double finest, double tol,
               double* value, double* error) {
-  const KronrodRule& r = Kronrod15();
   auto piece = [&](double a, double b) {
-    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double k = 0, g = 0;
-    for (int i = 0; i < 15; ++i) {
-      const double v = f(c + h * r.x[i]);
-      k += r.wk[i] * v;
-      g += r.wg[i] * v;
-    }
-    return Piece{a, b, k * h, std::abs(k - g) * h, 0};
+    return KronrodPiece(a, b, 1.0, [&](double x, double*) { return f(x); });
   };
   std::vector<Piece> pieces;
   double width = hi - lo;
@@ -49,16 +41,7 @@ void Adaptive(const F& f, double lo, double hi, bool toward_lo, double finest, d
     for (const Piece& p : pieces) e += p.err;
     return e;
   };
-  while (sum_err() > tol && pieces.size() < 200) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.a, m);
-    pieces.push_back(piece(m, p.b));
-  }
+  while (sum_err() > tol && pieces.size() < 200) BisectWorst(&pieces, piece);
   *value = 0;
   for (const Piece& p : pieces) *value += p.value;
   *error = sum_err();
@@ -91,20 +74,8 @@ SelIntegral SelLobeIntegral(double alpha_x, double alpha_y, double tol) {
   };
   // The x rule evaluates over_phi at its nodes; the inner errors enter with
   // the Kronrod weights.
-  const KronrodRule& r = Kronrod15();
   std::vector<Piece> pieces;
-  auto piece = [&](double lo, double hi) {
-    const double c = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
-    double k = 0, g = 0, pe = 0;
-    for (int i = 0; i < 15; ++i) {
-      double e;
-      const double v = over_phi(c + h * r.x[i], &e);
-      k += r.wk[i] * v;
-      g += r.wg[i] * v;
-      pe += r.wk[i] * e;
-    }
-    return Piece{lo, hi, k * h, std::abs(k - g) * h, pe * h};
-  };
+  auto piece = [&](double lo, double hi) { return KronrodPiece(lo, hi, 1.0, over_phi); };
   // Graded towards x = 0 down to a^2 / 4, where theta' = 2 theta_h passes
   // pi / 2 (t = 1 at x = a^2 / (1 + a^2)).
   double edge = 1.0;
@@ -123,14 +94,7 @@ SelIntegral SelLobeIntegral(double alpha_x, double alpha_y, double tol) {
   double rule_err, inner_err;
   totals(&rule_err, &inner_err);
   while (rule_err > 0.5 * tol && pieces.size() < 200) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.a, m);
-    pieces.push_back(piece(m, p.b));
+    BisectWorst(&pieces, piece);
     totals(&rule_err, &inner_err);
   }
   SelIntegral out;

@@ -1,0 +1,123 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The adaptive Gauss-Kronrod machinery the slope-plane rules (aniso_ggx,
+// ellipsoid_albedo), the sel integral and the E_avg rules share: a piece
+// with its Kronrod 15 value and |K15 - G7| estimate (and the errors of
+// inner integrals carried through the Kronrod weights), worst-first
+// bisection, and the rule over the ray angle psi of the slope plane.
+
+#ifndef BRDFBAKE_SRC_ADAPTIVE_RULE_H_
+#define BRDFBAKE_SRC_ADAPTIVE_RULE_H_
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "azimuthal.h"
+
+namespace brdfbake {
+
+// The view of the slope-plane rules: wo at cos(theta) = mu (at least
+// 1e-7) and azimuth phi, and the centre c = -wo_xy / wo.z of the horizon
+// disk |s - c| < 1 / wo.z in slopes.
+struct SlopeView {
+  double wx, wy, wz, cx, cy;
+  SlopeView(double mu, double phi) {
+    wz = std::clamp(mu, 1e-7, 1.0);
+    const double so = std::sqrt((1 - wz) * (1 + wz));
+    wx = so * std::cos(phi);
+    wy = so * std::sin(phi);
+    cx = -wx / wz;
+    cy = -wy / wz;
+  }
+};
+
+struct GkPiece {
+  double a = 0, b = 0, value = 0, err = 0, prop = 0;
+};
+
+// Gauss-Kronrod 15 of f on [a, b] times `scale`; f(x, &inner_err) returns
+// the integrand and the error of its own (inner) evaluation.
+template <class F>
+GkPiece KronrodPiece(double a, double b, double scale, const F& f) {
+  const KronrodRule& r = Kronrod15();
+  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double k = 0, g = 0, prop = 0;
+  for (int i = 0; i < 15; ++i) {
+    double e = 0;
+    const double v = f(c + h * r.x[i], &e);
+    k += r.wk[i] * v;
+    g += r.wg[i] * v;
+    prop += r.wk[i] * e;
+  }
+  const double s = h * scale;
+  return GkPiece{a, b, k * s, std::abs(k - g) * s, prop * s};
+}
+
+// Replaces the piece with the largest `err` by its two halves, made by
+// make(a, b).
+template <class Piece, class Make>
+void BisectWorst(std::vector<Piece>* pieces, const Make& make) {
+  size_t worst = 0;
+  for (size_t i = 1; i < pieces->size(); ++i) {
+    if ((*pieces)[i].err > (*pieces)[worst].err) worst = i;
+  }
+  const Piece p = (*pieces)[worst];
+  const double m = 0.5 * (p.a + p.b);
+  (*pieces)[worst] = make(p.a, m);
+  pieces->push_back(make(m, p.b));
+}
+
+// The integral over psi in [psi0, psi0 + 2 pi) of ray(psi, &err) / (2 pi).
+// Quarter turns from psi0 (and psi0 + pi, the two "feature" rays), graded
+// geometrically (ratio 4, from pi/8) towards those two rays down to
+// delta / 4, so that a feature of width delta next to them cannot fall
+// between Kronrod nodes; then the worst piece is bisected until the summed
+// |K15 - G7| plus the rays' own errors meets `tol`, or bisection stops
+// helping (the worst piece below 1/20 of the tolerance per piece), or
+// max_pieces.
+template <class Ray>
+AzimuthalResult PsiRule(const Ray& ray, double psi0, double delta, double tol, int max_pieces) {
+  constexpr double kTwoPi = 6.283185307179586;
+  auto piece = [&](double a, double b) { return KronrodPiece(a, b, 1 / kTwoPi, ray); };
+  std::vector<double> cuts = {0.25 * kTwoPi};  // offsets from a feature ray
+  for (double d = kTwoPi / 16; d > 0.25 * delta && cuts.size() < 40; d *= 0.25) cuts.push_back(d);
+  cuts.push_back(0);
+  std::vector<GkPiece> pieces;
+  for (int k = 0; k < 4; ++k) {
+    // Quarter k runs from psi0 + k pi/2; even quarters start at a feature
+    // ray, odd ones end at one.
+    const double base = psi0 + k * 0.25 * kTwoPi;
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+      const double near = cuts[i + 1], far = cuts[i];
+      if (k % 2 == 0) {
+        pieces.push_back(piece(base + near, base + far));
+      } else {
+        pieces.push_back(piece(base + 0.25 * kTwoPi - far, base + 0.25 * kTwoPi - near));
+      }
+    }
+  }
+  auto total_error = [&] {
+    double e = 0;
+    for (const GkPiece& p : pieces) e += p.err + p.prop;
+    return e;
+  };
+  double err = total_error();
+  while (err > tol && static_cast<int>(pieces.size()) < std::max(4, max_pieces)) {
+    double worst = 0;
+    for (const GkPiece& p : pieces) worst = std::max(worst, p.err);
+    if (worst <= 0.05 * tol / pieces.size()) break;
+    BisectWorst(&pieces, piece);
+    err = total_error();
+  }
+  AzimuthalResult out;
+  for (const GkPiece& p : pieces) out.value += p.value;
+  out.error = err + 4e-16 * out.value;
+  out.pieces = static_cast<int>(pieces.size());
+  return out;
+}
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_ADAPTIVE_RULE_H_
