@@ -53,10 +53,12 @@ void ValidateEvalRequest(const EvalRequest& req) {
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
       const std::string& m = req.model.name;
-      if (m != "ggx" && m != "beckmann" && m != "std" && !aniso) {
-        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann and std only (got '" + m + "')");
+      const bool ellipsoid = m == "ellipsoid";
+      if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !ellipsoid) {
+        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std and ellipsoid only (got '" + m + "')");
       }
-      if (aniso && q == "dfg") Bad("--quantity: ggx-aniso has E and E_avg (no dfg)");
+      if ((aniso || ellipsoid) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+      if (ellipsoid) continue;  // the material's own widths and angles
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
             "not --alpha-x/--alpha-y");
@@ -119,6 +121,22 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
   BakeSpec spec;
   spec.model = req.model;
   spec.masking = req.masking;
+  if (spec.model.name == "ellipsoid") {
+    // The material's E at the view (mu, --phi-o), or its E_avg.
+    spec.table = q == "E_avg" ? TableKind::kEavg : TableKind::kE;
+    if (q == "E_avg") {
+      spec.mu.size = 2;  // unused: E_avg has no axes
+      const Table t = Bake(spec);
+      return "," + Fmt(t.channels[0].values[0]) + "," + Fmt(t.integration_error);
+    }
+    spec.mu.size = spec.phi.size = 1;
+    spec.mu.placement = spec.phi.placement = Placement::kCenters;
+    spec.mu.min = spec.mu.max = std::clamp(mu, 0.0, 1.0);
+    spec.phi.min = spec.phi.max = std::fmod(std::fmod(req.phi_o, 2 * kPi<double>) + 2 * kPi<double>,
+                                            2 * kPi<double>);
+    const Table t = Bake(spec);
+    return "," + Fmt(t.channels[0].values[0]) + "," + Fmt(t.integration_error);
+  }
   if (spec.Anisotropic()) {
     if (q == "E_avg") {
       const EavgEstimate e = IntegrateAnisoEavg(spec, roughness, req.anisotropy);

@@ -253,6 +253,12 @@ run_tool(TRUE out err bake --table E --model ellipsoid --alpha-x 0.3 --alpha-y 0
 if(NOT out MATCHES "wrote .*E ellipsoid 4x5")
   message(FATAL_ERROR "bake ellipsoid: '${out}'")
 endif()
+run_tool(TRUE out err eval --quantity E --model ellipsoid --alpha-x 0.3 --alpha-y 0.6 --theta-x 20
+         --mu-o 0.5 --phi-o 40)
+if(NOT out MATCHES "^mu,roughness,E,E_error\n0.5,")
+  message(FATAL_ERROR "eval ellipsoid E: '${out}'")
+endif()
+expect_one_line_error(eval --quantity dfg --model ellipsoid --alpha-x 0.3 --alpha-y 0.6)
 expect_one_line_error(bake --table E --model ggx --alpha-x 0.3 -o "${out_dir}/ell_bad.exr")
 expect_one_line_error(bake --table dfg --model ellipsoid -o "${out_dir}/ell_bad.exr")
 expect_one_line_error(bake --table E_avg --model ellipsoid --size 8 -o "${out_dir}/ell_bad.exr")
