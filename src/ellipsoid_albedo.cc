@@ -226,14 +226,20 @@ AzimuthalResult EllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x, 
                           Mat3<double>::RotZ(theta_z));
   auto col = [&](int j) { return Vec3<double>(b.m[0][j], b.m[1][j], b.m[2][j]); };
   const Vec3<double> b1 = col(0), b2 = col(1), b3 = col(2);
-  const double g11 = Dot(b1, b1), g12 = Dot(b1, b2), g22 = Dot(b2, b2);
-  const double h1 = Dot(b1, b3), h2 = Dot(b2, b3);
-  const double det = g11 * g22 - g12 * g12;
-  f.s0x = (g22 * h1 - g12 * h2) / det;
-  f.s0y = (g11 * h2 - g12 * h1) / det;
-  const double q_min = Dot(b3, b3) - (h1 * f.s0x + h2 * f.s0y);
-  // G = C^T C, C = [[c11, c12], [0, c22]]; L = sqrt(Q_min) C^-1.
-  const double c11 = std::sqrt(g11), c12 = g12 / c11, c22 = std::sqrt(g22 - c12 * c12);
+  // Without cancellation for thin, tilted ellipsoids (B's columns up to
+  // 1 / alpha_min long and nearly parallel): with n12 = b1 x b2,
+  // det G = |n12|^2, s0 by Cramer's rule on the projection onto n12's
+  // plane, and Q_min = (det B)^2 / det G (the squared distance from b3 to
+  // span(b1, b2)), det B = 1 / (alpha_x alpha_y).
+  const Vec3<double> n12 = Cross(b1, b2);
+  const double det_g = Dot(n12, n12);
+  f.s0x = Dot(Cross(b3, b2), n12) / det_g;
+  f.s0y = Dot(Cross(b1, b3), n12) / det_g;
+  const double det_b = 1 / (ax * ay);
+  const double q_min = det_b * det_b / det_g;
+  // G = C^T C, C = [[c11, c12], [0, c22]], c22 = sqrt(det G) / c11; L = sqrt(Q_min) C^-1.
+  const double g11 = Dot(b1, b1), g12 = Dot(b1, b2);
+  const double c11 = std::sqrt(g11), c12 = g12 / c11, c22 = std::sqrt(det_g) / c11;
   const double sq = std::sqrt(q_min);
   f.l11 = sq / c11;
   f.l12 = -sq * c12 / (c11 * c22);

@@ -114,6 +114,25 @@ TEST(AnisoGgxTest, EvenInPhiAndSymmetricAboutHalfPi) {
   }
 }
 
+// Stiff cases (widths 1e-4 to 3, 10^4 : 1, mu from 0 to 1): finite, in
+// [0, 1], and within the tolerance.
+TEST(AnisoGgxTest, StiffCasesFiniteInRangeAndWithinTolerance) {
+  for (double ax : {1e-4, 1e-2, 1.0, 3.0}) {
+    for (double ay : {1e-4, 0.3, 1.0}) {
+      for (double mu : {0.0, 1e-7, 1e-3, 0.5, 1.0}) {
+        for (double phi : {0.0, 0.8, kHalfPi}) {
+          const AzimuthalResult a =
+              AnisoGgxAlbedo(ax, ay, mu, phi, Masking::kHeightCorrelated, 1e-7, 512);
+          ASSERT_TRUE(std::isfinite(a.value) && std::isfinite(a.error));
+          EXPECT_GE(a.value, 0.0);
+          EXPECT_LE(a.value, 1 + a.error) << ax << " " << ay << " " << mu << " " << phi;
+          EXPECT_LE(a.error, 1e-7);
+        }
+      }
+    }
+  }
+}
+
 BakeSpec AnisoSpec(TableKind table) {
   BakeSpec s;
   s.table = table;

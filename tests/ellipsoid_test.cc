@@ -537,8 +537,11 @@ TEST(EllipsoidAlbedoTest, TiltedAgreesWithVisibleNormalQmc) {
   struct Case {
     double ax, ay, tx, ty, tz, mu, phi;
   };
+  // The last two: 10^4 : 1, tilted, near grazing and at mu = 0.5 (where an
+  // earlier slope construction lost 1.5e-3 to cancellation).
   for (const Case& c : {Case{0.3, 0.6, 0.3, 0, 0.5, 0.5, 0.3}, Case{0.4, 0.4, 0.6, 0.2, 0, 0.7, 4.0},
-                        Case{0.2, 0.5, 0.8, -0.5, 1.0, 0.2, 1.0}}) {
+                        Case{0.2, 0.5, 0.8, -0.5, 1.0, 0.2, 1.0}, Case{1, 1e-4, 0.8, 0, 0.3, 1e-3, 0},
+                        Case{1, 1e-4, 1.5, -1.2, 0.3, 0.5, 0}}) {
     const EllipsoidNdf<double> ndf(c.ax, c.ay, c.tx, c.ty, c.tz);
     const Vec3<double> wo = FromMuPhi(c.mu, c.phi);
     const double area = ndf.LuneProjectedArea(wo, Vec3<double>(0, 0, 1));
@@ -554,6 +557,30 @@ TEST(EllipsoidAlbedoTest, TiltedAgreesWithVisibleNormalQmc) {
     const AzimuthalResult a = EllipsoidAlbedo(c.ax, c.ay, c.tx, c.ty, c.tz, c.mu, c.phi,
                                               Masking::kSeparable, 1e-9, 512);
     EXPECT_NEAR(a.value, acc / n, 2e-6) << c.tx << " " << c.mu;
+  }
+}
+
+// Stiff cases (widths 1e-4 to 1, tilts to 86 degrees, mu from 0 to 1):
+// finite, in [0, 1], and within the tolerance.
+TEST(EllipsoidAlbedoTest, StiffCasesFiniteInRangeAndWithinTolerance) {
+  for (double ax : {1e-4, 0.05, 1.0}) {
+    for (double ay : {1e-4, 0.5}) {
+      for (double tx : {0.0, 0.8, 1.5}) {
+        for (double ty : {0.0, -1.2}) {
+          for (double mu : {0.0, 0.01, 0.5, 1.0}) {
+            for (double phi : {0.0, 2.0, 4.5}) {
+              const AzimuthalResult a = EllipsoidAlbedo(ax, ay, tx, ty, 0.3, mu, phi,
+                                                        Masking::kHeightCorrelated, 1e-7, 512);
+              ASSERT_TRUE(std::isfinite(a.value) && std::isfinite(a.error));
+              EXPECT_GE(a.value, 0.0);
+              EXPECT_LE(a.value, 1 + a.error) << ax << " " << ay << " " << tx << " " << ty << " "
+                                                << mu << " " << phi;
+              EXPECT_LE(a.error, 1e-7);
+            }
+          }
+        }
+      }
+    }
   }
 }
 
