@@ -210,7 +210,8 @@ TEST(BakeTest, EavgMeetsItsToleranceAndClaim) {
   }
 }
 
-// Quadrature and QMC; std over a gamma axis; ggx-aniso's 4D table.
+// Quadrature and QMC; std over a gamma axis; ggx-aniso's 4D table; an
+// ellipsoid material's E and E_avg; sel_norm.
 TEST(BakeTest, BitIdenticalAtAnyThreadCount) {
   std::vector<BakeSpec> specs;
   for (IntegratorKind kind : {IntegratorKind::kQuadrature, IntegratorKind::kQmc}) {
@@ -230,6 +231,22 @@ TEST(BakeTest, BitIdenticalAtAnyThreadCount) {
   aniso.mu.size = aniso.roughness.size = 4;
   aniso.phi.size = aniso.anisotropy.size = 3;
   specs.push_back(aniso);
+  BakeSpec ellipsoid;
+  ellipsoid.model.name = "ellipsoid";
+  ellipsoid.model.alpha_x = 0.3;
+  ellipsoid.model.alpha_y = 0.6;
+  ellipsoid.model.theta_x = 0.4;
+  ellipsoid.mu.size = 4;
+  ellipsoid.phi.size = 5;
+  ellipsoid.phi.max = 6.283185307179586;
+  specs.push_back(ellipsoid);
+  ellipsoid.table = TableKind::kEavg;  // its E values in parallel
+  specs.push_back(ellipsoid);
+  BakeSpec sel;
+  sel.table = TableKind::kSelNorm;
+  sel.model.name = "sel";
+  sel.alpha_x.size = sel.alpha_y.size = 5;
+  specs.push_back(sel);
   for (BakeSpec spec : specs) {
     spec.threads = 1;
     const Table a = Bake(spec);
