@@ -590,10 +590,12 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
 // for the material in spec.model.
 TexelValue EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
   const ModelParams& m = spec.model;
+  const double mu_c = std::max(mu, kMuMin);
   const AzimuthalResult a =
-      EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z,
-                      std::max(mu, kMuMin), phi, spec.masking, spec.tolerance,
-                      spec.EffectiveSamples());
+      spec.simd ? SimdEllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
+                                      phi, spec.masking, spec.tolerance, spec.EffectiveSamples())
+                : EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
+                                  phi, spec.masking, spec.tolerance, spec.EffectiveSamples());
   TexelValue v;
   v.e = a.value;
   v.err_e = a.error;

@@ -14,6 +14,7 @@
 #include "quadrature_simd.h"
 
 #include "aniso_ggx_rule.h"
+#include "ellipsoid_albedo_rule.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/quadrature_simd.cc"
@@ -241,6 +242,94 @@ struct SimdAnisoNodes {
   }
 };
 
+// One piece of an ellipsoid ray (ellipsoid_albedo_rule.h,
+// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::WiAt and
+// the ellipsoid's Lambda (ellipsoid.h), with both sides of each branch
+// computed and selected per lane.
+struct SimdEllipsoidNodes {
+  void operator()(const EllipsoidRay& ray, double c, double h, double len, double* k,
+                  double* g) const {
+    using V = hn::Vec<DF64>;
+    static const SimdAnisoNodes::Rule rule;
+    const EllipsoidFrame& f = ray.f_;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+    const V cv = hn::Set(d, c), hv = hn::Set(d, h), lenv = hn::Set(d, len);
+    const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
+    const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
+    const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
+    const V ex = hn::Set(d, ray.ex_), ey = hn::Set(d, ray.ey_);
+    const V wz_ee = hn::Set(d, f.wz * ray.ee_), two_wz = hn::Set(d, 2 * f.wz);
+    const V s0x = hn::Set(d, f.s0x), s0y = hn::Set(d, f.s0y);
+    const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx), wy = hn::Set(d, f.wy);
+    V am[3][3];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.a.m[i][j]);
+    }
+    const V hx = hn::Set(d, f.h_dir.x), hy = hn::Set(d, f.h_dir.y), hz = hn::Set(d, f.h_dir.z);
+    const double rho = f.rho_h;
+    const V rho_v = hn::Set(d, rho), rho2 = hn::Set(d, rho * rho);
+    const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.lambda_scale);
+    const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
+    V ks = zero, gsum = zero;
+    for (size_t i = 0; i < 16; i += N) {
+      const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
+      const auto upper = hn::Ge(o, zero);
+      const V y = hn::IfThenElse(upper, o, hn::Add(lenv, o));      // x_hi - x
+      const V t = hn::IfThenElse(upper, hn::Sub(lenv, o), hn::Neg(o));  // x - x_lo
+      const V x = hn::Sub(x_hi, y);
+      const V omx2 = hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
+                                    hn::NegMulAdd(t, hn::MulAdd(two, x_lo, t), omx2_lo));
+      const auto ok1 = hn::And(hn::Gt(x, zero), hn::Gt(omx2, zero));
+      const V omx2s = hn::IfThenElse(ok1, omx2, one);
+      const V rho_n = hn::Div(x, hn::Sqrt(omx2s));
+      const V to_hi = hn::Div(hn::Mul(y, hn::Sub(hn::Mul(two, x_hi), y)),
+                              hn::Mul(hn::Mul(omx2_hi, omx2s), hn::Add(rho_plus, rho_n)));
+      const V from_lo =
+          ray.lo_edge_ ? hn::Div(hn::Mul(t, hn::MulAdd(two, x_lo, t)),
+                                 hn::Mul(hn::Mul(omx2_lo, omx2s), hn::Add(rho_n, rho_minus)))
+                       : hn::Sub(rho_n, rho_minus);
+      const V p = hn::MulAdd(rho_n, ex, s0x), q = hn::MulAdd(rho_n, ey, s0y);
+      const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, one));
+      const V lin = hn::MulAdd(q, cy, hn::MulAdd(p, cx, one));
+      const V wiz = hn::Div(hn::Mul(hn::Mul(wz_ee, from_lo), to_hi), n2);
+      const auto ok = hn::And(ok1, hn::And(hn::Gt(wiz, zero), hn::Gt(lin, zero)));
+      const V kk = hn::Div(hn::Mul(two_wz, lin), n2);
+      const V wix = hn::Neg(hn::MulAdd(kk, p, wx)), wiy = hn::Neg(hn::MulAdd(kk, q, wy));
+      // Lambda(wi): a = A wi, n_over_h as in EllipsoidNdf::Lambda.
+      const V ax = hn::MulAdd(am[0][2], wiz, hn::MulAdd(am[0][1], wiy, hn::Mul(am[0][0], wix)));
+      const V ay = hn::MulAdd(am[1][2], wiz, hn::MulAdd(am[1][1], wiy, hn::Mul(am[1][0], wix)));
+      const V az = hn::MulAdd(am[2][2], wiz, hn::MulAdd(am[2][1], wiy, hn::Mul(am[2][0], wix)));
+      const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
+      const V ah = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
+      const V px = hn::NegMulAdd(hx, ah, ax), py = hn::NegMulAdd(hy, ah, ay), pz = hn::NegMulAdd(hz, ah, az);
+      const V perp2 = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
+      const V num = hn::NegMulAdd(hn::Mul(omr2, ah), ah, hn::Mul(rho2, perp2));
+      const auto pos = hn::Gt(ah, zero);
+      const V den = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len, ah), one);
+      const V n_over_h = hn::IfThenElse(pos, hn::Div(num, den), hn::NegMulAdd(one, ah, hn::Mul(rho_v, a_len)));
+      const V wiz_s = hn::IfThenElse(ok, wiz, one);
+      const V lambda_i = hn::IfThenElseZero(hn::Gt(n_over_h, zero),
+                                            hn::Div(hn::Mul(n_over_h, lscale), wiz_s));
+      const V g2 = f.separable ? hn::Div(g1o, hn::Add(one, lambda_i))
+                               : hn::Div(one, hn::Add(lambda_o1, lambda_i));
+      const V v = hn::IfThenElseZero(ok, hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)));
+      ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
+      gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
+    }
+    *k = hn::GetLane(hn::SumOfLanes(d, ks));
+    *g = hn::GetLane(hn::SumOfLanes(d, gsum));
+  }
+};
+
+AzimuthalResult EllipsoidAlbedoTexel(double alpha_x, double alpha_y, double theta_x,
+                                     double theta_y, double theta_z, double mu, double phi,
+                                     Masking masking, double tol, int max_pieces) {
+  return EllipsoidAlbedoWith(alpha_x, alpha_y, theta_x, theta_y, theta_z, mu, phi, masking, tol,
+                             max_pieces, SimdEllipsoidNodes{});
+}
+
 AzimuthalResult AnisoAlbedoTexel(double alpha_x, double alpha_y, double mu, double phi,
                                  Masking masking, double tol, int max_pieces) {
   return AnisoGgxAlbedoWith(alpha_x, alpha_y, mu, phi, masking, tol, max_pieces,
@@ -258,6 +347,14 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace brdfbake {
+
+HWY_EXPORT(EllipsoidAlbedoTexel);
+AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x,
+                                    double theta_y, double theta_z, double mu, double phi,
+                                    Masking masking, double tol, int max_pieces) {
+  return HWY_DYNAMIC_DISPATCH(EllipsoidAlbedoTexel)(alpha_x, alpha_y, theta_x, theta_y, theta_z,
+                                                    mu, phi, masking, tol, max_pieces);
+}
 
 HWY_EXPORT(AnisoAlbedoTexel);
 AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double phi,

@@ -23,6 +23,11 @@ namespace brdfbake {
 AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double phi,
                                    Masking masking, double tol, int max_pieces);
 
+// EllipsoidAlbedo (ellipsoid_albedo.h) with each ray piece's nodes in lanes.
+AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x,
+                                    double theta_y, double theta_z, double mu, double phi,
+                                    Masking masking, double tol, int max_pieces);
+
 // GgxAzimuthalDfg with the azimuthal remainder's nodes in lanes.
 AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces);
