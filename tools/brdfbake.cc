@@ -287,7 +287,8 @@ struct BakeOptions {
     for_report = report;
     app->add_option("--table,-t", table, "E | E_avg | dfg | sel_norm (with --model sel)");
     app->add_option("--model,-m", model,
-                    "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy)")
+                    "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
+                    "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm)")
         ->capture_default_str();
     app->add_option("--gamma", gamma,
                     "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
@@ -296,14 +297,16 @@ struct BakeOptions {
     app->add_option("--size", size,
                     "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
                         (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
-                        "gamma slices over (1.5, inf]");
+                        "gamma slices over (1.5, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
+                        "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y");
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
                     "(the gamma axis: gamma=tail, its only warp)")
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
-                    "gamma=min:max within (1.5, inf], default 1.501:inf");
+                    "gamma=min:max within (1.5, inf], default 1.501:inf; phi_o in radians within "
+                    "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid)");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
@@ -946,7 +949,7 @@ int main(int argc, char** argv) {
   eval_opts.Add(eval);
 
   CLI::App* bake = app.add_subcommand(
-      "bake", "Bake a lookup table (E, E_avg or dfg) to a self-describing file, an engine's tables "
+      "bake", "Bake a lookup table (E, E_avg, dfg or sel_norm) to a self-describing file, an engine's tables "
               "(--preset), or exactly the tables a scene needs (bake SCENE -o DIR).");
   bake->allow_extras();
   BakeOptions bake_opts;
