@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "azimuthal.h"
+#include "brdfbake/vec3.h"
 
 namespace brdfbake {
 
@@ -79,7 +80,7 @@ void BisectWorst(std::vector<Piece>* pieces, const Make& make) {
 // max_pieces.
 template <class Ray>
 AzimuthalResult PsiRule(const Ray& ray, double psi0, double delta, double tol, int max_pieces) {
-  constexpr double kTwoPi = 6.283185307179586;
+  constexpr double kTwoPi = 2 * kPi<double>;
   auto piece = [&](double a, double b) { return KronrodPiece(a, b, 1 / kTwoPi, ray); };
   std::vector<double> cuts = {0.25 * kTwoPi};  // offsets from a feature ray
   for (double d = kTwoPi / 16; d > 0.25 * delta && cuts.size() < 40; d *= 0.25) cuts.push_back(d);

@@ -18,10 +18,10 @@
 #include "aniso_ggx.h"
 #include "adaptive_rule.h"
 #include "azimuthal.h"
+#include "brdfbake/ggx.h"
 
 namespace brdfbake {
 
-inline constexpr double kAnisoTwoPi = 6.283185307179586;
 // Each ray's pieces shrink by this factor towards the disk's edge.
 inline constexpr double kAnisoRayGrading = 0.25;
 
@@ -31,12 +31,6 @@ struct AnisoFrame : SlopeView {
   bool separable;
   // Eval's G2 = 2 Z / (z_weight Z + sqrt(Z^2 + P)) g_scale.
   double z_weight, g_scale;
-  // GGX Lambda = (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))), 1/a^2 = |alpha o w_xy|^2 / w.z^2.
-  double Lambda(double x, double y, double z) const {
-    const double px = ax * x, py = ay * y;
-    const double inv_a2 = (px * px + py * py) / (z * z);
-    return inv_a2 / (2 * (1 + std::sqrt(1 + inv_a2)));
-  }
 };
 
 // One ray m = rho e from the origin of the slope plane to the disk's edge.
@@ -175,7 +169,7 @@ AzimuthalResult AnisoGgxAlbedoWith(double alpha_x, double alpha_y, double mu, do
   f.ax = std::clamp(alpha_x, 1e-4, 1e4);
   f.ay = std::clamp(alpha_y, 1e-4, 1e4);
   f.separable = masking == Masking::kSeparable;
-  f.lambda_o = f.Lambda(f.wx, f.wy, f.wz);
+  f.lambda_o = GgxNdf<double>(f.ax, f.ay).Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.z_weight = f.separable ? 1 : 1 + 2 * f.lambda_o;
   f.g_scale = f.separable ? 1 / (1 + f.lambda_o) : 1;
   // A ray's part next to the edge is left out where its bound is below
@@ -191,7 +185,7 @@ AzimuthalResult AnisoGgxAlbedoWith(double alpha_x, double alpha_y, double mu, do
   const double psi0 = std::atan2(f.cx * f.ax, -f.cy * f.ay);
   const double e0x = f.ax * std::cos(psi0), e0y = f.ay * std::sin(psi0);
   const double dce = std::abs(-f.cx * f.ax * std::sin(psi0) + f.cy * f.ay * std::cos(psi0));
-  const double delta = dce > 0 ? std::sqrt(e0x * e0x + e0y * e0y) / dce : 2 * kAnisoTwoPi;
+  const double delta = dce > 0 ? std::sqrt(e0x * e0x + e0y * e0y) / dce : 4 * kPi<double>;
   auto ray = [&](double psi, double* err) {
     double v;
     AnisoRay(f, psi).Integrate(f, skip_eps, ray_tol, nodes, &v, err);

@@ -36,17 +36,8 @@ struct EllipsoidFrame : SlopeView {
   double dx = 0, dy = 0;           // d = s0 - c
   double d2_minus_r2 = -1;         // |d|^2 - 1 / wo.z^2
   double ray_tol = 0;
-  // G1's clamp (ellipsoid.h): Lambda(w) = 0 where
-  // kink(w) = rho_h ||A w|| - A w . h_dir <= 0.
-  Mat3<double> a;
-  Vec3<double> h_dir;
-  double rho_h = 1;
-  // Lambda = n_over_h lambda_scale / w.z (ellipsoid.h), for the lanes.
-  double lambda_scale = 0;
-  double Kink(const Vec3<double>& w) const {
-    const Vec3<double> aw = a * w;
-    return rho_h * Length(aw) - Dot(aw, h_dir);
-  }
+  // G1's clamp (ellipsoid.h): Lambda(w) = 0 where this is <= 0.
+  double Kink(const Vec3<double>& w) const { return ndf.ClampMargin(w); }
 
   EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi) : SlopeView(mu, phi), ndf(n) {}
   double G2(double lambda_i) const {
@@ -216,31 +207,14 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
                                     double theta_y, double theta_z, double mu, double phi,
                                     Masking masking, double tol, int max_pieces,
                                     const Nodes& nodes) {
-  constexpr double kTwoPi = 6.283185307179586;
+  constexpr double kTwoPi = 2 * kPi<double>;
   const double ax = std::clamp(alpha_x, 1e-4, 1e4), ay = std::clamp(alpha_y, 1e-4, 1e4);
   EllipsoidFrame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z), mu, phi);
   f.separable = masking == Masking::kSeparable;
   f.lambda_o = f.ndf.Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.ray_tol = 0.2 * tol;
-  {
-    // G1's clamp as in ellipsoid.h: h = 2 ||An||^2 A^-T n - An, rho_h =
-    // min(1, ||An|| / ||h||).
-    f.a = f.ndf.shape_matrix();
-    const Vec3<double> an(f.a.m[0][2], f.a.m[1][2], f.a.m[2][2]);
-    const double an2 = Dot(an, an);
-    const Mat3<double> r = Mat3<double>::RotX(theta_x) * Mat3<double>::RotY(theta_y) *
-                           Mat3<double>::RotZ(theta_z);
-    const Vec3<double> bn = Mat3<double>::Diagonal(1 / ax, 1 / ay, 1) * Vec3<double>(r.m[0][2], r.m[1][2], r.m[2][2]);
-    const Vec3<double> h = bn * (2 * an2) - an;
-    const double h_len = Length(h);
-    f.h_dir = h / h_len;
-    f.rho_h = std::min(1.0, std::sqrt(an2) / h_len);
-    f.lambda_scale = h_len / (2 * an2);
-  }
-  // B = A^-T = S^-1 R (A = S R, R orthogonal); its columns b1, b2, b3.
-  const Mat3<double> b = Mat3<double>::Diagonal(1 / ax, 1 / ay, 1) *
-                         (Mat3<double>::RotX(theta_x) * Mat3<double>::RotY(theta_y) *
-                          Mat3<double>::RotZ(theta_z));
+  // B = A^-T (= S^-1 R); its columns b1, b2, b3.
+  const Mat3<double>& b = f.ndf.inverse_transposed();
   auto col = [&](int j) { return Vec3<double>(b.m[0][j], b.m[1][j], b.m[2][j]); };
   const Vec3<double> b1 = col(0), b2 = col(1), b3 = col(2);
   // Without cancellation for thin, tilted ellipsoids (B's columns up to

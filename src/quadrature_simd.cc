@@ -265,12 +265,13 @@ struct SimdEllipsoidNodes {
     const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx), wy = hn::Set(d, f.wy);
     V am[3][3];
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.a.m[i][j]);
+      for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.ndf.shape_matrix().m[i][j]);
     }
-    const V hx = hn::Set(d, f.h_dir.x), hy = hn::Set(d, f.h_dir.y), hz = hn::Set(d, f.h_dir.z);
-    const double rho = f.rho_h;
+    const Vec3<double>& h_dir = f.ndf.lambda_h_dir();
+    const V hx = hn::Set(d, h_dir.x), hy = hn::Set(d, h_dir.y), hz = hn::Set(d, h_dir.z);
+    const double rho = f.ndf.lambda_rho();
     const V rho_v = hn::Set(d, rho), rho2 = hn::Set(d, rho * rho);
-    const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.lambda_scale);
+    const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
     const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
     V ks = zero, gsum = zero;
     for (size_t i = 0; i < 16; i += N) {

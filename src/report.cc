@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "aniso_ggx.h"
 #include "brdfbake/output_file.h"
 
 namespace brdfbake {
@@ -132,7 +133,7 @@ std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const ReportLog& sa
       BakeSpec g;
       g.masking = spec.masking;
       g.tolerance = spec.tolerance;
-      const double at = r * r + (1 - r * r) * s * s, ab = r * r;
+      const double at = AnisotropyAlphaT(r, s), ab = r * r;
       for (int c = 0; c < 3; ++c) {
         const double alpha = CollapsedAlpha(collapses[c], at, ab, phi);
         iso[size_t(k) * 3 + c] = std::clamp(IntegrateTexel(g, std::sqrt(alpha), mu).e, 0.0, 1.0);

@@ -12,9 +12,9 @@
 namespace brdfbake {
 namespace {
 
-constexpr double kHalfPiSel = 1.5707963267948966;
-
 using Piece = GkPiece;
+
+constexpr double kHalfPi = kPi<double> / 2;
 
 // Gauss-Kronrod 15 on pieces of [lo, hi] graded by 4 towards `toward`
 // (lo or hi) down to `finest`, then the worst bisected until the summed
@@ -68,9 +68,9 @@ SelIntegral SelLobeIntegral(double alpha_x, double alpha_y, double tol) {
       return 1 / std::sqrt(s2 * (cp * cp * ikx2 + sp * sp * iky2) + c * c);
     };
     double v, e;
-    Adaptive(g, 0.0, kHalfPiSel, peak_at_zero, 0.25 * peak_width, 0.1 * tol, &v, &e);
-    *err = e / kHalfPiSel;
-    return v / kHalfPiSel;
+    Adaptive(g, 0.0, kHalfPi, peak_at_zero, 0.25 * peak_width, 0.1 * tol, &v, &e);
+    *err = e / kHalfPi;
+    return v / kHalfPi;
   };
   // The x rule evaluates over_phi at its nodes; the inner errors enter with
   // the Kronrod weights.
@@ -100,7 +100,7 @@ SelIntegral SelLobeIntegral(double alpha_x, double alpha_y, double tol) {
   SelIntegral out;
   for (const Piece& p : pieces) out.ratio += p.value;
   out.ratio_error = rule_err + inner_err + 4e-16 * out.ratio;
-  const double scale = 4 * 3.141592653589793 * ax * ay;
+  const double scale = 4 * kPi<double> * ax * ay;
   out.n = scale * out.ratio;
   out.n_error = scale * out.ratio_error;
   return out;

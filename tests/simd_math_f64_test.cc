@@ -146,6 +146,7 @@ inline const std::vector<Ref>& ExpRefs() {
 #include <hwy/tests/hwy_gtest.h>
 
 #include "simd/math_f64-inl.h"
+#include "simd_map_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -163,22 +164,10 @@ constexpr double kLambdaRel = 1.5e-15;     // BeckmannLambdaF64
 constexpr double kLambdaBound = 2e-15;
 constexpr double kSubnormalUlp = 4.9406564584124654e-324;
 
-// Applies a vector function to every element of x on this target.
-template <class Fn>
-std::vector<double> Map(const std::vector<double>& x, const Fn& fn) {
-  const hn::ScalableTag<double> d;
-  const size_t N = hn::Lanes(d);
-  std::vector<double> in(x), out((x.size() + N - 1) / N * N);
-  in.resize(out.size(), 1.0);
-  for (size_t i = 0; i < in.size(); i += N) hn::StoreU(fn(d, hn::LoadU(d, &in[i])), d, &out[i]);
-  out.resize(x.size());
-  return out;
-}
-
 void CheckExpNegSquareF64() {
   const std::vector<double>& xs = simd_math_f64_test::ExpArgs();
   const std::vector<Ref>& refs = simd_math_f64_test::ExpRefs();
-  const auto got = Map(xs, [](auto d, auto v) { return ExpNegSquareF64(d, v); });
+  const auto got = MapF64(xs, [](auto d, auto v) { return ExpNegSquareF64(d, v); });
   double worst = 0, worst_x = 0, worst_sub = 0;
   for (size_t i = 0; i < xs.size(); ++i) {
     const double x = xs[i];
@@ -204,7 +193,7 @@ void CheckExpNegSquareF64() {
 void CheckBeckmannLambdaF64() {
   const std::vector<double>& as = simd_math_f64_test::LambdaArgs();
   const std::vector<Ref>& refs = simd_math_f64_test::LambdaRefs();
-  const auto got = Map(as, [](auto d, auto v) { return BeckmannLambdaF64(d, v); });
+  const auto got = MapF64(as, [](auto d, auto v) { return BeckmannLambdaF64(d, v); });
   const BeckmannNdf<double> ndf(1.0);  // the scalar twin, StdLambda
   double worst_bound = 0, worst_rel = 0, worst_a = 0, worst_sub = 0;
   double worst_twin = 0, worst_scalar = 0, worst_scalar_rel = 0;

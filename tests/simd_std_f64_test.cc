@@ -184,6 +184,7 @@ inline const std::vector<double>& SweepArgs() {
 #include <hwy/tests/hwy_gtest.h>
 
 #include "simd/std_f64-inl.h"
+#include "simd_map_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -210,15 +211,7 @@ constexpr double kTwinBound = kBound + 2e-15;
 
 // StudentTLambdaF64 for each a on this target.
 std::vector<double> Map(const StudentTLambdaF64Consts& c, const std::vector<double>& x) {
-  const hn::ScalableTag<double> d;
-  const size_t N = hn::Lanes(d);
-  std::vector<double> in(x), out((x.size() + N - 1) / N * N);
-  in.resize(out.size(), 1.0);
-  for (size_t i = 0; i < in.size(); i += N) {
-    hn::StoreU(StudentTLambdaF64(d, c, hn::LoadU(d, &in[i])), d, &out[i]);
-  }
-  out.resize(x.size());
-  return out;
+  return MapF64(x, [&](auto d, auto v) { return StudentTLambdaF64(d, c, v); });
 }
 
 // The same, one a per vector (all lanes equal).

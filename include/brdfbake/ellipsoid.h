@@ -77,6 +77,20 @@ class EllipsoidNdf {
   T alpha_x() const { return ax_; }
   T alpha_y() const { return ay_; }
   const Mat3<T>& shape_matrix() const { return a_; }
+  const Mat3<T>& inverse_transposed() const { return a_inv_t_; }  // A^-T
+
+  // The pieces of Lambda below, for evaluators that take Lambda apart (the
+  // baker's double lanes): Lambda(u) = N(u) / ||h|| scale / u.z with
+  // N / ||h|| as computed there, h_dir = h / ||h||, rho = ||An|| / ||h||.
+  const Vec3<T>& lambda_h_dir() const { return h_dir_; }
+  T lambda_rho() const { return rho_; }
+  T lambda_scale() const { return lambda_scale_; }
+  // rho ||Au|| - Au . h_dir: Lambda(u) is 0 (G1's clamp is active) exactly
+  // where this is <= 0; smooth in u, so the clamp's edge is its root.
+  T ClampMargin(const Vec3<T>& u) const {
+    const Vec3<T> a = a_ * u;
+    return rho_ * Length(a) - Dot(a, h_dir_);
+  }
 
   // Seed eq. 1, per steradian; zero for m.z <= 0.
   T D(const Vec3<T>& m) const {
