@@ -119,6 +119,113 @@ AzimuthalResult PsiRule(const Ray& ray, double psi0, double delta, double tol, i
   return out;
 }
 
+// One interval [a, b] of psi for SegmentRule. An end is `singular` where
+// the ray there is tangent to a curve on which the ray integrand ends or
+// has a kink (the horizon, G1's clamp edge): the ray integral then behaves
+// like |psi - end|^(3/2), which the map psi = a + (b - a) m(t), m(t) ~ t^2
+// at that end, turns into a smooth function of t. `feature` (> 0) is the
+// width of a narrow smooth feature next to an end, graded towards as in
+// PsiRule.
+struct PsiSegment {
+  double a, b;
+  bool singular_a = false, singular_b = false;
+  double feature_a = 0, feature_b = 0;
+};
+
+// The sum over `segments` of the integral of ray(psi, &err) / (2 pi) over
+// each: Gauss-Kronrod 15 in t in [0, 1] with psi = a + (b - a) m(t), where
+// m(t) = t (no singular end), t^2 (only a), 1 - (1 - t)^2 (only b) or
+// t^2 (3 - 2 t) (both); each segment starts with one piece per quarter
+// turn (at least one) plus geometric grading (ratio 4) towards a featured
+// end down to a quarter of the feature; then the worst piece of all is
+// bisected with PsiRule's stopping rule.
+template <class Ray>
+AzimuthalResult SegmentRule(const Ray& ray, const std::vector<PsiSegment>& segments, double tol,
+                            int max_pieces) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  struct Piece : GkPiece {
+    int segment;
+  };
+  auto make = [&](int s, double t0, double t1) {
+    const PsiSegment& g = segments[s];
+    const double w = g.b - g.a;
+    const int kind = (g.singular_a ? 1 : 0) + (g.singular_b ? 2 : 0);
+    auto f = [&](double t, double* err) {
+      double m, dm;
+      switch (kind) {
+        case 0:
+          m = t, dm = 1;
+          break;
+        case 1:
+          m = t * t, dm = 2 * t;
+          break;
+        case 2:
+          m = 1 - (1 - t) * (1 - t), dm = 2 * (1 - t);
+          break;
+        default:
+          m = t * t * (3 - 2 * t), dm = 6 * t * (1 - t);
+          break;
+      }
+      const double jac = w * dm;
+      const double v = ray(g.a + w * m, err) * jac;
+      *err *= jac;
+      return v;
+    };
+    Piece p;
+    static_cast<GkPiece&>(p) = KronrodPiece(t0, t1, 1 / kTwoPi, f);
+    p.segment = s;
+    return p;
+  };
+  std::vector<Piece> pieces;
+  for (int s = 0; s < static_cast<int>(segments.size()); ++s) {
+    const PsiSegment& g = segments[s];
+    const double w = g.b - g.a;
+    if (!(w > 0)) continue;
+    // t at which psi is `d` away from end a (b) for the map near that end.
+    auto t_near = [&](double d, bool singular) { return singular ? std::sqrt(d / w) : d / w; };
+    std::vector<double> cuts;
+    const int n = std::clamp(static_cast<int>(std::ceil(w / (kTwoPi / 4))), 1, 8);
+    for (int i = 0; i <= n; ++i) cuts.push_back(static_cast<double>(i) / n);
+    if (g.feature_a > 0) {
+      for (double d = w / 4; d > 0.25 * g.feature_a && cuts.size() < 40; d *= 0.25) {
+        cuts.push_back(t_near(d, g.singular_a));
+      }
+    }
+    if (g.feature_b > 0) {
+      for (double d = w / 4; d > 0.25 * g.feature_b && cuts.size() < 80; d *= 0.25) {
+        cuts.push_back(1 - t_near(d, g.singular_b));
+      }
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+    for (size_t i = 0; i + 1 < cuts.size(); ++i) pieces.push_back(make(s, cuts[i], cuts[i + 1]));
+  }
+  auto total_error = [&] {
+    double e = 0;
+    for (const Piece& p : pieces) e += p.err + p.prop;
+    return e;
+  };
+  double err = total_error();
+  while (err > tol && !pieces.empty() &&
+         static_cast<int>(pieces.size()) < std::max(4, max_pieces)) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    if (pieces[worst].err <= 0.05 * tol / pieces.size()) break;
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    pieces[worst] = make(p.segment, p.a, m);
+    pieces.push_back(make(p.segment, m, p.b));
+    err = total_error();
+  }
+  AzimuthalResult out;
+  for (const Piece& p : pieces) out.value += p.value;
+  out.error = err + 4e-16 * out.value;
+  out.pieces = static_cast<int>(pieces.size());
+  return out;
+}
+
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_SRC_ADAPTIVE_RULE_H_

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // The slope-plane rule of ellipsoid_albedo.h as a template over its node
-// evaluator: `Nodes` integrates one piece of a ray, given its centre c and
-// half width h in the signed offset (>= 0: y = x_hi - x; <= 0: -(x - x_lo))
-// and the ray's length len in x = sqrt(u), returning the Kronrod 15 and
-// Gauss 7 sums (weights on [-1, 1], without h) of EllipsoidRay::Eval.
+// evaluator: `Nodes` integrates n pieces [a_j, b_j] of a ray in the signed
+// offset (>= 0: y = x_hi - x; <= 0: -(x - x_lo)), given the ray's length
+// len in x = sqrt(u), returning each one's Kronrod 15 and Gauss 7 sums
+// (weights on [-1, 1], without the half width) of EllipsoidRay::Eval.
 // ScalarEllipsoidNodes is the double reference; quadrature_simd.cc
 // evaluates the 15 nodes in lanes.
 
@@ -20,26 +20,40 @@
 #include "brdfbake/ellipsoid.h"
 #include "ellipsoid_albedo.h"
 #include "integrate.h"
+#include "poly_roots.h"
 
 namespace brdfbake {
 
 // Initial grading of a ray's halves towards horizon ends (ratio 4); the
 // adaptive bisection refines from there.
 inline constexpr int kEllipsoidRayLevels = 3;
+// The most pieces a ray is cut into, and the most grading levels (ratio 4)
+// towards a horizon end, where G2's layer is narrow.
+inline constexpr int kMaxRayPieces = 96;
+inline constexpr int kMaxRayLevels = 20;
+// Where along the ray's half (as a fraction) the layer's width is probed.
+inline constexpr double kLayerProbe = 1e-3;
+// Points on G1's clamp edge probed for the rays tangent to it.
+inline constexpr int kClampProbes = 64;
 
 struct EllipsoidFrame : SlopeView {
   EllipsoidNdf<double> ndf;
   double lambda_o = 0;
   bool separable = false;
-  double s0x = 0, s0y = 0;         // the slope of the density's peak
+  bool clamped = false;              // whether G1's clamp is active anywhere (rho_c < 1)
+  double s0x = 0, s0y = 0;           // the slope of the density's peak
   double l11 = 1, l12 = 0, l22 = 1;  // L, upper triangular: s = s0 + L v
-  double dx = 0, dy = 0;           // d = s0 - c
-  double d2_minus_r2 = -1;         // |d|^2 - 1 / wo.z^2
+  double dx = 0, dy = 0;             // d = s0 - c
+  double d2_minus_r2 = -1;           // |d|^2 - 1 / wo.z^2
   double ray_tol = 0;
+  // The rays that can cross the clamp's edge: psi - kink_psi0 in
+  // [0, kink_psi_range] (mod 2 pi); all of them by default.
+  double kink_psi0 = 0, kink_psi_range = 2 * kPi<double>;
   // G1's clamp (ellipsoid.h): Lambda(w) = 0 where this is <= 0.
   double Kink(const Vec3<double>& w) const { return ndf.ClampMargin(w); }
 
-  EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi) : SlopeView(mu, phi), ndf(n) {}
+  EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi)
+      : SlopeView(mu, phi), ndf(n) {}
   double G2(double lambda_i) const {
     return separable ? 1 / ((1 + lambda_i) * (1 + lambda_o)) : 1 / (1 + lambda_i + lambda_o);
   }
@@ -52,7 +66,7 @@ struct EllipsoidRayPiece {
 // The part of one ray s = s0 + rho e inside the horizon disk.
 class EllipsoidRay {
  public:
-  EllipsoidRay(const EllipsoidFrame& f, double psi) : f_(f) {
+  EllipsoidRay(const EllipsoidFrame& f, double psi) : f_(f), psi_(psi) {
     const double cs = std::cos(psi), sn = std::sin(psi);
     ex_ = f.l11 * cs + f.l12 * sn;
     ey_ = f.l22 * sn;
@@ -82,86 +96,162 @@ class EllipsoidRay {
     *value = *error = 0;
     if (!valid_) return;
     const double len = x_hi_ - x_lo_, mid = 0.5 * len;
-    // EllipsoidRayPieces in y = x_hi - x (the upper half, graded towards y = 0) and in
-    // t = x - x_lo (the lower half, graded towards t = 0 where that end is
-    // a horizon crossing).
-    std::vector<EllipsoidRayPiece> pieces;
-    auto make = [&](double a, double b) {
-      const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-      double k, g;
-      nodes(*this, c, h, len, &k, &g);
-      return EllipsoidRayPiece{a, b, k * h, std::abs(k - g) * h};
+    // Pieces in signed offsets: y = x_hi - x >= 0 on the upper half (graded
+    // towards y = 0) and -t = -(x - x_lo) <= 0 on the lower half (graded
+    // towards t = 0 where that end is a horizon crossing). Their ends are
+    // laid out first and all the pieces evaluated in one call, so that the
+    // node evaluator has independent work for its lanes.
+    double a[kMaxRayPieces], b[kMaxRayPieces];
+    int n = 0;
+    // G2 rises from 0 at a horizon end over a layer where Lambda(wi) ~ C /
+    // wi.z, wi.z ~ K y, falls to 1 + Lambda(wo) (1 if separable): its width
+    // is y Lambda(wi(y)) / (1 + Lambda(wo)) for any small offset y, taken
+    // at y = kLayerProbe times the half. Thin lobes make it narrow; the
+    // grading goes down to it, or nodes would step over the rise.
+    const double scale = f_.separable ? 1.0 : 1 + f_.lambda_o;
+    auto layer = [&](double y, double t, double offset) {
+      Vec3<double> wi;
+      double lin;
+      if (!WiAt(y, t, &wi, &lin)) return 0.0;
+      return offset * f_.ndf.Lambda(wi) / scale;
     };
-    auto graded = [&](double top, bool toward_zero, int levels, bool from_lo) {
-      // Offsets [0, top] from one end; stored as signed positions: from the
-      // top end as y >= 0, from the bottom end as -(t) - 0 (negative).
-      double hi = top;
+    auto graded = [&](double top, bool toward_zero, bool from_lo) {
+      double width = 0;
       if (toward_zero) {
-        for (int k = 0; k < levels; ++k) {
-          const double lo = 0.25 * hi;
-          pieces.push_back(from_lo ? make(-hi, -lo) : make(lo, hi));
-          hi = lo;
-        }
+        const double o = kLayerProbe * top;
+        width = from_lo ? layer(len - o, o, o) : layer(o, len - o, o);
       }
-      pieces.push_back(from_lo ? make(-hi, 0.0) : make(0.0, hi));
+      double hi = top;
+      for (int k = 0; toward_zero && k < kMaxRayLevels && (k < kEllipsoidRayLevels || hi > width);
+           ++k) {
+        const double lo = 0.25 * hi;
+        a[n] = from_lo ? -hi : lo;
+        b[n++] = from_lo ? -lo : hi;
+        hi = lo;
+      }
+      a[n] = from_lo ? -hi : 0.0;
+      b[n++] = from_lo ? 0.0 : hi;
     };
-    graded(mid, true, kEllipsoidRayLevels, false);
-    graded(len - mid, lo_edge_, kEllipsoidRayLevels, true);
+    graded(mid, true, false);
+    graded(len - mid, lo_edge_, true);
     // Where G1(wi)'s clamp turns on or off along the ray, G2 has a kink:
-    // bracketed on 12 probes in x, solved, and the piece holding it split
-    // there.
-    {
-      constexpr int kProbes = 12;
-      auto kink_at = [&](double x) {
-        Vec3<double> wi;
-        double lin;
-        return WiAt(x_hi_ - x, x - x_lo_, &wi, &lin) ? f_.Kink(wi) : 0.0;
-      };
-      double x_prev = x_lo_ + 1e-9 * len, k_prev = kink_at(x_prev);
-      for (int i = 1; i <= kProbes; ++i) {
-        const double x = i == kProbes ? x_hi_ - 1e-9 * len : x_lo_ + len * i / kProbes;
-        const double k = kink_at(x);
-        if ((k > 0) != (k_prev > 0) && k != 0 && k_prev != 0) {
-          const double xc = SolveBracketed(kink_at, x_prev, x, k_prev, k, 1e-13 * len);
-          const double o = xc >= x_lo_ + (len - mid) ? x_hi_ - xc : -(xc - x_lo_);
-          for (EllipsoidRayPiece& p : pieces) {
-            if (p.a < o && o < p.b) {
-              const EllipsoidRayPiece q = p;
-              p = make(q.a, o);
-              pieces.push_back(make(o, q.b));
-              break;
-            }
-          }
+    // the piece holding it is split there.
+    double kinks[kMaxPolyDegree];
+    const int n_kinks = Kinks(kinks);
+    for (int i = 0; i < n_kinks; ++i) {
+      const double xc = kinks[i] / std::sqrt(1 + kinks[i] * kinks[i]);
+      if (!(xc > x_lo_ && xc < x_hi_)) continue;
+      const double o = xc >= x_lo_ + (len - mid) ? x_hi_ - xc : -(xc - x_lo_);
+      for (int j = 0; j < n; ++j) {
+        if (a[j] < o && o < b[j]) {
+          a[n] = o;
+          b[n++] = b[j];
+          b[j] = o;
+          break;
         }
-        x_prev = x;
-        k_prev = k;
       }
     }
+    EllipsoidRayPiece pieces[kMaxRayPieces];
+    auto evaluate = [&](int first, int count) {
+      double k[kMaxRayPieces], g[kMaxRayPieces];
+      nodes(*this, a + first, b + first, count, len, k, g);
+      for (int j = first; j < first + count; ++j) {
+        const double h = 0.5 * (b[j] - a[j]);
+        pieces[j] = EllipsoidRayPiece{a[j], b[j], k[j - first] * h,
+                                      std::abs(k[j - first] - g[j - first]) * h};
+      }
+    };
+    evaluate(0, n);
     auto sum_err = [&] {
       double e = 0;
-      for (const EllipsoidRayPiece& p : pieces) e += p.err;
+      for (int j = 0; j < n; ++j) e += pieces[j].err;
       return e;
     };
-    while (sum_err() > f_.ray_tol && pieces.size() < 96) BisectWorst(&pieces, make);
-    for (const EllipsoidRayPiece& p : pieces) *value += p.value;
+    while (sum_err() > f_.ray_tol && n + 1 < kMaxRayPieces) {
+      int worst = 0;
+      for (int j = 1; j < n; ++j) {
+        if (pieces[j].err > pieces[worst].err) worst = j;
+      }
+      // The worst piece's halves: its left in its slot, its right appended.
+      const double m = 0.5 * (pieces[worst].a + pieces[worst].b);
+      a[n] = m;
+      b[n] = pieces[worst].b;
+      b[worst] = m;
+      a[worst] = pieces[worst].a;
+      // Evaluate the two (not adjacent in the arrays) as one batch.
+      double pa[2] = {a[worst], a[n]}, pb[2] = {b[worst], b[n]}, k[2], g[2];
+      nodes(*this, pa, pb, 2, len, k, g);
+      for (int s = 0; s < 2; ++s) {
+        const int j = s == 0 ? worst : n;
+        const double h = 0.5 * (pb[s] - pa[s]);
+        pieces[j] = EllipsoidRayPiece{pa[s], pb[s], k[s] * h, std::abs(k[s] - g[s]) * h};
+      }
+      ++n;
+    }
+    for (int j = 0; j < n; ++j) *value += pieces[j].value;
     *error = sum_err();
   }
 
- // The node evaluators (ScalarEllipsoidNodes, quadrature_simd.cc) read these.
+  // The rho in (max(0, rho_-), rho_+), ascending, where G1(wi)'s clamp
+  // turns on or off; returns their count (at most 4). With n = (-p, -q, 1)
+  // and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic in rho, so
+  // a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h (ellipsoid.h,
+  // ClampMargin) is a root of the quartic
+  //   rho_c^2 |a - (a.h) h|^2 - (1 - rho_c^2) (a.h)^2
+  // with a.h > 0, found in t = rho / rho_+ by PolyRootsIn: all of them,
+  // however narrow the clamped stretch of the ray.
+  int Kinks(double* rho_out) const {
+    if (!valid_) return 0;
+    const EllipsoidFrame& f = f_;
+    constexpr double kTwoPi = 2 * kPi<double>;
+    const double from0 = psi_ - f.kink_psi0 - kTwoPi * std::floor((psi_ - f.kink_psi0) / kTwoPi);
+    if (from0 > f.kink_psi_range) return 0;
+    const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y, l1 = -(f.wx * ex_ + f.wy * ey_);
+    const Vec3<double> n0(-f.s0x, -f.s0y, 1), n1(-ex_, -ey_, 0), wo(f.wx, f.wy, f.wz);
+    const double m0 = 1 + f.s0x * f.s0x + f.s0y * f.s0y, m1 = 2 * (f.s0x * ex_ + f.s0y * ey_);
+    const double sc = rho_plus_;
+    const Vec3<double> w[3] = {n0 * (2 * l0) - wo * m0,
+                               (n1 * l0 + n0 * l1) * (2 * sc) - wo * (m1 * sc),
+                               (n1 * (2 * l1) - wo * ee_) * (sc * sc)};
+    const Vec3<double>& h = f.ndf.lambda_h_dir();
+    const double rc = f.ndf.lambda_rho();
+    const double rc2 = rc * rc, omr2 = (1 - rc) * (1 + rc);
+    double ah[3];
+    Vec3<double> ap[3];
+    for (int k = 0; k < 3; ++k) {
+      const Vec3<double> a = f.ndf.shape_matrix() * w[k];
+      ah[k] = Dot(a, h);
+      ap[k] = a - h * ah[k];
+    }
+    double c[5] = {0, 0, 0, 0, 0};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) c[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * ah[i] * ah[j];
+    }
+    double t[kMaxPolyDegree];
+    // A kink off by d in t moves the integral by O(d^2).
+    const int n = PolyRootsIn(c, 4, std::max(0.0, rho_minus_) / sc, 1.0, 1e-12, t);
+    int m = 0;
+    for (int i = 0; i < n; ++i) {
+      if (ah[0] + t[i] * (ah[1] + t[i] * ah[2]) > 0) rho_out[m++] = t[i] * sc;
+    }
+    return m;
+  }
+
+  // The node evaluators (ScalarEllipsoidNodes, quadrature_simd.cc) read these.
   // wi (unnormalized, its z without cancellation) and 1 + s.c at x = x_hi -
   // y = x_lo + t; false where wi is not above the horizon.
   bool WiAt(double y, double t, Vec3<double>* wi, double* lin_out) const {
     const double x = x_hi_ - y;
     if (!(x > 0)) return false;
     // 1 - x^2 from the nearer end.
-    const double omx2 =
-        y <= t ? omx2_hi_ + y * (2 * x_hi_ - y) : omx2_lo_ - t * (2 * x_lo_ + t);
+    const double omx2 = y <= t ? omx2_hi_ + y * (2 * x_hi_ - y) : omx2_lo_ - t * (2 * x_lo_ + t);
     if (!(omx2 > 0)) return false;
     const double rho = x / std::sqrt(omx2);
-    // rho_+ - rho and rho - rho_- from x^2 differences (rho^2 = x^2 / (1 - x^2)).
+    // rho_+ - rho and rho - rho_- from x^2 differences (rho^2 = x^2 / (1 -
+    // x^2)).
     const double to_hi = y * (2 * x_hi_ - y) / (omx2_hi_ * omx2 * (rho_plus_ + rho));
-    const double from_lo = lo_edge_ ? t * (2 * x_lo_ + t) / (omx2_lo_ * omx2 * (rho + rho_minus_))
-                                    : rho - rho_minus_;
+    const double from_lo =
+        lo_edge_ ? t * (2 * x_lo_ + t) / (omx2_lo_ * omx2 * (rho + rho_minus_)) : rho - rho_minus_;
     const double p = f_.s0x + rho * ex_, q = f_.s0y + rho * ey_;
     const double n2 = 1 + p * p + q * q;
     const double lin = 1 + p * f_.cx + q * f_.cy;
@@ -181,36 +271,125 @@ class EllipsoidRay {
   }
 
   const EllipsoidFrame& f_;
+  double psi_;
   double ex_ = 0, ey_ = 0, ee_ = 0;
   double rho_minus_ = 0, rho_plus_ = 0, x_lo_ = 0, x_hi_ = 0, omx2_lo_ = 1, omx2_hi_ = 1;
   bool lo_edge_ = false, valid_ = false;
 };
 
 struct ScalarEllipsoidNodes {
-  void operator()(const EllipsoidRay& ray, double c, double h, double len, double* k,
-                  double* g) const {
+  void operator()(const EllipsoidRay& ray, const double* a, const double* b, int n, double len,
+                  double* k, double* g) const {
     const KronrodRule& r = Kronrod15();
-    *k = *g = 0;
-    for (int i = 0; i < 15; ++i) {
-      const double o = c + h * r.x[i];
-      const double y = o >= 0 ? o : len + o;  // x_hi - x
-      const double t = o >= 0 ? len - o : -o;  // x - x_lo
-      const double v = ray.Eval(y, t);
-      *k += r.wk[i] * v;
-      *g += r.wg[i] * v;
+    for (int j = 0; j < n; ++j) {
+      const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
+      k[j] = g[j] = 0;
+      for (int i = 0; i < 15; ++i) {
+        const double o = c + h * r.x[i];
+        const double y = o >= 0 ? o : len + o;   // x_hi - x
+        const double t = o >= 0 ? len - o : -o;  // x - x_lo
+        const double v = ray.Eval(y, t);
+        k[j] += r.wk[i] * v;
+        g[j] += r.wg[i] * v;
+      }
     }
   }
 };
 
+// The psi of the rays from s0 tangent to G1's clamp edge in the slope
+// plane. The clamp is active on the cone of wi with a.h >= rho_c ||a||,
+// a = A wi (ellipsoid.h), which lies above the horizon; its edge is
+// a(theta) = rho_c h + sqrt(1 - rho_c^2) (cos theta t1 + sin theta t2)
+// (t1, t2 orthonormal to h), wi(theta) = A^-1 a(theta), and in slopes the
+// closed curve s(theta) of the half vector wi + wo. A ray from s0 is
+// tangent to it where the ray's angle psi(theta) (in the frame of L) is
+// extremal: bracketed on kClampProbes points of theta and refined by
+// golden-section search (psi is then exact to second order).
+inline std::vector<double> ClampTangents(EllipsoidFrame* frame) {
+  const EllipsoidFrame& f = *frame;
+  constexpr double kTwoPi = 2 * kPi<double>;
+  const Vec3<double>& h = f.ndf.lambda_h_dir();
+  const double rc = f.ndf.lambda_rho(), rs = std::sqrt((1 - rc) * (1 + rc));
+  const Vec3<double> t1 = Normalize(std::abs(h.x) < 0.9 ? Cross(h, Vec3<double>(1, 0, 0))
+                                                        : Cross(h, Vec3<double>(0, 1, 0)));
+  const Vec3<double> t2 = Cross(h, t1);
+  const Mat3<double> a_inv = f.ndf.inverse_transposed().Transposed();
+  auto psi_at = [&](double theta) {
+    const Vec3<double> a = h * rc + (t1 * std::cos(theta) + t2 * std::sin(theta)) * rs;
+    const Vec3<double> wi = Normalize(a_inv * a);
+    const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
+    const double sx = -m.x / m.z, sy = -m.y / m.z;
+    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    return std::atan2(vy, vx);
+  };
+  // psi(theta) unwrapped relative to a reference angle.
+  auto near = [&](double psi, double ref) { return ref + std::remainder(psi - ref, kTwoPi); };
+  double psi[kClampProbes];
+  for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_at(kTwoPi * k / kClampProbes);
+  std::vector<double> out;
+  std::vector<int> probe;  // the probe each tangent was found next to
+  for (int k = 0; k < kClampProbes; ++k) {
+    const int km = (k + kClampProbes - 1) % kClampProbes, kp = (k + 1) % kClampProbes;
+    const double p0 = near(psi[km], psi[k]), p2 = near(psi[kp], psi[k]);
+    const double sign = psi[k] > p0 && psi[k] >= p2 ? 1 : psi[k] < p0 && psi[k] <= p2 ? -1 : 0;
+    if (sign == 0) continue;
+    // Golden-section search for the extremum of sign * psi in
+    // (theta_k-1, theta_k+1).
+    constexpr double kGolden = 0.6180339887498949;
+    const double ref = psi[k];
+    auto g = [&](double theta) { return sign * near(psi_at(theta), ref); };
+    double a = kTwoPi * (k - 1) / kClampProbes, b = kTwoPi * (k + 1) / kClampProbes;
+    double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
+    double gc = g(c), gd = g(d);
+    for (int it = 0; it < 40; ++it) {
+      if (gc > gd) {
+        b = d, d = c, gd = gc;
+        c = b - kGolden * (b - a);
+        gc = g(c);
+      } else {
+        a = c, c = d, gc = gd;
+        d = a + kGolden * (b - a);
+        gd = g(d);
+      }
+    }
+    out.push_back(sign * std::max(gc, gd));
+    probe.push_back(k);
+  }
+  // Where psi(theta) does not wind around s0 (s0 outside the clamped
+  // region), only the rays between its extremes meet the edge: the
+  // unwrapped range of psi, widened by 1e-9 against rounding.
+  double unwrapped[kClampProbes + 1];  // psi[k] - psi[0], continued
+  unwrapped[0] = 0;
+  for (int k = 0; k < kClampProbes; ++k) {
+    unwrapped[k + 1] =
+        unwrapped[k] + std::remainder(psi[(k + 1) % kClampProbes] - psi[k], kTwoPi);
+  }
+  if (std::abs(unwrapped[kClampProbes]) < kPi<double>) {
+    double lo = 0, hi = 0;
+    for (int k = 0; k < kClampProbes; ++k) {
+      lo = std::min(lo, unwrapped[k]);
+      hi = std::max(hi, unwrapped[k]);
+    }
+    for (size_t i = 0; i < out.size(); ++i) {
+      const double o = unwrapped[probe[i]] + std::remainder(out[i] - psi[probe[i]], kTwoPi);
+      lo = std::min(lo, o);
+      hi = std::max(hi, o);
+    }
+    frame->kink_psi0 = psi[0] + lo - 1e-9;
+    frame->kink_psi_range = hi - lo + 2e-9;
+  }
+  return out;
+}
+
 template <class Nodes>
-AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta_x,
-                                    double theta_y, double theta_z, double mu, double phi,
-                                    Masking masking, double tol, int max_pieces,
-                                    const Nodes& nodes) {
+AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta_x, double theta_y,
+                                    double theta_z, double mu, double phi, Masking masking,
+                                    double tol, int max_pieces, const Nodes& nodes) {
   constexpr double kTwoPi = 2 * kPi<double>;
   const double ax = std::clamp(alpha_x, 1e-4, 1e4), ay = std::clamp(alpha_y, 1e-4, 1e4);
   EllipsoidFrame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z), mu, phi);
   f.separable = masking == Masking::kSeparable;
+  f.clamped = f.ndf.lambda_rho() < 1;
   f.lambda_o = f.ndf.Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.ray_tol = 0.2 * tol;
   // B = A^-T (= S^-1 R); its columns b1, b2, b3.
@@ -228,7 +407,8 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   f.s0y = Dot(Cross(b1, b3), n12) / det_g;
   const double det_b = 1 / (ax * ay);
   const double q_min = det_b * det_b / det_g;
-  // G = C^T C, C = [[c11, c12], [0, c22]], c22 = sqrt(det G) / c11; L = sqrt(Q_min) C^-1.
+  // G = C^T C, C = [[c11, c12], [0, c22]], c22 = sqrt(det G) / c11; L =
+  // sqrt(Q_min) C^-1.
   const double g11 = Dot(b1, b1), g12 = Dot(b1, b2);
   const double c11 = std::sqrt(g11), c12 = g12 / c11, c22 = std::sqrt(det_g) / c11;
   const double sq = std::sqrt(q_min);
@@ -240,23 +420,87 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // |d|^2 - R^2 = |s0|^2 - 2 s0.c + (|c|^2 - 1 / wo.z^2), the last term -1.
   f.d2_minus_r2 = f.s0x * f.s0x + f.s0y * f.s0y - 2 * (f.s0x * f.cx + f.s0y * f.cy) - 1;
 
-  // First cuts where d.e = 0 (cos psi dx l11 + sin psi (dx l12 + dy l22) = 0);
-  // at grazing PsiRule grades towards them as in aniso_ggx.h, with delta =
-  // |e| sqrt(R^2 - |d|^2) / |d(d.e)/dpsi| when s0 lies inside the disk.
-  const double ca = f.dx * f.l11, cb = f.dx * f.l12 + f.dy * f.l22;
-  const double psi0 = std::atan2(ca, -cb);
-  const double e0x = f.l11 * std::cos(psi0) + f.l12 * std::sin(psi0), e0y = f.l22 * std::sin(psi0);
-  const double dde = std::abs(-ca * std::sin(psi0) + cb * std::cos(psi0));
-  const double inside = -f.d2_minus_r2;
-  const double delta = dde > 0 && inside > 0
-                           ? std::sqrt(e0x * e0x + e0y * e0y) * std::sqrt(inside) / dde
-                           : 2 * kTwoPi;
   auto ray = [&](double psi, double* err) {
     double v;
     EllipsoidRay(f, psi).Integrate(nodes, &v, err);
     return v;
   };
-  return PsiRule(ray, psi0, delta, tol, max_pieces);
+  const double ca = f.dx * f.l11,
+               cb = f.dx * f.l12 + f.dy * f.l22;  // d.e = ca cos + cb sin
+  double lo, hi;
+  std::vector<PsiSegment> segments;
+  if (f.d2_minus_r2 > 0) {
+    // s0 outside the horizon disk: rays meet it only between the two rays
+    // tangent to it, where |d.e|^2 = |e|^2 (|d|^2 - R^2), a quadratic form in
+    // (cos psi, sin psi) = P + Q cos(2 psi) + B sin(2 psi); the ray integral
+    // vanishes like |psi - tangent|^(3/2) there.
+    const double dd = f.d2_minus_r2;
+    const double qa = ca * ca - dd * f.l11 * f.l11;
+    const double qb = ca * cb - dd * f.l11 * f.l12;
+    const double qc = cb * cb - dd * (f.l12 * f.l12 + f.l22 * f.l22);
+    const double p = 0.5 * (qa + qc), q = 0.5 * (qa - qc);
+    const double two_psi = std::atan2(qb, q);
+    const double half = std::acos(std::clamp(-p / std::hypot(q, qb), -1.0, 1.0));
+    // The ray towards the disk's centre, (cos, sin) along L^-1 (c - s0).
+    const double vy = -f.dy / f.l22, vx = (-f.dx - f.l12 * vy) / f.l11;
+    const double psi_c = std::atan2(vy, vx);
+    double above = kTwoPi, below = -kTwoPi;
+    for (int sign = -1; sign <= 1; sign += 2) {
+      for (int k = 0; k < 2; ++k) {
+        const double o =
+            std::remainder(0.5 * (two_psi + sign * half) + k * kPi<double> - psi_c, kTwoPi);
+        if (o > 0) above = std::min(above, o);
+        if (o <= 0) below = std::max(below, o);
+      }
+    }
+    lo = psi_c + below;
+    hi = psi_c + above;
+    segments.push_back(PsiSegment{lo, hi, true, true});
+  } else {
+    // Quarter turns from the rays where d.e = 0; at grazing the rule grades
+    // towards them as in aniso_ggx.h, with delta = |e| sqrt(R^2 - |d|^2) /
+    // |d(d.e)/dpsi| (the width of the feature there).
+    const double psi0 = std::atan2(ca, -cb);
+    const double e0x = f.l11 * std::cos(psi0) + f.l12 * std::sin(psi0),
+                 e0y = f.l22 * std::sin(psi0);
+    const double dde = std::abs(-ca * std::sin(psi0) + cb * std::cos(psi0));
+    const double inside = -f.d2_minus_r2;
+    const double delta =
+        dde > 0 && inside > 0 ? std::sqrt(e0x * e0x + e0y * e0y) * std::sqrt(inside) / dde : 0.0;
+    lo = psi0;
+    hi = psi0 + kTwoPi;
+    for (int k = 0; k < 4; ++k) {
+      PsiSegment g{psi0 + k * 0.25 * kTwoPi, psi0 + (k + 1) * 0.25 * kTwoPi};
+      (k % 2 == 0 ? g.feature_a : g.feature_b) = delta;
+      segments.push_back(g);
+    }
+  }
+  // Rays tangent to the clamp's edge (ClampTangents), each splitting its
+  // segment, singular on both sides.
+  std::vector<double> tangents;
+  if (f.clamped) {
+    for (double psi : ClampTangents(&f)) {
+      const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
+      tangents.push_back(t);
+    }
+    for (double t : tangents) {
+      for (size_t i = 0; i < segments.size(); ++i) {
+        PsiSegment& g = segments[i];
+        if (g.a < t && t < g.b) {
+          PsiSegment right = g;
+          right.a = t;
+          right.singular_a = true;
+          right.feature_a = 0;
+          g.b = t;
+          g.singular_b = true;
+          g.feature_b = 0;
+          segments.insert(segments.begin() + i + 1, right);
+          break;
+        }
+      }
+    }
+  }
+  return SegmentRule(ray, segments, tol, max_pieces);
 }
 
 }  // namespace brdfbake

@@ -247,80 +247,98 @@ struct SimdAnisoNodes {
 // the ellipsoid's Lambda (ellipsoid.h), with both sides of each branch
 // computed and selected per lane.
 struct SimdEllipsoidNodes {
-  void operator()(const EllipsoidRay& ray, double c, double h, double len, double* k,
-                  double* g) const {
+  void operator()(const EllipsoidRay &ray, const double *a, const double *b, int n, double len,
+                  double *k, double *g) const {
     using V = hn::Vec<DF64>;
     static const SimdAnisoNodes::Rule rule;
-    const EllipsoidFrame& f = ray.f_;
+    const EllipsoidFrame &f = ray.f_;
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V cv = hn::Set(d, c), hv = hn::Set(d, h), lenv = hn::Set(d, len);
+    const V lenv = hn::Set(d, len);
     const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
     const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
     const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
     const V ex = hn::Set(d, ray.ex_), ey = hn::Set(d, ray.ey_);
     const V wz_ee = hn::Set(d, f.wz * ray.ee_), two_wz = hn::Set(d, 2 * f.wz);
     const V s0x = hn::Set(d, f.s0x), s0y = hn::Set(d, f.s0y);
-    const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx), wy = hn::Set(d, f.wy);
+    const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx),
+            wy = hn::Set(d, f.wy);
     V am[3][3];
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.ndf.shape_matrix().m[i][j]);
     }
-    const Vec3<double>& h_dir = f.ndf.lambda_h_dir();
+    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
     const V hx = hn::Set(d, h_dir.x), hy = hn::Set(d, h_dir.y), hz = hn::Set(d, h_dir.z);
     const double rho = f.ndf.lambda_rho();
     const V rho_v = hn::Set(d, rho), rho2 = hn::Set(d, rho * rho);
     const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
     const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
-    V ks = zero, gsum = zero;
-    for (size_t i = 0; i < 16; i += N) {
-      const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
-      const auto upper = hn::Ge(o, zero);
-      const V y = hn::IfThenElse(upper, o, hn::Add(lenv, o));      // x_hi - x
-      const V t = hn::IfThenElse(upper, hn::Sub(lenv, o), hn::Neg(o));  // x - x_lo
-      const V x = hn::Sub(x_hi, y);
-      const V omx2 = hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
-                                    hn::NegMulAdd(t, hn::MulAdd(two, x_lo, t), omx2_lo));
-      const auto ok1 = hn::And(hn::Gt(x, zero), hn::Gt(omx2, zero));
-      const V omx2s = hn::IfThenElse(ok1, omx2, one);
-      const V rho_n = hn::Div(x, hn::Sqrt(omx2s));
-      const V to_hi = hn::Div(hn::Mul(y, hn::Sub(hn::Mul(two, x_hi), y)),
-                              hn::Mul(hn::Mul(omx2_hi, omx2s), hn::Add(rho_plus, rho_n)));
-      const V from_lo =
-          ray.lo_edge_ ? hn::Div(hn::Mul(t, hn::MulAdd(two, x_lo, t)),
-                                 hn::Mul(hn::Mul(omx2_lo, omx2s), hn::Add(rho_n, rho_minus)))
-                       : hn::Sub(rho_n, rho_minus);
-      const V p = hn::MulAdd(rho_n, ex, s0x), q = hn::MulAdd(rho_n, ey, s0y);
-      const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, one));
-      const V lin = hn::MulAdd(q, cy, hn::MulAdd(p, cx, one));
-      const V wiz = hn::Div(hn::Mul(hn::Mul(wz_ee, from_lo), to_hi), n2);
-      const auto ok = hn::And(ok1, hn::And(hn::Gt(wiz, zero), hn::Gt(lin, zero)));
-      const V kk = hn::Div(hn::Mul(two_wz, lin), n2);
-      const V wix = hn::Neg(hn::MulAdd(kk, p, wx)), wiy = hn::Neg(hn::MulAdd(kk, q, wy));
-      // Lambda(wi): a = A wi, n_over_h as in EllipsoidNdf::Lambda.
-      const V ax = hn::MulAdd(am[0][2], wiz, hn::MulAdd(am[0][1], wiy, hn::Mul(am[0][0], wix)));
-      const V ay = hn::MulAdd(am[1][2], wiz, hn::MulAdd(am[1][1], wiy, hn::Mul(am[1][0], wix)));
-      const V az = hn::MulAdd(am[2][2], wiz, hn::MulAdd(am[2][1], wiy, hn::Mul(am[2][0], wix)));
-      const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
-      const V ah = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
-      const V px = hn::NegMulAdd(hx, ah, ax), py = hn::NegMulAdd(hy, ah, ay), pz = hn::NegMulAdd(hz, ah, az);
-      const V perp2 = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
-      const V num = hn::NegMulAdd(hn::Mul(omr2, ah), ah, hn::Mul(rho2, perp2));
-      const auto pos = hn::Gt(ah, zero);
-      const V den = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len, ah), one);
-      const V n_over_h = hn::IfThenElse(pos, hn::Div(num, den), hn::NegMulAdd(one, ah, hn::Mul(rho_v, a_len)));
-      const V wiz_s = hn::IfThenElse(ok, wiz, one);
-      const V lambda_i = hn::IfThenElseZero(hn::Gt(n_over_h, zero),
-                                            hn::Div(hn::Mul(n_over_h, lscale), wiz_s));
-      const V g2 = f.separable ? hn::Div(g1o, hn::Add(one, lambda_i))
-                               : hn::Div(one, hn::Add(lambda_o1, lambda_i));
-      const V v = hn::IfThenElseZero(ok, hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)));
-      ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
-      gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
+    // Piece by piece; the pieces are independent, so their dependency
+    // chains (two square roots and three divisions deep) overlap.
+    for (int j = 0; j < n; ++j) {
+      const V cv = hn::Set(d, 0.5 * (a[j] + b[j])), hv = hn::Set(d, 0.5 * (b[j] - a[j]));
+      V ks = zero, gsum = zero;
+      for (size_t i = 0; i < 16; i += N) {
+        const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
+        const auto upper = hn::Ge(o, zero);
+        const V y = hn::IfThenElse(upper, o, hn::Add(lenv, o));           // x_hi - x
+        const V t = hn::IfThenElse(upper, hn::Sub(lenv, o), hn::Neg(o));  // x - x_lo
+        const V x = hn::Sub(x_hi, y);
+        const V omx2 =
+            hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
+                           hn::NegMulAdd(t, hn::MulAdd(two, x_lo, t), omx2_lo));
+        const auto ok1 = hn::And(hn::Gt(x, zero), hn::Gt(omx2, zero));
+        const V omx2s = hn::IfThenElse(ok1, omx2, one);
+        const V rho_n = hn::Div(x, hn::Sqrt(omx2s));
+        // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz lin /
+        // N^2 from one division: r = 1 / (den_hi den_lo N^2), with the
+        // differences as quotients num / den as in EllipsoidRay::WiAt.
+        const V num_hi = hn::Mul(y, hn::Sub(hn::Mul(two, x_hi), y));
+        const V den_hi = hn::Mul(hn::Mul(omx2_hi, omx2s), hn::Add(rho_plus, rho_n));
+        const V num_lo =
+            ray.lo_edge_ ? hn::Mul(t, hn::MulAdd(two, x_lo, t)) : hn::Sub(rho_n, rho_minus);
+        const V den_lo =
+            ray.lo_edge_ ? hn::Mul(hn::Mul(omx2_lo, omx2s), hn::Add(rho_n, rho_minus)) : one;
+        const V p = hn::MulAdd(rho_n, ex, s0x), q = hn::MulAdd(rho_n, ey, s0y);
+        const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, one));
+        const V lin = hn::MulAdd(q, cy, hn::MulAdd(p, cx, one));
+        const V dens = hn::Mul(den_hi, den_lo);
+        const V r = hn::Div(one, hn::Mul(dens, n2));
+        const V wiz = hn::Mul(hn::Mul(wz_ee, hn::Mul(num_hi, num_lo)), r);
+        const auto ok = hn::And(ok1, hn::And(hn::Gt(wiz, zero), hn::Gt(lin, zero)));
+        const V kk = hn::Mul(hn::Mul(two_wz, lin), hn::Mul(dens, r));
+        const V wix = hn::Neg(hn::MulAdd(kk, p, wx)), wiy = hn::Neg(hn::MulAdd(kk, q, wy));
+        // Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda
+        // (0 where nn <= 0, the clamp), and G2 from it with one division:
+        // 1 / (1 + Lambda_o + Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd +
+        // nn scale).
+        const V ax = hn::MulAdd(am[0][2], wiz, hn::MulAdd(am[0][1], wiy, hn::Mul(am[0][0], wix)));
+        const V ay = hn::MulAdd(am[1][2], wiz, hn::MulAdd(am[1][1], wiy, hn::Mul(am[1][0], wix)));
+        const V az = hn::MulAdd(am[2][2], wiz, hn::MulAdd(am[2][1], wiy, hn::Mul(am[2][0], wix)));
+        const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
+        const V ah = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
+        const V px = hn::NegMulAdd(hx, ah, ax), py = hn::NegMulAdd(hy, ah, ay),
+                pz = hn::NegMulAdd(hz, ah, az);
+        const V perp2 = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
+        const auto pos = hn::Gt(ah, zero);
+        const V nn = hn::IfThenElse(pos, hn::NegMulAdd(hn::Mul(omr2, ah), ah, hn::Mul(rho2, perp2)),
+                                    hn::NegMulAdd(one, ah, hn::Mul(rho_v, a_len)));
+        const V dd = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len, ah), one);
+        const V wiz_dd = hn::Mul(hn::IfThenElse(ok, wiz, one), dd);
+        const V nn_scale = hn::Mul(hn::ZeroIfNegative(nn), lscale);
+        // (Kept off 0 / 0 where wi.z dd underflows.)
+        const V tiny = hn::Set(d, std::numeric_limits<double>::min());
+        const V g2 = f.separable
+                         ? hn::Div(hn::Mul(g1o, wiz_dd), hn::Max(hn::Add(wiz_dd, nn_scale), tiny))
+                         : hn::Div(wiz_dd, hn::Max(hn::MulAdd(lambda_o1, wiz_dd, nn_scale), tiny));
+        const V v = hn::IfThenElseZero(ok, hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)));
+        ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
+        gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
+      }
+      k[j] = hn::GetLane(hn::SumOfLanes(d, ks));
+      g[j] = hn::GetLane(hn::SumOfLanes(d, gsum));
     }
-    *k = hn::GetLane(hn::SumOfLanes(d, ks));
-    *g = hn::GetLane(hn::SumOfLanes(d, gsum));
   }
 };
 

@@ -537,11 +537,14 @@ TEST(EllipsoidAlbedoTest, TiltedAgreesWithVisibleNormalQmc) {
   struct Case {
     double ax, ay, tx, ty, tz, mu, phi;
   };
-  // The last two: 10^4 : 1, tilted, near grazing and at mu = 0.5 (where an
-  // earlier slope construction lost 1.5e-3 to cancellation).
+  // Then 10^4 : 1, tilted, near grazing and at mu = 0.5 (where an earlier
+  // slope construction lost 1.5e-3 to cancellation), and a grazing view
+  // from which the density's peak lies outside the horizon disk.
   for (const Case& c : {Case{0.3, 0.6, 0.3, 0, 0.5, 0.5, 0.3}, Case{0.4, 0.4, 0.6, 0.2, 0, 0.7, 4.0},
                         Case{0.2, 0.5, 0.8, -0.5, 1.0, 0.2, 1.0}, Case{1, 1e-4, 0.8, 0, 0.3, 1e-3, 0},
-                        Case{1, 1e-4, 1.5, -1.2, 0.3, 0.5, 0}}) {
+                        Case{1, 1e-4, 1.5, -1.2, 0.3, 0.5, 0},
+                        Case{0.3, 0.6, 0.34906585039886590, 0, 0.52359877559829887,
+                             0.041666666666666664, 5.3930673886624731}}) {
     const EllipsoidNdf<double> ndf(c.ax, c.ay, c.tx, c.ty, c.tz);
     const Vec3<double> wo = FromMuPhi(c.mu, c.phi);
     const double area = ndf.LuneProjectedArea(wo, Vec3<double>(0, 0, 1));
@@ -557,6 +560,39 @@ TEST(EllipsoidAlbedoTest, TiltedAgreesWithVisibleNormalQmc) {
     const AzimuthalResult a = EllipsoidAlbedo(c.ax, c.ay, c.tx, c.ty, c.tz, c.mu, c.phi,
                                               Masking::kSeparable, 1e-9, 512);
     EXPECT_NEAR(a.value, acc / n, 2e-6) << c.tx << " " << c.mu;
+  }
+}
+
+// The claimed error bounds the true one where the rule has to find its
+// features: views near grazing, where the rays from the density's peak s0
+// meet the horizon disk only between two tangent rays (s0 outside it), and
+// thin or tilted shapes whose G1 clamp's edge crosses the rays in a short
+// stretch near the horizon (x close to 1) or is touched by rays tangent to
+// it. The reference is the same rule at 1e-12; each case here was off by
+// 5x to 90x its claim before the rule cut psi at those tangent rays and
+// found the clamp's edge on each ray as a root of a quartic (up to 4.2e-6
+// against a claimed 4.5e-8).
+TEST(EllipsoidAlbedoTest, ClaimBoundsTheErrorWhereFeaturesAreNarrow) {
+  constexpr double kDeg = kPi<double> / 180;
+  struct Case {
+    double ax, ay, tx, ty, tz, mu, phi;
+  };
+  for (const Case& c : {Case{0.3, 0.6, 20, 0, 30, 0.041666666666666664, 5.3930673886624731},
+                        Case{0.05, 0.5, 40, 0, 0, 0.041666666666666664, 2.7750735106709814},
+                        Case{0.02, 0.02, 10, 10, 0, 0.20833333333333334, 3.2986722862692797},
+                        Case{0.02, 0.02, 10, 10, 0, 0.041666666666666664, 2.2514747350726827},
+                        Case{0.02, 0.02, 10, 10, 0, 0.375, 3.8222710618675779},
+                        Case{0.3, 0.5, 60, 30, 10, 0.125, 0.157}}) {
+    for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
+      const AzimuthalResult a = EllipsoidAlbedo(c.ax, c.ay, c.tx * kDeg, c.ty * kDeg,
+                                                c.tz * kDeg, c.mu, c.phi, masking, 1e-7, 512);
+      const AzimuthalResult ref = EllipsoidAlbedo(c.ax, c.ay, c.tx * kDeg, c.ty * kDeg,
+                                                  c.tz * kDeg, c.mu, c.phi, masking, 1e-12, 4096);
+      EXPECT_LE(ref.error, 1e-11);
+      EXPECT_LE(a.error, 1e-7);
+      EXPECT_LE(std::abs(a.value - ref.value), a.error + ref.error)
+          << c.ax << " " << c.ay << " " << c.tx << " mu " << c.mu << " phi " << c.phi;
+    }
   }
 }
 
