@@ -184,7 +184,8 @@ AzimuthalResult SegmentRule(const Ray& ray, const std::vector<PsiSegment>& segme
     // t at which psi is `d` away from end a (b) for the map near that end.
     auto t_near = [&](double d, bool singular) { return singular ? std::sqrt(d / w) : d / w; };
     std::vector<double> cuts;
-    const int n = std::clamp(static_cast<int>(std::ceil(w / (kTwoPi / 4))), 1, 8);
+    // (A turn that rounds to a hair over a multiple of pi / 2 gets no extra piece.)
+    const int n = std::clamp(static_cast<int>(std::ceil(w / (kTwoPi / 4) - 1e-9)), 1, 8);
     for (int i = 0; i <= n; ++i) cuts.push_back(static_cast<double>(i) / n);
     if (g.feature_a > 0) {
       for (double d = w / 4; d > 0.25 * g.feature_a && cuts.size() < 40; d *= 0.25) {

@@ -26,15 +26,20 @@
 //
 // G1 is the seed's (eq. 6, clamped at 1: Lambda = 0 where the clamp is
 // active, ellipsoid.h); G2 height-correlated (brdfbake's extension) or
-// separable (the seed's eq. 5). The clamp's edge is a kink inside the
-// domain, which the adaptive rules find by their error estimates.
+// separable (the seed's eq. 5). The clamp's edge is a closed curve in the
+// slope plane where G2 has a kink.
 //
-// Rule: along each ray Gauss-Kronrod 15 in x = sqrt(u), graded by 4
-// towards the ends that are horizon crossings, the worst piece bisected
-// until the ray meets a fifth of the tolerance; over psi, Gauss-Kronrod 15
-// on quarter turns (and cuts at the two rays tangent to the disk when s0
-// is outside it), the worst piece bisected until the total meets the
-// tolerance.
+// Rule (ellipsoid_albedo_rule.h): along each ray Gauss-Kronrod 15 in
+// x = sqrt(u), cut where the ray crosses the clamp's edge (the roots of a
+// quartic in rho), graded by 4 towards the ends that are horizon crossings
+// down to the width of G2's rise there, the worst piece bisected until the
+// ray meets a fifth of the tolerance. Over psi, Gauss-Kronrod 15 on
+// segments: quarter turns from the rays where d.e = 0 when s0 is inside
+// the disk, or the range between the two rays tangent to it when s0 is
+// outside; each split again at the rays tangent to the clamp's edge. At a
+// tangent ray the ray integral goes like |psi - tangent|^(3/2), and the
+// segment is mapped (SegmentRule) so that it is smooth. The worst piece is
+// bisected until the total meets the tolerance.
 
 #ifndef BRDFBAKE_SRC_ELLIPSOID_ALBEDO_H_
 #define BRDFBAKE_SRC_ELLIPSOID_ALBEDO_H_

@@ -24,9 +24,10 @@
 
 namespace brdfbake {
 
-// Initial grading of a ray's halves towards horizon ends (ratio 4); the
-// adaptive bisection refines from there.
-inline constexpr int kEllipsoidRayLevels = 3;
+// Initial grading of a ray's halves towards horizon ends (ratio 4): at
+// least this many levels, and down to G2's layer there; the adaptive
+// bisection refines from there.
+inline constexpr int kEllipsoidRayLevels = 1;
 // The most pieces a ray is cut into, and the most grading levels (ratio 4)
 // towards a horizon end, where G2's layer is narrow.
 inline constexpr int kMaxRayPieces = 96;
@@ -305,7 +306,11 @@ struct ScalarEllipsoidNodes {
 // tangent to it where the ray's angle psi(theta) (in the frame of L) is
 // extremal: bracketed on kClampProbes points of theta and refined by
 // golden-section search (psi is then exact to second order).
-inline std::vector<double> ClampTangents(EllipsoidFrame* frame) {
+struct ClampRays {
+  std::vector<double> tangents;
+  std::vector<double> glancing, glancing_width;
+};
+inline ClampRays ClampTangents(EllipsoidFrame* frame) {
   const EllipsoidFrame& f = *frame;
   constexpr double kTwoPi = 2 * kPi<double>;
   const Vec3<double>& h = f.ndf.lambda_h_dir();
@@ -361,8 +366,7 @@ inline std::vector<double> ClampTangents(EllipsoidFrame* frame) {
   double unwrapped[kClampProbes + 1];  // psi[k] - psi[0], continued
   unwrapped[0] = 0;
   for (int k = 0; k < kClampProbes; ++k) {
-    unwrapped[k + 1] =
-        unwrapped[k] + std::remainder(psi[(k + 1) % kClampProbes] - psi[k], kTwoPi);
+    unwrapped[k + 1] = unwrapped[k] + std::remainder(psi[(k + 1) % kClampProbes] - psi[k], kTwoPi);
   }
   if (std::abs(unwrapped[kClampProbes]) < kPi<double>) {
     double lo = 0, hi = 0;
@@ -378,7 +382,31 @@ inline std::vector<double> ClampTangents(EllipsoidFrame* frame) {
     frame->kink_psi0 = psi[0] + lo - 1e-9;
     frame->kink_psi_range = hi - lo + 2e-9;
   }
-  return out;
+  ClampRays rays;
+  rays.tangents = out;
+  // Glancing rays: where the edge runs nearly along the rays without
+  // turning back (a local minimum of the step of psi between probes, below
+  // a quarter of the mean step, the steps around it of one sign), the kink
+  // moves fast along the ray, and the ray integral has a narrow smooth
+  // feature in psi, about as wide as that step.
+  double mean = 0;
+  for (int k = 0; k < kClampProbes; ++k) mean += std::abs(unwrapped[k + 1] - unwrapped[k]);
+  mean /= kClampProbes;
+  auto step = [&](int k) {
+    k = (k + kClampProbes) % kClampProbes;
+    return unwrapped[k + 1] - unwrapped[k];
+  };
+  for (int k = 0; k < kClampProbes; ++k) {
+    const double s0 = step(k - 1), s1 = step(k), s2 = step(k + 1);
+    if ((s0 > 0) != (s1 > 0) || (s1 > 0) != (s2 > 0)) continue;
+    if (!(std::abs(s1) < std::abs(s0) && std::abs(s1) <= std::abs(s2) &&
+          std::abs(s1) < 0.25 * mean)) {
+      continue;
+    }
+    rays.glancing.push_back(psi[k] + 0.5 * s1);
+    rays.glancing_width.push_back(std::abs(s1));
+  }
+  return rays;
 }
 
 template <class Nodes>
@@ -477,27 +505,30 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   }
   // Rays tangent to the clamp's edge (ClampTangents), each splitting its
   // segment, singular on both sides.
-  std::vector<double> tangents;
-  if (f.clamped) {
-    for (double psi : ClampTangents(&f)) {
-      const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
-      tangents.push_back(t);
-    }
-    for (double t : tangents) {
-      for (size_t i = 0; i < segments.size(); ++i) {
-        PsiSegment& g = segments[i];
-        if (g.a < t && t < g.b) {
-          PsiSegment right = g;
-          right.a = t;
-          right.singular_a = true;
-          right.feature_a = 0;
-          g.b = t;
-          g.singular_b = true;
-          g.feature_b = 0;
-          segments.insert(segments.begin() + i + 1, right);
-          break;
-        }
+  // The cut at psi: singular on both sides (a tangent ray), or graded
+  // towards from both sides down to `feature` (a glancing ray).
+  auto cut = [&](double psi, bool singular, double feature) {
+    const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
+    for (size_t i = 0; i < segments.size(); ++i) {
+      PsiSegment& g = segments[i];
+      if (g.a < t && t < g.b) {
+        PsiSegment right = g;
+        right.a = t;
+        right.singular_a = singular;
+        right.feature_a = feature;
+        g.b = t;
+        g.singular_b = singular;
+        g.feature_b = feature;
+        segments.insert(segments.begin() + i + 1, right);
+        return;
       }
+    }
+  };
+  if (f.clamped) {
+    const ClampRays rays = ClampTangents(&f);
+    for (double t : rays.tangents) cut(t, true, 0);
+    for (size_t i = 0; i < rays.glancing.size(); ++i) {
+      cut(rays.glancing[i], false, rays.glancing_width[i]);
     }
   }
   return SegmentRule(ray, segments, tol, max_pieces);

@@ -15,8 +15,6 @@
 #include <cmath>
 #include <utility>
 
-#include "integrate.h"
-
 namespace brdfbake {
 
 inline constexpr int kMaxPolyDegree = 4;
@@ -26,6 +24,33 @@ inline double PolyAt(const double* c, int n, double t) {
   double v = c[n];
   for (int k = n - 1; k >= 0; --k) v = v * t + c[k];
   return v;
+}
+
+// The root of c in [a, b] (n >= 1), where c(a) = pa and c(b) = pb have
+// opposite signs, to within tol: Newton steps (quadratic near a simple
+// root) kept inside the bracket, which each step shrinks; bisection where
+// a Newton step would leave it or shrink it too little.
+inline double PolyRootBracketed(const double* c, int n, double a, double b, double pa, double tol) {
+  double x = 0.5 * (a + b);
+  for (int it = 0; it < 100 && b - a > tol; ++it) {
+    double v = c[n], dv = 0;
+    for (int k = n - 1; k >= 0; --k) {
+      dv = dv * x + v;
+      v = v * x + c[k];
+    }
+    if (v == 0) return x;
+    if ((v > 0) == (pa > 0)) {
+      a = x;
+    } else {
+      b = x;
+    }
+    const double newton = x - v / dv;
+    const bool inside = newton > a && newton < b;
+    x = inside ? newton : 0.5 * (a + b);
+    // A converged Newton step: the root is within |step| of x.
+    if (inside && std::abs(v / dv) <= 0.5 * tol) return x;
+  }
+  return x;
 }
 
 // The roots in (lo, hi) where c[0] + ... + c[n] t^n (n <= kMaxPolyDegree)
@@ -68,7 +93,7 @@ inline int PolyRootsIn(const double* c, int n, double lo, double hi, double tol,
     const double a = ends[i], b = ends[i + 1];
     const double pa = PolyAt(c, n, a), pb = PolyAt(c, n, b);
     if (pa == 0 || pb == 0 || (pa > 0) == (pb > 0)) continue;
-    roots[found++] = SolveBracketed([&](double t) { return PolyAt(c, n, t); }, a, b, pa, pb, tol);
+    roots[found++] = PolyRootBracketed(c, n, a, b, pa, tol);
   }
   return found;
 }
