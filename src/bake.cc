@@ -23,6 +23,7 @@
 #include "adaptive_rule.h"
 #include "aniso_ggx.h"
 #include "ellipsoid_albedo.h"
+#include "ellipsoid_albedo_rule.h"
 #include "sel_norm.h"
 #include "azimuthal.h"
 #include "integrate.h"
@@ -460,9 +461,11 @@ std::string IntegratorJson(const BakeSpec& spec) {
       break;
   }
   if (spec.table == TableKind::kEavg && spec.model.name == "ellipsoid") {
-    j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo by Gauss-Legendre 24 in sqrt(mu) times the "
-                 "periodic trapezoid rule (32 nodes) in phi_o over [0, 2 pi); error: the "
-                 "difference from Gauss-Legendre 12 times 16 nodes plus the propagated errors of E";
+    j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = int_0^1 4 s^3 A(s) ds, s = sqrt(mu), by "
+                 "adaptive Gauss-Kronrod 15 in s cut where G1(wo)'s clamp edge has extreme mu, A(s) "
+                 "the average of E over phi_o in [0, 2 pi) by adaptive Gauss-Kronrod 15 on the arcs "
+                 "between the clamp edge's crossings; error: the rules' |K15 - G7| plus the "
+                 "propagated errors of E";
   } else if (spec.table == TableKind::kEavg && spec.Anisotropic()) {
     j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu by adaptive "
                  "Gauss-Kronrod 15 in sqrt(mu) as for the other models, A(mu) the average of "
@@ -602,48 +605,157 @@ TexelValue EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
   return v;
 }
 
-// E_avg = (1 / pi) int E cos dwo = (2 / pi) int_0^{2 pi} dphi int_0^1 E(s^2, phi) s^3 ds
-// by a tensor rule: Gauss-Legendre 24 in s = sqrt(mu) times the periodic
-// trapezoid rule with 32 nodes in phi (a rotated ellipsoid has no
-// azimuthal symmetry), against Gauss-Legendre 12 times 16 nodes for the
-// error estimate, plus the propagated errors of E. E has a kink along the
-// curve where G1(wo)'s clamp turns on, on which both rules converge
-// algebraically: the coarse rule's error is then about four times the fine
-// one's, and their difference bounds it. The E values (960 of them) are
-// computed in parallel and summed in a fixed order.
+// E_avg = (1 / pi) int E cos dwo = int_0^1 4 s^3 A(s) ds, s = sqrt(mu), A
+// the average of E over phi_o in [0, 2 pi) (a rotated ellipsoid has no
+// azimuthal symmetry). E has a kink where G1(wo)'s clamp turns on, along
+// the clamp's edge (ClampEdge, a closed curve of wo); elsewhere it is
+// smooth. So:
+// - A(s) is adaptive Gauss-Kronrod 15 over the arcs of phi_o between the
+//   edge's crossings of cos(theta_o) = s^2 (one piece per quarter turn to
+//   start with, the worst bisected until their |K15 - G7| sum is below a
+//   third of the tolerance), its 15 or 30 values of E in parallel;
+// - over s, SegmentRule with cuts at 1/4 (E's grazing layer) and at the
+//   square roots of the edge's extremes of cos(theta_o), where an arc of
+//   clamped views appears and A goes like |s - s*|^(3/2).
+// The error: the rules' |K15 - G7| plus the propagated errors of E.
 EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
-  static const GaussLegendre fine_s(24), coarse_s(12);
-  constexpr int kFinePhi = 32, kCoarsePhi = 16;
-  struct Node {
-    double s, w, phi;
-    bool fine;
+  constexpr double kTwoPi = 2 * kPi<double>;
+  const ModelParams& m = spec.model;
+  const EllipsoidNdf<double> ndf(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z);
+  const bool clamped = ndf.lambda_rho() < 1;
+  const ClampEdge edge(ndf);
+  // cos(theta_o) along the edge, on kEdgeProbes points and its refined
+  // extremes, in theta order.
+  constexpr int kEdgeProbes = 64;
+  std::vector<double> theta, mu;
+  std::vector<double> s_cuts;
+  if (clamped) {
+    std::vector<double> probe(kEdgeProbes);
+    for (int k = 0; k < kEdgeProbes; ++k) probe[k] = edge.At(kTwoPi * k / kEdgeProbes).z;
+    for (int k = 0; k < kEdgeProbes; ++k) {
+      theta.push_back(kTwoPi * k / kEdgeProbes);
+      mu.push_back(probe[k]);
+      const double p0 = probe[(k + kEdgeProbes - 1) % kEdgeProbes], p2 = probe[(k + 1) % kEdgeProbes];
+      const double sign = probe[k] > p0 && probe[k] >= p2 ? 1 : probe[k] < p0 && probe[k] <= p2 ? -1 : 0;
+      if (sign == 0) continue;
+      const double t = MaximizeGolden([&](double th) { return sign * edge.At(th).z; },
+                                      kTwoPi * (k - 1) / kEdgeProbes, kTwoPi * (k + 1) / kEdgeProbes);
+      const double mu_x = edge.At(t).z;
+      if (mu_x > 0 && mu_x < 1) s_cuts.push_back(std::sqrt(mu_x));
+      // Inserted in theta order (t within a probe step of theta_k).
+      const double tw = t < 0 ? t + kTwoPi : t >= kTwoPi ? t - kTwoPi : t;
+      theta.push_back(tw);
+      mu.push_back(mu_x);
+    }
+    std::vector<size_t> order(theta.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return theta[a] < theta[b]; });
+    std::vector<double> t2, m2;
+    for (size_t i : order) {
+      t2.push_back(theta[i]);
+      m2.push_back(mu[i]);
+    }
+    theta = t2;
+    mu = m2;
+  }
+  // The phi_o in [0, 2 pi) where the edge crosses cos(theta_o) = mu0, ascending.
+  auto crossings = [&](double mu0) {
+    std::vector<double> phis;
+    const size_t n = theta.size();
+    for (size_t k = 0; k < n; ++k) {
+      const size_t k1 = (k + 1) % n;
+      const double a = theta[k], b = k1 == 0 ? theta[0] + kTwoPi : theta[k1];
+      const double da = mu[k] - mu0, db = mu[k1] - mu0;
+      if (da == 0 || db == 0 || (da > 0) == (db > 0)) continue;
+      const double t = SolveBracketed([&](double th) { return edge.At(th).z - mu0; }, a, b, da, db,
+                                      1e-13);
+      const Vec3<double> w = edge.At(t);
+      const double phi = std::atan2(w.y, w.x);
+      phis.push_back(phi < 0 ? phi + kTwoPi : phi);
+    }
+    std::sort(phis.begin(), phis.end());
+    return phis;
   };
-  std::vector<Node> nodes;
-  for (int rule = 0; rule < 2; ++rule) {
-    const GaussLegendre& gl = rule == 0 ? fine_s : coarse_s;
-    const int nphi = rule == 0 ? kFinePhi : kCoarsePhi;
-    for (size_t i = 0; i < gl.x.size(); ++i) {
-      for (int j = 0; j < nphi; ++j) {
-        nodes.push_back({gl.x[i], gl.w[i] / nphi, 2 * kPi<double> * j / nphi, rule == 0});
+  const double tol = spec.tolerance;
+  const KronrodRule& r = Kronrod15();
+  // A(s) times 2 pi (SegmentRule divides by 2 pi) and 4 s^3.
+  auto weighted_average = [&](double s, double* err) {
+    const double mu0 = s * s;
+    std::vector<double> cuts = crossings(mu0);
+    std::vector<std::pair<double, double>> arcs;
+    if (cuts.empty()) {
+      arcs.push_back({0.0, kTwoPi});
+    } else {
+      for (size_t i = 0; i < cuts.size(); ++i) {
+        arcs.push_back({cuts[i], i + 1 < cuts.size() ? cuts[i + 1] : cuts[0] + kTwoPi});
       }
     }
-  }
-  std::vector<TexelValue> e(nodes.size());
-  tbb::parallel_for(size_t(0), nodes.size(), [&](size_t k) {
-    e[k] = EllipsoidTexel(spec, nodes[k].s * nodes[k].s, nodes[k].phi);
-  });
-  double fine = 0, coarse = 0, prop = 0;
-  for (size_t k = 0; k < nodes.size(); ++k) {
-    // 4 s^3 ds on [0, 1] (the rule's x and w are on [0, 1]), averaged over phi.
-    const double w = 4 * nodes[k].w * nodes[k].s * nodes[k].s * nodes[k].s;
-    if (nodes[k].fine) {
-      fine += w * e[k].e;
-      prop += w * e[k].err_e;
-    } else {
-      coarse += w * e[k].e;
+    std::vector<GkPiece> pieces;
+    // Pieces [a, b] of phi_o, their 15 values of E computed in parallel.
+    auto evaluate = [&](const std::vector<std::pair<double, double>>& ab) {
+      std::vector<TexelValue> e(15 * ab.size());
+      tbb::parallel_for(size_t(0), e.size(), [&](size_t k) {
+        const double c = 0.5 * (ab[k / 15].first + ab[k / 15].second);
+        const double h = 0.5 * (ab[k / 15].second - ab[k / 15].first);
+        e[k] = EllipsoidTexel(spec, mu0, c + h * r.x[k % 15]);
+      });
+      for (size_t j = 0; j < ab.size(); ++j) {
+        double k = 0, g = 0, prop = 0;
+        for (int i = 0; i < 15; ++i) {
+          k += r.wk[i] * e[15 * j + i].e;
+          g += r.wg[i] * e[15 * j + i].e;
+          prop += r.wk[i] * e[15 * j + i].err_e;
+        }
+        const double h = 0.5 * (ab[j].second - ab[j].first);
+        pieces.push_back(GkPiece{ab[j].first, ab[j].second, k * h, std::abs(k - g) * h, prop * h});
+      }
+    };
+    std::vector<std::pair<double, double>> first;
+    for (const auto& [a, b] : arcs) {
+      const int n = std::max(1, static_cast<int>(std::ceil((b - a) / (kTwoPi / 4) - 1e-9)));
+      for (int i = 0; i < n; ++i) first.push_back({a + (b - a) * i / n, a + (b - a) * (i + 1) / n});
     }
+    evaluate(first);
+    auto rule_error = [&] {
+      double e = 0;
+      for (const GkPiece& p : pieces) e += p.err;
+      return e / kTwoPi;
+    };
+    while (rule_error() > tol / 3 && pieces.size() < 64) {
+      size_t worst = 0;
+      for (size_t i = 1; i < pieces.size(); ++i) {
+        if (pieces[i].err > pieces[worst].err) worst = i;
+      }
+      const GkPiece p = pieces[worst];
+      pieces.erase(pieces.begin() + worst);
+      const double mid = 0.5 * (p.a + p.b);
+      evaluate({{p.a, mid}, {mid, p.b}});
+    }
+    double value = 0, e = 0;
+    for (const GkPiece& p : pieces) {
+      value += p.value;
+      e += p.err + p.prop;
+    }
+    const double w = 4 * s * s * s;  // times 2 pi / (2 pi)
+    *err = w * e;
+    return w * value;
+  };
+  std::vector<double> points = {0.0, 0.25, 1.0};
+  for (double c : s_cuts) points.push_back(c);
+  std::sort(points.begin(), points.end());
+  std::vector<PsiSegment> segments;
+  for (size_t i = 0; i + 1 < points.size(); ++i) {
+    if (!(points[i + 1] > points[i])) continue;
+    PsiSegment g{points[i], points[i + 1]};
+    auto is_cut = [&](double x) {
+      return std::find(s_cuts.begin(), s_cuts.end(), x) != s_cuts.end();
+    };
+    g.singular_a = is_cut(g.a);
+    g.singular_b = is_cut(g.b);
+    segments.push_back(g);
   }
-  return {fine, std::abs(fine - coarse) + prop + 4e-16 * fine};
+  const AzimuthalResult res = SegmentRule(weighted_average, segments, tol, 64);
+  return {res.value, res.error};
 }
 
 }  // namespace

@@ -298,14 +298,59 @@ struct ScalarEllipsoidNodes {
 };
 
 // The psi of the rays from s0 tangent to G1's clamp edge in the slope
-// plane. The clamp is active on the cone of wi with a.h >= rho_c ||a||,
-// a = A wi (ellipsoid.h), which lies above the horizon; its edge is
-// a(theta) = rho_c h + sqrt(1 - rho_c^2) (cos theta t1 + sin theta t2)
-// (t1, t2 orthonormal to h), wi(theta) = A^-1 a(theta), and in slopes the
-// closed curve s(theta) of the half vector wi + wo. A ray from s0 is
+// plane: with wi(theta) on the edge (ClampEdge), the closed curve s(theta)
+// of the half vector wi + wo. A ray from s0 is
 // tangent to it where the ray's angle psi(theta) (in the frame of L) is
 // extremal: bracketed on kClampProbes points of theta and refined by
 // golden-section search (psi is then exact to second order).
+// The argument in [a, b] of the maximum of g (unimodal there), by 40 steps
+// of golden-section search (the bracket shrinks to 4e-9 of its width).
+template <class G>
+double MaximizeGolden(const G& g, double a, double b) {
+  constexpr double kGolden = 0.6180339887498949;
+  double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
+  double gc = g(c), gd = g(d);
+  for (int it = 0; it < 40; ++it) {
+    if (gc > gd) {
+      b = d, d = c, gd = gc;
+      c = b - kGolden * (b - a);
+      gc = g(c);
+    } else {
+      a = c, c = d, gc = gd;
+      d = a + kGolden * (b - a);
+      gd = g(d);
+    }
+  }
+  return gc > gd ? c : d;
+}
+
+// The edge of G1's clamp as a closed curve of unit directions: the clamp
+// is active on the cone of u with a.h >= rho_c ||a||, a = A u (ellipsoid.h),
+// which lies above the horizon; its edge is u(theta) = A^-1 a(theta)
+// normalized, a(theta) = rho_c h + sqrt(1 - rho_c^2) (cos theta t1 +
+// sin theta t2) with t1, t2 orthonormal to h.
+class ClampEdge {
+ public:
+  explicit ClampEdge(const EllipsoidNdf<double>& ndf)
+      : h_(ndf.lambda_h_dir()),
+        rc_(ndf.lambda_rho()),
+        rs_(std::sqrt((1 - rc_) * (1 + rc_))),
+        a_inv_(ndf.inverse_transposed().Transposed()) {
+    t1_ = Normalize(std::abs(h_.x) < 0.9 ? Cross(h_, Vec3<double>(1, 0, 0))
+                                         : Cross(h_, Vec3<double>(0, 1, 0)));
+    t2_ = Cross(h_, t1_);
+  }
+  Vec3<double> At(double theta) const {
+    return Normalize(a_inv_ * (h_ * rc_ + (t1_ * std::cos(theta) + t2_ * std::sin(theta)) * rs_));
+  }
+
+ private:
+  Vec3<double> h_;
+  double rc_, rs_;
+  Mat3<double> a_inv_;
+  Vec3<double> t1_, t2_;
+};
+
 struct ClampRays {
   std::vector<double> tangents;
   std::vector<double> glancing, glancing_width;
@@ -313,15 +358,9 @@ struct ClampRays {
 inline ClampRays ClampTangents(EllipsoidFrame* frame) {
   const EllipsoidFrame& f = *frame;
   constexpr double kTwoPi = 2 * kPi<double>;
-  const Vec3<double>& h = f.ndf.lambda_h_dir();
-  const double rc = f.ndf.lambda_rho(), rs = std::sqrt((1 - rc) * (1 + rc));
-  const Vec3<double> t1 = Normalize(std::abs(h.x) < 0.9 ? Cross(h, Vec3<double>(1, 0, 0))
-                                                        : Cross(h, Vec3<double>(0, 1, 0)));
-  const Vec3<double> t2 = Cross(h, t1);
-  const Mat3<double> a_inv = f.ndf.inverse_transposed().Transposed();
+  const ClampEdge edge(f.ndf);
   auto psi_at = [&](double theta) {
-    const Vec3<double> a = h * rc + (t1 * std::cos(theta) + t2 * std::sin(theta)) * rs;
-    const Vec3<double> wi = Normalize(a_inv * a);
+    const Vec3<double> wi = edge.At(theta);
     const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
     const double sx = -m.x / m.z, sy = -m.y / m.z;
     const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
@@ -338,26 +377,12 @@ inline ClampRays ClampTangents(EllipsoidFrame* frame) {
     const double p0 = near(psi[km], psi[k]), p2 = near(psi[kp], psi[k]);
     const double sign = psi[k] > p0 && psi[k] >= p2 ? 1 : psi[k] < p0 && psi[k] <= p2 ? -1 : 0;
     if (sign == 0) continue;
-    // Golden-section search for the extremum of sign * psi in
-    // (theta_k-1, theta_k+1).
-    constexpr double kGolden = 0.6180339887498949;
+    // The extremum of sign * psi in (theta_k-1, theta_k+1).
     const double ref = psi[k];
     auto g = [&](double theta) { return sign * near(psi_at(theta), ref); };
-    double a = kTwoPi * (k - 1) / kClampProbes, b = kTwoPi * (k + 1) / kClampProbes;
-    double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
-    double gc = g(c), gd = g(d);
-    for (int it = 0; it < 40; ++it) {
-      if (gc > gd) {
-        b = d, d = c, gd = gc;
-        c = b - kGolden * (b - a);
-        gc = g(c);
-      } else {
-        a = c, c = d, gc = gd;
-        d = a + kGolden * (b - a);
-        gd = g(d);
-      }
-    }
-    out.push_back(sign * std::max(gc, gd));
+    const double t =
+        MaximizeGolden(g, kTwoPi * (k - 1) / kClampProbes, kTwoPi * (k + 1) / kClampProbes);
+    out.push_back(sign * g(t));
     probe.push_back(k);
   }
   // Where psi(theta) does not wind around s0 (s0 outside the clamped

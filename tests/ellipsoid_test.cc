@@ -666,5 +666,36 @@ TEST(EllipsoidAlbedoTest, TableHasNoAzimuthalSymmetry) {
               ta.integration_error + tg.integration_error);
 }
 
+// E_avg of tilted materials meets the tolerance (G1(wo)'s clamp puts a
+// kink in E over (mu, phi_o), which the rule cuts along), and agrees with
+// the same rule at 1e-8 within the claims. (A tensor rule over (mu, phi_o)
+// could only claim 8.3e-5 for the first material.)
+TEST(EllipsoidAlbedoTest, EavgOfTiltedMaterialsMeetsTheTolerance) {
+  constexpr double kDeg = kPi<double> / 180;
+  struct Case {
+    double ax, ay, tx, ty, tz;
+  };
+  for (const Case& c : {Case{0.3, 0.6, 20, 0, 30}, Case{0.5, 0.2, 45, -30, 0}}) {
+    BakeSpec spec;
+    spec.table = TableKind::kEavg;
+    spec.model.name = "ellipsoid";
+    spec.model.alpha_x = c.ax;
+    spec.model.alpha_y = c.ay;
+    spec.model.theta_x = c.tx * kDeg;
+    spec.model.theta_y = c.ty * kDeg;
+    spec.model.theta_z = c.tz * kDeg;
+    spec.tolerance = 1e-6;
+    const Table t = Bake(spec);
+    BakeSpec fine = spec;
+    fine.tolerance = 1e-8;
+    const Table f = Bake(fine);
+    EXPECT_LE(t.integration_error, 1e-6) << c.tx;
+    EXPECT_LE(f.integration_error, 1e-8) << c.tx;
+    EXPECT_NEAR(t.channels[0].values[0], f.channels[0].values[0],
+                t.integration_error + f.integration_error)
+        << c.tx;
+  }
+}
+
 }  // namespace
 }  // namespace brdfbake
