@@ -242,11 +242,11 @@ namespace {
 // azimuth numerically). Only E is filled for E and E_avg tables. `spec.simd`
 // picks the rules with their azimuthal nodes in double SIMD lanes.
 template <class Ndf>
-TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int max_nodes,
+TexelEstimate QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int max_nodes,
                          double tol) {
   const double m = std::max(mu, kMuMin);
   auto texel = [](const AzimuthalDfgResult& r) {
-    TexelValue v;
+    TexelEstimate v;
     v.e = r.e;
     v.bias = r.bias;
     v.scale = r.e - r.bias;
@@ -262,7 +262,7 @@ TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int ma
                              : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes));
     }
     const AzimuthalResult r = GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes);
-    TexelValue v;
+    TexelEstimate v;
     v.e = r.value;
     v.err_e = r.error;
     return v;
@@ -274,7 +274,7 @@ TexelValue QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int ma
 }
 
 template <class Ndf>
-TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t texel_seed) {
+TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t texel_seed) {
   const int n = spec.EffectiveSamples();
   switch (spec.integrator) {
     case IntegratorKind::kQuadrature:
@@ -286,15 +286,15 @@ TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t te
     case IntegratorKind::kEngine: {
       const QuadratureResult r = EngineRule(ndf, mu, spec.masking, n);
       if (!spec.estimate_error) {
-        TexelValue v;
+        TexelEstimate v;
         v.e = r.e;
         v.bias = r.fc;
         v.scale = r.e - r.fc;
         v.err_e = v.err_bias = v.err_scale = std::numeric_limits<double>::infinity();
         return v;
       }
-      const TexelValue ref = QuadratureFor(ndf, mu, spec, 512, 1e-10);
-      TexelValue v;
+      const TexelEstimate ref = QuadratureFor(ndf, mu, spec, 512, 1e-10);
+      TexelEstimate v;
       v.e = r.e;
       v.bias = r.fc;
       v.scale = r.e - r.fc;
@@ -308,7 +308,7 @@ TexelValue TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t te
   return {};
 }
 
-TexelValue Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
+TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
   if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   const std::string& m = spec.model.name;
   if (m == "ggx") return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
@@ -504,7 +504,7 @@ EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
   using Piece = GkPiece;
   auto piece = [&](double a, double b) {
     return KronrodPiece(a, b, 1.0, [&](double sv, double* err) {
-      const TexelValue v = e_at(sv * sv);
+      const TexelEstimate v = e_at(sv * sv);
       const double jac = 4 * sv * sv * sv;
       *err = jac * v.err_e;
       return jac * v.e;
@@ -531,7 +531,7 @@ EavgEstimate AdaptiveEavg(const EAt& e_at, double tolerance) {
 
 // ggx-aniso: E at one texel by the slope-plane rule (aniso_ggx.h); below
 // alpha_t = 1e-4 (hence alpha_b too) a mirror, as for ggx.
-TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, double phi) {
+TexelEstimate AnisoTexel(const BakeSpec& spec, double r, double s, double mu, double phi) {
   const double alpha_t = AnisotropyAlphaT(r, s);
   if (alpha_t < kMinAlpha<double>) return MirrorTexel(mu);
   const double m = std::max(mu, kMuMin);
@@ -540,7 +540,7 @@ TexelValue AnisoTexel(const BakeSpec& spec, double r, double s, double mu, doubl
                                      spec.EffectiveSamples())
                 : AnisoGgxAlbedo(alpha_t, r * r, m, phi, spec.masking, spec.tolerance,
                                  spec.EffectiveSamples());
-  TexelValue v;
+  TexelEstimate v;
   v.e = a.value;
   v.err_e = a.error;
   return v;
@@ -559,7 +559,7 @@ EavgEstimate HemisphericalEavg(const EAt& e_at, double phi_max, double tolerance
     auto piece = [&](double a, double b) {
       // The average over [0, phi_max].
       return KronrodPiece(a, b, 1 / phi_max, [&](double phi, double* err) {
-        const TexelValue v = e_at(mu, phi);
+        const TexelEstimate v = e_at(mu, phi);
         *err = v.err_e;
         return v.e;
       });
@@ -571,7 +571,7 @@ EavgEstimate HemisphericalEavg(const EAt& e_at, double phi_max, double tolerance
       return e;
     };
     while (rule_error() > tolerance / 3 && pieces.size() < 32) BisectWorst(&pieces, piece);
-    TexelValue v;
+    TexelEstimate v;
     for (const Piece& p : pieces) {
       v.e += p.value;
       v.err_e += p.err + p.prop;
@@ -591,7 +591,7 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
 
 // ellipsoid: E at (mu, phi_o) by the slope-plane rule (ellipsoid_albedo.h)
 // for the material in spec.model.
-TexelValue EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
+TexelEstimate EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
   const ModelParams& m = spec.model;
   const double mu_c = std::max(mu, kMuMin);
   const AzimuthalResult a =
@@ -599,7 +599,7 @@ TexelValue EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
                                       phi, spec.masking, spec.tolerance, spec.EffectiveSamples())
                 : EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
                                   phi, spec.masking, spec.tolerance, spec.EffectiveSamples());
-  TexelValue v;
+  TexelEstimate v;
   v.e = a.value;
   v.err_e = a.error;
   return v;
@@ -693,7 +693,7 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
     std::vector<GkPiece> pieces;
     // Pieces [a, b] of phi_o, their 15 values of E computed in parallel.
     auto evaluate = [&](const std::vector<std::pair<double, double>>& ab) {
-      std::vector<TexelValue> e(15 * ab.size());
+      std::vector<TexelEstimate> e(15 * ab.size());
       tbb::parallel_for(size_t(0), e.size(), [&](size_t k) {
         const double c = 0.5 * (ab[k / 15].first + ab[k / 15].second);
         const double h = 0.5 * (ab[k / 15].second - ab[k / 15].first);
@@ -773,7 +773,7 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
     double acc = 0, acc_err = 0;
     for (size_t k = 0; k < gl.x.size(); ++k) {
       const double sv = gl.x[k];
-      const TexelValue v =
+      const TexelEstimate v =
           Texel(spec, alpha, sv * sv, Mix64(spec.seed ^ Mix64((index << 20) + k + salt)));
       const double wk = 4 * gl.w[k] * sv * sv * sv;
       acc += wk * v.e;
@@ -992,7 +992,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
       const double mu = std::max(ax_mu.Value(x), ax_mu.clamp_min);
-      TexelValue v;
+      TexelEstimate v;
       if (ellipsoid) {
         v = EllipsoidTexel(spec, mu, spec.phi.Value(y));
       } else if (aniso) {
@@ -1083,7 +1083,7 @@ TexelEstimate ClampToRange(const TexelEstimate& v) {
 TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy,
                                   double mu, double phi_o) {
   ValidateBakeSpec(spec);
-  const TexelValue v = AnisoTexel(spec, roughness, anisotropy, mu, phi_o);
+  const TexelEstimate v = AnisoTexel(spec, roughness, anisotropy, mu, phi_o);
   return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
 }
 
@@ -1095,7 +1095,7 @@ EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double a
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed) {
   ValidateBakeSpec(spec);
-  const TexelValue v = Texel(spec, roughness * roughness, mu, Mix64(spec.seed ^ texel_seed));
+  const TexelEstimate v = Texel(spec, roughness * roughness, mu, Mix64(spec.seed ^ texel_seed));
   return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
 }
 

@@ -38,12 +38,6 @@
 
 namespace brdfbake {
 
-// The value of one texel: E and the two DFG terms, each with its estimated
-// absolute error.
-struct TexelValue {
-  double e = 0, scale = 0, bias = 0;
-  double err_e = 0, err_scale = 0, err_bias = 0;
-};
 
 // Sampler and integrand weight per distribution type.
 template <class Ndf>
@@ -213,9 +207,7 @@ inline constexpr double kLayerRelTol = 1e-3;
 
 // The integrand restricted to one line u2 = const of the quadrature's
 // square, as a function of t: Z(t) = wi.z and Eval(t) = (w, w Fc). Every
-// baked model uses the GGX disk (GgxDiskLines below).
-template <class Ndf>
-struct LineFamily;
+// baked model uses the GGX disk (GgxDiskLines below, LineFamily after it).
 
 // The GGX visible-normal sampler (seed 003, Listing 1) as the
 // parameterisation of the square, for GGX itself and for the other
@@ -331,17 +323,9 @@ struct GgxDiskLines {
   }
 };
 
-template <>
-struct LineFamily<GgxNdf<double>> : GgxDiskLines<GgxNdf<double>> {
-  using GgxDiskLines::GgxDiskLines;
-};
-template <>
-struct LineFamily<BeckmannNdf<double>> : GgxDiskLines<BeckmannNdf<double>> {
-  using GgxDiskLines::GgxDiskLines;
-};
-template <>
-struct LineFamily<StdNdf<double>> : GgxDiskLines<StdNdf<double>> {
-  using GgxDiskLines::GgxDiskLines;
+template <class Ndf>
+struct LineFamily : GgxDiskLines<Ndf> {
+  using GgxDiskLines<Ndf>::GgxDiskLines;
 };
 
 // One inner integral: the rule on [0, 1] in t along `line`, split at the
@@ -507,8 +491,8 @@ inline const GaussLegendre& CachedRule(int n) {
   return *cache[n];
 }
 
-inline TexelValue FromTwo(const QuadratureResult& fine, const QuadratureResult& coarse) {
-  TexelValue v;
+inline TexelEstimate FromTwo(const QuadratureResult& fine, const QuadratureResult& coarse) {
+  TexelEstimate v;
   v.e = fine.e;
   v.bias = fine.fc;
   v.scale = fine.e - fine.fc;
@@ -527,8 +511,8 @@ inline TexelValue FromTwo(const QuadratureResult& fine, const QuadratureResult& 
 inline constexpr double kMuMin = 1e-7;
 
 // Mirror (alpha below the clamp): h = n, E = 1, Fc = (1 - mu)^5.
-inline TexelValue MirrorTexel(double mu) {
-  TexelValue v;
+inline TexelEstimate MirrorTexel(double mu) {
+  TexelEstimate v;
   v.e = 1;
   v.bias = SchlickWeight(mu);
   v.scale = 1 - v.bias;
@@ -545,7 +529,7 @@ inline TexelValue MirrorTexel(double mu) {
 // rule does not yet resolve the lobe at small alpha. Closer steps (x4/3,
 // x3/2) need O(n^-2.4) for the same guarantee and under-claimed there.
 template <class Ndf>
-TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_nodes,
+TexelEstimate QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_nodes,
                            double tol) {
   const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
   const Integrand<Ndf> f(ndf, wo, masking);
@@ -563,7 +547,7 @@ TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_n
   static const int kLadder[] = {12, 24, 48, 96, 192, 384, 768, 1536, 3072, 4096};
   QuadratureResult prev =
       QuadratureRule(family, layer, grade_rim, kLadder[0], CachedRule(kLadder[0]), probes);
-  TexelValue v, v_prev;
+  TexelEstimate v, v_prev;
   for (int k = 1; k < int(std::size(kLadder)); ++k) {
     const int n = std::min(kLadder[k], std::max(max_nodes, kLadder[1]));
     const QuadratureResult cur =
@@ -594,7 +578,7 @@ TexelValue QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int max_n
 // n-point Hammersley set; the estimate is their mean and the error 4 times
 // the standard error of the mean.
 template <class Ndf>
-TexelValue QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uint64_t seed,
+TexelEstimate QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uint64_t seed,
                     bool plain_mc) {
   const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
   const Integrand<Ndf> f(ndf, wo, masking);
@@ -631,7 +615,7 @@ TexelValue QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uin
     const double var = std::max(0.0, (sum2 - replicas * mean * mean) / (replicas - 1));
     return 4.0 * std::sqrt(var / replicas);
   };
-  TexelValue v;
+  TexelEstimate v;
   v.e = sum_e / replicas;
   v.bias = sum_b / replicas;
   v.scale = sum_s / replicas;

@@ -35,7 +35,7 @@ void AgreesWithTheDisk(const char* name, const Ndf& ndf, double* worst,
   for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
     for (double mu : mus) {
       const AzimuthalDfgResult a = SlopeAzimuthalDfg(ndf, mu, masking, true, 1e-10, 4096);
-      const TexelValue q = QuadratureTexel(ndf, mu, masking, 4096, 1e-9);
+      const TexelEstimate q = QuadratureTexel(ndf, mu, masking, 4096, 1e-9);
       const double d[3] = {std::abs(a.e - q.e), std::abs(a.bias - q.bias),
                            std::abs((a.e - a.bias) - q.scale)};
       const double claims[3] = {a.err_e + q.err_e, a.err_bias + q.err_bias,

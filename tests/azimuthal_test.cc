@@ -83,7 +83,7 @@ TEST(AzimuthalTest, AgreesWithTheDiskQuadrature) {
     for (double alpha : {1e-4, 2e-3, 0.06, 0.25, 1.0}) {
       for (double mu : {1e-7, 1e-5, 0.02, 0.5, 0.999, 1.0}) {
         const AzimuthalResult a = GgxAzimuthalAlbedo(alpha, mu, masking, 1e-10, 4096);
-        const TexelValue q = QuadratureTexel(GgxNdf<double>(alpha), mu, masking, 4096, 1e-11);
+        const TexelEstimate q = QuadratureTexel(GgxNdf<double>(alpha), mu, masking, 4096, 1e-11);
         const double diff = std::abs(a.value - q.e);
         worst = std::max(worst, diff);
         worst_claim = std::max(worst_claim, a.error);
@@ -130,7 +130,7 @@ TEST(AzimuthalTest, DfgAgreesWithTheDiskQuadrature) {
     for (double alpha : {0.01, 0.06, 0.25, 1.0}) {
       for (double mu : {1e-7, 1e-5, 0.02, 0.5, 0.999, 1.0}) {
         const AzimuthalDfgResult a = GgxAzimuthalDfg(alpha, mu, masking, 1e-10, 4096);
-        const TexelValue q = QuadratureTexel(GgxNdf<double>(alpha), mu, masking, 4096, 1e-11);
+        const TexelEstimate q = QuadratureTexel(GgxNdf<double>(alpha), mu, masking, 4096, 1e-11);
         const double d[3] = {std::abs(a.e - q.e), std::abs(a.bias - q.bias),
                              std::abs((a.e - a.bias) - q.scale)};
         const double claims[3] = {a.err_e + q.err_e, a.err_bias + q.err_bias,
