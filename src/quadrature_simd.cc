@@ -292,8 +292,8 @@ struct SimdEllipsoidNodes {
         const V omx2s = hn::IfThenElse(ok1, omx2, one);
         const V rho_n = hn::Div(x, hn::Sqrt(omx2s));
         // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz lin /
-        // N^2 from one division: r = 1 / (den_hi den_lo N^2), with the
-        // differences as quotients num / den as in EllipsoidRay::WiAt.
+        // N^2 as in EllipsoidRay::WiAt, the differences as quotients
+        // num / den: r = 1 / (den_hi den_lo N^2) is their common factor.
         const V num_hi = hn::Mul(y, hn::Sub(hn::Mul(two, x_hi), y));
         const V den_hi = hn::Mul(hn::Mul(omx2_hi, omx2s), hn::Add(rho_plus, rho_n));
         const V num_lo =
@@ -303,12 +303,16 @@ struct SimdEllipsoidNodes {
         const V p = hn::MulAdd(rho_n, ex, s0x), q = hn::MulAdd(rho_n, ey, s0y);
         const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, one));
         const V lin = hn::MulAdd(q, cy, hn::MulAdd(p, cx, one));
+        // wi times 1 / r = den_hi den_lo N^2 > 0, without a division:
+        // Lambda is homogeneous of degree 0 in wi, and so is G2 below in
+        // (wi.z dd, nn), so the scale drops out.
         const V dens = hn::Mul(den_hi, den_lo);
-        const V r = hn::Div(one, hn::Mul(dens, n2));
-        const V wiz = hn::Mul(hn::Mul(wz_ee, hn::Mul(num_hi, num_lo)), r);
+        const V dn = hn::Mul(dens, n2);
+        const V wiz = hn::Mul(wz_ee, hn::Mul(num_hi, num_lo));
         const auto ok = hn::And(ok1, hn::And(hn::Gt(wiz, zero), hn::Gt(lin, zero)));
-        const V kk = hn::Mul(hn::Mul(two_wz, lin), hn::Mul(dens, r));
-        const V wix = hn::Neg(hn::MulAdd(kk, p, wx)), wiy = hn::Neg(hn::MulAdd(kk, q, wy));
+        const V kk = hn::Mul(hn::Mul(two_wz, lin), dens);
+        const V wix = hn::Neg(hn::MulAdd(kk, p, hn::Mul(wx, dn)));
+        const V wiy = hn::Neg(hn::MulAdd(kk, q, hn::Mul(wy, dn)));
         // Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda
         // (0 where nn <= 0, the clamp), and G2 from it with one division:
         // 1 / (1 + Lambda_o + Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd +
