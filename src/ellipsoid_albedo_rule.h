@@ -50,8 +50,6 @@ struct EllipsoidFrame : SlopeView {
   // The rays that can cross the clamp's edge: psi - kink_psi0 in
   // [0, kink_psi_range] (mod 2 pi); all of them by default.
   double kink_psi0 = 0, kink_psi_range = 2 * kPi<double>;
-  // G1's clamp (ellipsoid.h): Lambda(w) = 0 where this is <= 0.
-  double Kink(const Vec3<double>& w) const { return ndf.ClampMargin(w); }
 
   EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi)
       : SlopeView(mu, phi), ndf(n) {}
