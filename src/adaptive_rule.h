@@ -70,6 +70,17 @@ void BisectWorst(std::vector<Piece>* pieces, const Make& make) {
   pieces->push_back(make(m, p.b));
 }
 
+// A rule's result from its final pieces: their values summed in order,
+// and the error `err` plus the rounding of that sum.
+template <class Piece>
+AzimuthalResult SumOfPieces(const std::vector<Piece>& pieces, double err) {
+  AzimuthalResult out;
+  for (const Piece& p : pieces) out.value += p.value;
+  out.error = err + 4e-16 * out.value;
+  out.pieces = static_cast<int>(pieces.size());
+  return out;
+}
+
 // The integral over psi in [psi0, psi0 + 2 pi) of ray(psi, &err) / (2 pi).
 // Quarter turns from psi0 (and psi0 + pi, the two "feature" rays), graded
 // geometrically (ratio 4, from pi/8) towards those two rays down to
@@ -112,11 +123,7 @@ AzimuthalResult PsiRule(const Ray& ray, double psi0, double delta, double tol, i
     BisectWorst(&pieces, piece);
     err = total_error();
   }
-  AzimuthalResult out;
-  for (const GkPiece& p : pieces) out.value += p.value;
-  out.error = err + 4e-16 * out.value;
-  out.pieces = static_cast<int>(pieces.size());
-  return out;
+  return SumOfPieces(pieces, err);
 }
 
 // One interval [a, b] of psi for SegmentRule. An end is `singular` where
@@ -220,11 +227,7 @@ AzimuthalResult SegmentRule(const Ray& ray, const std::vector<PsiSegment>& segme
     pieces.push_back(make(p.segment, m, p.b));
     err = total_error();
   }
-  AzimuthalResult out;
-  for (const Piece& p : pieces) out.value += p.value;
-  out.error = err + 4e-16 * out.value;
-  out.pieces = static_cast<int>(pieces.size());
-  return out;
+  return SumOfPieces(pieces, err);
 }
 
 }  // namespace brdfbake
