@@ -626,48 +626,35 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
   const EllipsoidNdf<double> ndf(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z);
   const bool clamped = ndf.lambda_rho() < 1;
   const ClampEdge edge(ndf);
-  // cos(theta_o) along the edge, on kEdgeProbes points and its refined
-  // extremes, in theta order.
+  // (theta, cos(theta_o)) along the edge, on kEdgeProbes points and its
+  // refined extremes, in theta order.
   constexpr int kEdgeProbes = 64;
-  std::vector<double> theta, mu;
+  std::vector<std::pair<double, double>> edge_points;
   std::vector<double> s_cuts;
   if (clamped) {
+    auto mu_at = [&](double th) { return edge.At(th).z; };
     std::vector<double> probe(kEdgeProbes);
-    for (int k = 0; k < kEdgeProbes; ++k) probe[k] = edge.At(kTwoPi * k / kEdgeProbes).z;
     for (int k = 0; k < kEdgeProbes; ++k) {
-      theta.push_back(kTwoPi * k / kEdgeProbes);
-      mu.push_back(probe[k]);
-      const double p0 = probe[(k + kEdgeProbes - 1) % kEdgeProbes], p2 = probe[(k + 1) % kEdgeProbes];
-      const double sign = probe[k] > p0 && probe[k] >= p2 ? 1 : probe[k] < p0 && probe[k] <= p2 ? -1 : 0;
-      if (sign == 0) continue;
-      const double t = MaximizeGolden([&](double th) { return sign * edge.At(th).z; },
-                                      kTwoPi * (k - 1) / kEdgeProbes, kTwoPi * (k + 1) / kEdgeProbes);
-      const double mu_x = edge.At(t).z;
-      if (mu_x > 0 && mu_x < 1) s_cuts.push_back(std::sqrt(mu_x));
-      // Inserted in theta order (t within a probe step of theta_k).
-      const double tw = t < 0 ? t + kTwoPi : t >= kTwoPi ? t - kTwoPi : t;
-      theta.push_back(tw);
-      mu.push_back(mu_x);
+      probe[k] = mu_at(kTwoPi * k / kEdgeProbes);
+      edge_points.push_back({kTwoPi * k / kEdgeProbes, probe[k]});
     }
-    std::vector<size_t> order(theta.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return theta[a] < theta[b]; });
-    std::vector<double> t2, m2;
-    for (size_t i : order) {
-      t2.push_back(theta[i]);
-      m2.push_back(mu[i]);
+    for (const EdgeExtreme& e : ExtremesOnEdge(mu_at, probe, [](double v, double) { return v; })) {
+      if (e.value > 0 && e.value < 1) s_cuts.push_back(std::sqrt(e.value));
+      // (t is within a probe step of [0, 2 pi).)
+      const double t =
+          e.theta < 0 ? e.theta + kTwoPi : e.theta >= kTwoPi ? e.theta - kTwoPi : e.theta;
+      edge_points.push_back({t, e.value});
     }
-    theta = t2;
-    mu = m2;
+    std::sort(edge_points.begin(), edge_points.end());
   }
   // The phi_o in [0, 2 pi) where the edge crosses cos(theta_o) = mu0, ascending.
   auto crossings = [&](double mu0) {
     std::vector<double> phis;
-    const size_t n = theta.size();
+    const size_t n = edge_points.size();
     for (size_t k = 0; k < n; ++k) {
       const size_t k1 = (k + 1) % n;
-      const double a = theta[k], b = k1 == 0 ? theta[0] + kTwoPi : theta[k1];
-      const double da = mu[k] - mu0, db = mu[k1] - mu0;
+      const double a = edge_points[k].first, b = edge_points[k1].first + (k1 == 0 ? kTwoPi : 0.0);
+      const double da = edge_points[k].second - mu0, db = edge_points[k1].second - mu0;
       if (da == 0 || db == 0 || (da > 0) == (db > 0)) continue;
       const double t = SolveBracketed([&](double th) { return edge.At(th).z - mu0; }, a, b, da, db,
                                       1e-13);

@@ -349,12 +349,42 @@ class ClampEdge {
   Vec3<double> t1_, t2_;
 };
 
+// The local extremes of a smooth function g(theta), periodic on [0, 2 pi),
+// bracketed on its values at n = values.size() probes theta_k = 2 pi k / n
+// and refined by golden-section search in (theta_k-1, theta_k+1).
+// near(v, ref) is v as compared with ref: v itself, or an angle unwrapped
+// to within pi of ref.
+struct EdgeExtreme {
+  double theta, value;
+  int probe;  // k
+};
+template <class G, class Near>
+std::vector<EdgeExtreme> ExtremesOnEdge(const G& g, const std::vector<double>& values,
+                                        const Near& near) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  const int n = static_cast<int>(values.size());
+  std::vector<EdgeExtreme> out;
+  for (int k = 0; k < n; ++k) {
+    const double v = values[k];
+    const double p0 = near(values[(k + n - 1) % n], v), p2 = near(values[(k + 1) % n], v);
+    const double sign = v > p0 && v >= p2 ? 1 : v < p0 && v <= p2 ? -1 : 0;
+    if (sign == 0) continue;
+    auto signed_g = [&](double theta) { return sign * near(g(theta), v); };
+    const double t = MaximizeGolden(signed_g, kTwoPi * (k - 1) / n, kTwoPi * (k + 1) / n);
+    out.push_back({t, sign * signed_g(t), k});
+  }
+  return out;
+}
+
+// The rays from s0 that need cuts over psi: those tangent to G1's clamp
+// edge and the glancing ones (below), and the psi range [psi0, psi0 +
+// range] (mod 2 pi) outside which no ray meets the edge.
 struct ClampRays {
   std::vector<double> tangents;
   std::vector<double> glancing, glancing_width;
+  double psi0 = 0, range = 2 * kPi<double>;
 };
-inline ClampRays ClampTangents(EllipsoidFrame* frame) {
-  const EllipsoidFrame& f = *frame;
+inline ClampRays ClampTangents(const EllipsoidFrame& f) {
   constexpr double kTwoPi = 2 * kPi<double>;
   const ClampEdge edge(f.ndf);
   auto psi_at = [&](double theta) {
@@ -366,23 +396,10 @@ inline ClampRays ClampTangents(EllipsoidFrame* frame) {
   };
   // psi(theta) unwrapped relative to a reference angle.
   auto near = [&](double psi, double ref) { return ref + std::remainder(psi - ref, kTwoPi); };
-  double psi[kClampProbes];
+  std::vector<double> psi(kClampProbes);
   for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_at(kTwoPi * k / kClampProbes);
-  std::vector<double> out;
-  std::vector<int> probe;  // the probe each tangent was found next to
-  for (int k = 0; k < kClampProbes; ++k) {
-    const int km = (k + kClampProbes - 1) % kClampProbes, kp = (k + 1) % kClampProbes;
-    const double p0 = near(psi[km], psi[k]), p2 = near(psi[kp], psi[k]);
-    const double sign = psi[k] > p0 && psi[k] >= p2 ? 1 : psi[k] < p0 && psi[k] <= p2 ? -1 : 0;
-    if (sign == 0) continue;
-    // The extremum of sign * psi in (theta_k-1, theta_k+1).
-    const double ref = psi[k];
-    auto g = [&](double theta) { return sign * near(psi_at(theta), ref); };
-    const double t =
-        MaximizeGolden(g, kTwoPi * (k - 1) / kClampProbes, kTwoPi * (k + 1) / kClampProbes);
-    out.push_back(sign * g(t));
-    probe.push_back(k);
-  }
+  const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
+  ClampRays rays;
   // Where psi(theta) does not wind around s0 (s0 outside the clamped
   // region), only the rays between its extremes meet the edge: the
   // unwrapped range of psi, widened by 1e-9 against rounding.
@@ -397,16 +414,15 @@ inline ClampRays ClampTangents(EllipsoidFrame* frame) {
       lo = std::min(lo, unwrapped[k]);
       hi = std::max(hi, unwrapped[k]);
     }
-    for (size_t i = 0; i < out.size(); ++i) {
-      const double o = unwrapped[probe[i]] + std::remainder(out[i] - psi[probe[i]], kTwoPi);
+    for (const EdgeExtreme& e : extremes) {
+      const double o = unwrapped[e.probe] + std::remainder(e.value - psi[e.probe], kTwoPi);
       lo = std::min(lo, o);
       hi = std::max(hi, o);
     }
-    frame->kink_psi0 = psi[0] + lo - 1e-9;
-    frame->kink_psi_range = hi - lo + 2e-9;
+    rays.psi0 = psi[0] + lo - 1e-9;
+    rays.range = hi - lo + 2e-9;
   }
-  ClampRays rays;
-  rays.tangents = out;
+  for (const EdgeExtreme& e : extremes) rays.tangents.push_back(e.value);
   // Glancing rays: where the edge runs nearly along the rays without
   // turning back (a local minimum of the step of psi between probes, below
   // a quarter of the mean step, the steps around it of one sign), the kink
@@ -548,7 +564,9 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     }
   };
   if (f.clamped) {
-    const ClampRays rays = ClampTangents(&f);
+    const ClampRays rays = ClampTangents(f);
+    f.kink_psi0 = rays.psi0;
+    f.kink_psi_range = rays.range;
     for (double t : rays.tangents) cut(t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
       cut(rays.glancing[i], false, rays.glancing_width[i]);

@@ -73,7 +73,7 @@ inline int PolyRootsIn(const double* c, int n, double lo, double hi, double tol,
     const double disc = c[1] * c[1] - 4 * c[0] * c[2];
     if (!(disc > 0)) return 0;
     const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
-    double r1 = q / c[2], r2 = q != 0 ? c[0] / q : -r1;
+    double r1 = q / c[2], r2 = c[0] / q;  // q != 0: disc > 0
     if (r1 > r2) std::swap(r1, r2);
     int m = 0;
     for (double r : {r1, r2}) {

@@ -274,8 +274,9 @@ struct SimdEllipsoidNodes {
     const V rho_v = hn::Set(d, rho), rho2 = hn::Set(d, rho * rho);
     const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
     const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
+    const V tiny = hn::Set(d, std::numeric_limits<double>::min());
     // Piece by piece; the pieces are independent, so their dependency
-    // chains (two square roots and three divisions deep) overlap.
+    // chains (two square roots and two divisions deep) overlap.
     for (int j = 0; j < n; ++j) {
       const V cv = hn::Set(d, 0.5 * (a[j] + b[j])), hv = hn::Set(d, 0.5 * (b[j] - a[j]));
       V ks = zero, gsum = zero;
@@ -332,7 +333,6 @@ struct SimdEllipsoidNodes {
         const V wiz_dd = hn::Mul(hn::IfThenElse(ok, wiz, one), dd);
         const V nn_scale = hn::Mul(hn::ZeroIfNegative(nn), lscale);
         // (Kept off 0 / 0 where wi.z dd underflows.)
-        const V tiny = hn::Set(d, std::numeric_limits<double>::min());
         const V g2 = f.separable
                          ? hn::Div(hn::Mul(g1o, wiz_dd), hn::Max(hn::Add(wiz_dd, nn_scale), tiny))
                          : hn::Div(wiz_dd, hn::Max(hn::MulAdd(lambda_o1, wiz_dd, nn_scale), tiny));
