@@ -34,7 +34,7 @@ struct BakeCase {
 void BM_Bake(benchmark::State& state, BakeCase c) {
   BakeSpec spec;
   spec.table = c.table;
-  spec.model.name = c.model;
+  spec.model.kind = ParseModelKind(c.model);
   spec.model.gamma = c.gamma;
   spec.simd = c.simd;
   spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
@@ -122,7 +122,7 @@ void TimeBake(benchmark::State& state, const BakeSpec& spec) {
 void BM_BakeAniso(benchmark::State& state, TableKind table) {
   BakeSpec spec;
   spec.table = table;
-  spec.model.name = "ggx-aniso";
+  spec.model.kind = ModelKind::kGgxAniso;
   spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
   spec.phi.size = spec.anisotropy.size = static_cast<int>(state.range(0)) / 2;
   spec.threads = static_cast<int>(state.range(1));
@@ -138,7 +138,7 @@ BENCHMARK_CAPTURE(BM_BakeAniso, E_avg/ggx-aniso/simd/8x4, TableKind::kEavg)
 void BM_BakeEllipsoid(benchmark::State& state, TableKind table) {
   BakeSpec spec;
   spec.table = table;
-  spec.model.name = "ellipsoid";
+  spec.model.kind = ModelKind::kEllipsoid;
   spec.model.alpha_x = 0.3;
   spec.model.alpha_y = 0.6;
   spec.model.theta_x = 20 * 3.14159265358979323846 / 180;

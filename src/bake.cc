@@ -149,26 +149,28 @@ int BakeSpec::EffectiveSamples() const {
 void ValidateBakeSpec(const BakeSpec& spec) {
   const bool aniso = spec.Anisotropic();
   ModelParams params = spec.model;
-  if (aniso) params.name = "ggx";  // its widths come from the axes
+  if (aniso) params.kind = ModelKind::kGgx;  // its widths come from the axes
   ValidateModelParams(params);
-  const std::string& m = spec.model.name;
+  const ModelKind m = spec.model.kind;
   const bool sel = spec.table == TableKind::kSelNorm;
-  if (sel != (m == "sel")) {
+  if (sel != (m == ModelKind::kSel)) {
     Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
             : "--model sel: its table is sel_norm (--table sel_norm)");
   }
   if (sel && (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
     Bad("--table sel_norm: the quadrature only, without --complement");
   }
-  const bool ellipsoid = m == "ellipsoid";
+  const bool ellipsoid = m == ModelKind::kEllipsoid;
   if (ellipsoid && spec.table == TableKind::kDfg) {
     Bad("--table: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
   }
   if (ellipsoid && spec.integrator != IntegratorKind::kQuadrature) {
     Bad("--integrator: ellipsoid tables are baked with the quadrature only");
   }
-  if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !sel && !ellipsoid) {
-    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" + m + "')");
+  if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso &&
+      !sel && !ellipsoid) {
+    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" +
+        std::string(spec.model.name()) + "')");
   }
   if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
   if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
@@ -207,7 +209,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   if (spec.HasGammaAxis()) {
     const Axis& g = spec.gamma;
-    if (m != "std") Bad("--size: only std has a gamma axis (got model '" + m + "')");
+    if (m != ModelKind::kStudentT) {
+      Bad("--size: only std has a gamma axis (got model '" + std::string(spec.model.name()) + "')");
+    }
     if (g.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (g.placement == Placement::kEdges && g.size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
@@ -310,20 +314,20 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
 
 TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
   if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
-  const std::string& m = spec.model.name;
-  if (m == "ggx") return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
+  const ModelKind m = spec.model.kind;
+  if (m == ModelKind::kGgx) return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
 #if BRDFBAKE_WITH_BECKMANN
-  if (m == "beckmann") return TexelFor(BeckmannNdf<double>(alpha), mu, spec, texel_seed);
+  if (m == ModelKind::kBeckmann) return TexelFor(BeckmannNdf<double>(alpha), mu, spec, texel_seed);
 #endif
 #if BRDFBAKE_WITH_STD
-  if (m == "std") return TexelFor(StdNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
+  if (m == ModelKind::kStudentT) return TexelFor(StdNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
 #endif
   return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);  // ValidateBakeSpec admits no other
 }
 
 std::string ModelJson(const BakeSpec& spec) {
   nlohmann::json j;
-  j["name"] = spec.model.name;
+  j["name"] = spec.model.name();
   if (spec.table == TableKind::kSelNorm) {
     j["definition"] = "squared ellipsoidal lobe K(w; Q, alpha_x, alpha_y) of seed 002; its "
                       "integral does not depend on Q";
@@ -331,7 +335,7 @@ std::string ModelJson(const BakeSpec& spec) {
                        "N / (4 pi alpha_x alpha_y) -> 1";
     return j.dump();
   }
-  if (spec.model.name == "ellipsoid") {
+  if (spec.model.kind == ModelKind::kEllipsoid) {
     const ModelParams& p = spec.model;
     j["alpha_x"] = p.alpha_x;
     j["alpha_y"] = p.alpha_y;
@@ -354,9 +358,9 @@ std::string ModelJson(const BakeSpec& spec) {
     return j.dump();
   }
   j["alpha"] = "roughness^2";
-  if (spec.model.name == "std" && spec.HasGammaAxis()) {
+  if (spec.model.kind == ModelKind::kStudentT && spec.HasGammaAxis()) {
     j["gamma"] = "the gamma axis (brdfbake.axes); its last value inf is beckmann";
-  } else if (spec.model.name == "std") {
+  } else if (spec.model.kind == ModelKind::kStudentT) {
     if (std::isinf(spec.model.gamma)) j["gamma"] = "inf"; else j["gamma"] = spec.model.gamma;
     if (std::isfinite(spec.model.gamma) && spec.model.gamma >= kStdBeckmannLimitGamma) {
       j["evaluated_as"] = "beckmann (the limit gamma -> inf; gamma >= 1e20 agrees with it to double precision)";
@@ -387,7 +391,7 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "sum of |K15 - G7| of both rules");
         break;
       }
-      if (spec.model.name == "ellipsoid" || spec.Anisotropic()) {
+      if (spec.model.kind == ModelKind::kEllipsoid || spec.Anisotropic()) {
         describe(spec.Anisotropic()
                      ? "the slope plane of the half vector, in the stretched polar coordinates "
                        "(psi, u = rho^2 / (1 + rho^2)) in which the GGX slope density is uniform; "
@@ -409,7 +413,7 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "carried through the Kronrod weights");
         break;
       }
-      if (spec.model.name == "ggx" && spec.table != TableKind::kDfg) {
+      if (spec.model.kind == ModelKind::kGgx && spec.table != TableKind::kDfg) {
         j["domain"] = "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
                       "(isotropic GGX); mesh graded geometrically (ratio 3) from the specular "
                       "peak (scale 2 alpha) and the horizon";
@@ -418,7 +422,7 @@ std::string IntegratorJson(const BakeSpec& spec) {
         j["error_estimate"] = "sum over the pieces of |K15 - G7|";
         break;
       }
-      if (spec.model.name == "ggx") {
+      if (spec.model.kind == ModelKind::kGgx) {
         j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
                       "specular peak and the horizon; the azimuth of wi integrated in closed "
                       "form for E and for the even powers of wo.h in the Schlick weight, the "
@@ -460,7 +464,7 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["error_estimate"] = "difference from the converged quadrature (tolerance 1e-10) plus its error";
       break;
   }
-  if (spec.table == TableKind::kEavg && spec.model.name == "ellipsoid") {
+  if (spec.table == TableKind::kEavg && spec.model.kind == ModelKind::kEllipsoid) {
     j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = int_0^1 4 s^3 A(s) ds, s = sqrt(mu), by "
                  "adaptive Gauss-Kronrod 15 in s cut where G1(wo)'s clamp edge has extreme mu, A(s) "
                  "the average of E over phi_o in [0, 2 pi) by adaptive Gauss-Kronrod 15 on the arcs "
@@ -790,7 +794,7 @@ int ValueChannels(const BakeSpec& spec) {
 }
 
 int64_t TexelCount(const BakeSpec& spec) {
-  if (spec.model.name == "ellipsoid") {
+  if (spec.model.kind == ModelKind::kEllipsoid) {
     return spec.table == TableKind::kEavg ? 1 : int64_t(spec.mu.size) * spec.phi.size;
   }
   if (spec.table == TableKind::kSelNorm) return int64_t(spec.alpha_x.size) * spec.alpha_y.size;
@@ -893,7 +897,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     t.width = spec.alpha_x.size;
     t.height = spec.alpha_y.size;
   }
-  const bool ellipsoid = spec.model.name == "ellipsoid";
+  const bool ellipsoid = spec.model.kind == ModelKind::kEllipsoid;
   if (ellipsoid) {
     t.axes.clear();
     t.width = t.height = 1;

@@ -34,9 +34,9 @@ const std::vector<std::string>& EvalQuantities() {
 bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg"; }
 
 void ValidateEvalRequest(const EvalRequest& req) {
-  const bool aniso = req.model.name == "ggx-aniso";
+  const bool aniso = req.model.kind == ModelKind::kGgxAniso;
   ModelParams params = req.model;
-  if (aniso) params.name = "ggx";  // the widths come from roughness and anisotropy
+  if (aniso) params.kind = ModelKind::kGgx;  // the widths come from roughness and anisotropy
   ValidateModelParams(params);
   if (aniso && !(req.anisotropy >= 0 && req.anisotropy <= 1)) {
     Bad("--anisotropy must lie in [0, 1] (the KHR_materials_anisotropy strength)");
@@ -52,9 +52,11 @@ void ValidateEvalRequest(const EvalRequest& req) {
     }
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
-      const std::string& m = req.model.name;
-      const bool ellipsoid = m == "ellipsoid";
-      if (m != "ggx" && m != "beckmann" && m != "std" && !aniso && !ellipsoid) {
+      const ModelKind kind = req.model.kind;
+      const std::string m = req.model.name();
+      const bool ellipsoid = kind == ModelKind::kEllipsoid;
+      if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
+          !aniso && !ellipsoid) {
         Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std and ellipsoid only (got '" + m + "')");
       }
       if ((aniso || ellipsoid) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
@@ -73,7 +75,7 @@ void ValidateEvalRequest(const EvalRequest& req) {
       Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
           "direction (got '" + q + "')");
     }
-    const bool is_sel = req.model.name == "sel";
+    const bool is_sel = req.model.kind == ModelKind::kSel;
     if (is_sel != (q == "K")) {
       Bad(is_sel ? "--quantity: model sel has only the quantity K"
                  : "--quantity: K is defined for model sel only");
@@ -121,7 +123,7 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
   BakeSpec spec;
   spec.model = req.model;
   spec.masking = req.masking;
-  if (spec.model.name == "ellipsoid") {
+  if (spec.model.kind == ModelKind::kEllipsoid) {
     // The material's E at the view (mu, --phi-o), or its E_avg.
     spec.table = q == "E_avg" ? TableKind::kEavg : TableKind::kE;
     if (q == "E_avg") {
@@ -163,7 +165,7 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
   const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
   // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
   const std::unique_ptr<Model> model =
-      req.model.name == "ggx-aniso" ? nullptr : MakeModel(req.model);
+      req.model.kind == ModelKind::kGgxAniso ? nullptr : MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 

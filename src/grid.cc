@@ -97,7 +97,7 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
 
 void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
-  if (req.model.name == "sel") throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
+  if (req.model.kind == ModelKind::kSel) throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
   if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
     throw std::invalid_argument("--width/--height must be in [1, 16384]");
   }
@@ -198,23 +198,23 @@ Grid EvalGrid(const GridRequest& req) {
   tbb::parallel_for(0, req.height, [&](int y) {
     const RowDirs r = MakeRow(req, y);
     float* out = g.values.data() + size_t(y) * req.width;
-    const std::string& name = req.model.name;
+    const ModelKind kind = req.model.kind;
     if (req.kind == GridKind::kG1) {
       const double rough = (y + 0.5) / req.height;
       const float a = float(std::max(rough * rough, 1e-4));
       if (simd) {
-        if (name == "ggx") {
+        if (kind == ModelKind::kGgx) {
           GgxBatchParams p;
           p.alpha_x = p.alpha_y = a;
           GgxG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
 #if BRDFBAKE_WITH_BECKMANN
-        } else if (name == "beckmann") {
+        } else if (kind == ModelKind::kBeckmann) {
           BeckmannBatchParams p;
           p.alpha_x = p.alpha_y = a;
           BeckmannG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
 #endif
 #if BRDFBAKE_WITH_STD
-        } else if (name == "std") {
+        } else if (kind == ModelKind::kStudentT) {
           StdBatchParams p;
           p.alpha_x = p.alpha_y = a;
           p.gamma = float(req.model.gamma);
@@ -242,7 +242,7 @@ Grid EvalGrid(const GridRequest& req) {
     }
     if (simd) {
       const float ax = float(req.model.alpha_x), ay = float(req.model.alpha_y);
-      if (name == "ggx") {
+      if (kind == ModelKind::kGgx) {
         GgxBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;
@@ -251,7 +251,7 @@ Grid EvalGrid(const GridRequest& req) {
         GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
 #if BRDFBAKE_WITH_BECKMANN
-      } else if (name == "beckmann") {
+      } else if (kind == ModelKind::kBeckmann) {
         BeckmannBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;
@@ -261,7 +261,7 @@ Grid EvalGrid(const GridRequest& req) {
                           r.oz.data(), out, req.width);
 #endif
 #if BRDFBAKE_WITH_STD
-      } else if (name == "std") {
+      } else if (kind == ModelKind::kStudentT) {
         StdBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;

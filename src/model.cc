@@ -117,18 +117,18 @@ class SelModel : public Model {
 }  // namespace
 
 double Model::K(const Vec3<double>&) const {
-  Bad("quantity K is defined for model sel only; model " + params().name + " has D, Lambda, G1, G2, brdf, pdf");
+  Bad("quantity K is defined for model sel only; model " + std::string(params().name()) + " has D, Lambda, G1, G2, brdf, pdf");
 }
 
 std::string ModelParams::ToJson() const {
   nlohmann::json j;
-  j["name"] = name;
+  j["name"] = name();
   j["alpha_x"] = alpha_x;
   j["alpha_y"] = alpha_y;
-  if (name == "std") {
+  if (kind == ModelKind::kStudentT) {
     if (std::isinf(gamma)) j["gamma"] = "inf"; else j["gamma"] = gamma;
   }
-  if (name == "ellipsoid" || name == "sel") {
+  if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
     j["theta_x"] = theta_x;
     j["theta_y"] = theta_y;
     j["theta_z"] = theta_z;
@@ -138,48 +138,82 @@ std::string ModelParams::ToJson() const {
 
 const std::vector<ModelInfo>& Models() {
   static const std::vector<ModelInfo> kModels = {
-      {"ggx", "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from seed 003"},
+      {ModelKind::kGgx, "ggx", "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from seed 003"},
 #if BRDFBAKE_WITH_BECKMANN
-      {"beckmann", "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
+      {ModelKind::kBeckmann, "beckmann", "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
 #endif
 #if BRDFBAKE_WITH_STD
-      {"std", "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, seed 004; gamma=2 is ggx, inf is beckmann"},
+      {ModelKind::kStudentT, "std", "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, seed 004; gamma=2 is ggx, inf is beckmann"},
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID
-      {"ellipsoid", "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, seed 000; A = S Rx Ry Rz"},
+      {ModelKind::kEllipsoid, "ellipsoid", "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, seed 000; A = S Rx Ry Rz"},
 #endif
 #if BRDFBAKE_WITH_SEL
-      {"sel", "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), seed 002"},
+      {ModelKind::kSel, "sel", "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), seed 002"},
 #endif
   };
   return kModels;
 }
 
-bool ModelBuilt(const std::string& name) {
+namespace {
+
+constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
+                                ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso};
+
+std::string BuiltModels() {
+  std::string built;
+  for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(m.name);
+  return built;
+}
+
+}  // namespace
+
+const char* ModelName(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::kGgx: return "ggx";
+    case ModelKind::kBeckmann: return "beckmann";
+    case ModelKind::kStudentT: return "std";
+    case ModelKind::kEllipsoid: return "ellipsoid";
+    case ModelKind::kSel: return "sel";
+    case ModelKind::kGgxAniso: return "ggx-aniso";
+  }
+  return "ggx";
+}
+
+ModelKind ParseModelKind(const std::string& name) {
+  for (ModelKind k : kKinds) {
+    if (name == ModelName(k)) return k;
+  }
+  Bad("unknown model '" + name + "' (expected " + BuiltModels() + ")");
+}
+
+bool ModelBuilt(ModelKind kind) {
+  if (kind == ModelKind::kGgxAniso) kind = ModelKind::kGgx;
   for (const ModelInfo& m : Models()) {
-    if (name == m.name) return true;
+    if (kind == m.kind) return true;
   }
   return false;
 }
 
 void ValidateModelParams(const ModelParams& p) {
-  if (!ModelBuilt(p.name)) {
-    std::string built;
-    for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(m.name);
-    const bool family = p.name == "beckmann" || p.name == "std" || p.name == "ellipsoid" || p.name == "sel";
-    Bad(family ? "model '" + p.name + "' is not in this build (BRDFBAKE_MODELS; built: " + built + ")"
-               : "unknown model '" + p.name + "' (expected " + built + ")");
+  if (p.kind == ModelKind::kGgxAniso) {
+    Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval --quantity "
+        "E); for its BRDF give --model ggx with --alpha-x and --alpha-y");
+  }
+  if (!ModelBuilt(p.kind)) {
+    Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
+        BuiltModels() + ")");
   }
   CheckAlpha("alpha_x", p.alpha_x);
   CheckAlpha("alpha_y", p.alpha_y);
-  if (p.name == "std") {
+  if (p.kind == ModelKind::kStudentT) {
     if (std::isnan(p.gamma) || !(p.gamma > 1.5)) {
       std::ostringstream os;
       os << "gamma must be > 1.5 or inf (got " << p.gamma << ")";
       Bad(os.str());
     }
   }
-  if (p.name == "ellipsoid" || p.name == "sel") {
+  if (p.kind == ModelKind::kEllipsoid || p.kind == ModelKind::kSel) {
     CheckAngle("theta_x", p.theta_x);
     CheckAngle("theta_y", p.theta_y);
     CheckAngle("theta_z", p.theta_z);
@@ -189,25 +223,25 @@ void ValidateModelParams(const ModelParams& p) {
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
 #if BRDFBAKE_WITH_BECKMANN
-  if (p.name == "beckmann") {
+  if (p.kind == ModelKind::kBeckmann) {
     return std::make_unique<NdfModel<BeckmannNdf<double>>>(
         p, BeckmannNdf<double>(p.alpha_x, p.alpha_y));
   }
 #endif
 #if BRDFBAKE_WITH_STD
-  if (p.name == "std") {
+  if (p.kind == ModelKind::kStudentT) {
     return std::make_unique<NdfModel<StdNdf<double>>>(
         p, StdNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
   }
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID
-  if (p.name == "ellipsoid") {
+  if (p.kind == ModelKind::kEllipsoid) {
     return std::make_unique<NdfModel<EllipsoidNdf<double>>>(
         p, EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z));
   }
 #endif
 #if BRDFBAKE_WITH_SEL
-  if (p.name == "sel") return std::make_unique<SelModel>(p);
+  if (p.kind == ModelKind::kSel) return std::make_unique<SelModel>(p);
 #endif
   return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
 }

@@ -506,9 +506,9 @@ void WriteReport(const Report& report, const std::string& dir) {
         << Num(r.seconds_median) << "," << Num(r.seconds_min) << "," << Num(r.max_abs_error)
         << "," << Num(r.rms_error) << "," << Num(r.claimed_max_error) << "\n";
   }
-  std::string what = std::string(TableName(t.table)) + " " + t.model.name;
+  std::string what = std::string(TableName(t.table)) + " " + t.model.name();
   const bool gamma_axis = t.HasGammaAxis();
-  if (t.model.name == "std" && !gamma_axis) what += " gamma=" + Num(t.model.gamma);
+  if (t.model.kind == ModelKind::kStudentT && !gamma_axis) what += " gamma=" + Num(t.model.gamma);
   std::string size = t.table == TableKind::kEavg
                          ? std::to_string(t.roughness.size)
                          : std::to_string(t.mu.size) + "x" + std::to_string(t.roughness.size);

@@ -166,13 +166,12 @@ Scene LoadToml(const std::string& path) {
       if (other.name == mat.name) f.Fail("name", "another material has this name");
     }
     mat.source = "toml";
-    mat.model = f.String("model", "", true);
-    if (mat.model != "ggx" && mat.model != "beckmann" && mat.model != "std" && mat.model != "ggx-aniso") {
-      f.Fail("model", "'" + mat.model + "' is not ggx, beckmann, std or ggx-aniso");
+    const std::string model = f.String("model", "", true);
+    if (model != "ggx" && model != "beckmann" && model != "std" && model != "ggx-aniso") {
+      f.Fail("model", "'" + model + "' is not ggx, beckmann, std or ggx-aniso");
     }
-    if (mat.model != "ggx-aniso" && !ModelBuilt(mat.model)) {
-      f.Fail("model", "'" + mat.model + "' is not in this build (BRDFBAKE_MODELS)");
-    }
+    mat.model = ParseModelKind(model);
+    if (!ModelBuilt(mat.model)) f.Fail("model", "'" + model + "' is not in this build (BRDFBAKE_MODELS)");
     const toml::node* r = mt.get("roughness");
     if (!r) f.Fail("roughness", "missing (a number in [0, 1] or a range [min, max])");
     if (r->is_array()) {
@@ -188,7 +187,7 @@ Scene LoadToml(const std::string& path) {
     } else {
       mat.roughness_min = mat.roughness_max = f.Number("roughness", 0.5, 0, 1, true);
     }
-    if (mat.model == "std") {
+    if (mat.model == ModelKind::kStudentT) {
       const toml::node* g = mt.get("gamma");
       if (!g) f.Fail("gamma", "missing (std needs gamma in (1.5, inf], or \"inf\")");
       if (g->is_string() && **g->as_string() == "inf") {
@@ -200,7 +199,7 @@ Scene LoadToml(const std::string& path) {
     } else if (f.Has("gamma")) {
       f.Fail("gamma", "only std has gamma");
     }
-    if (mat.model == "ggx-aniso") {
+    if (mat.model == ModelKind::kGgxAniso) {
       mat.anisotropy = f.Number("anisotropy", 0, 0, 1, true);
     } else if (f.Has("anisotropy")) {
       f.Fail("anisotropy", "only ggx-aniso has an anisotropy");
@@ -262,7 +261,7 @@ Scene LoadGltf(const std::string& path) {
           Bad(where + ": field 'KHR_materials_anisotropy.anisotropyStrength': " + Num(strength) + " is outside [0, 1]");
         }
         if (strength > 0) {
-          mat.model = "ggx-aniso";
+          mat.model = ModelKind::kGgxAniso;
           mat.anisotropy = strength;
         }
       } else if (name == "KHR_materials_ior" || name == "KHR_materials_specular") {
@@ -284,8 +283,8 @@ Scene LoadGltf(const std::string& path) {
 }
 
 std::string GroupKey(const SceneMaterial& m) {
-  std::string k = m.model;
-  if (m.model == "std") k += std::isinf(m.gamma) ? "_ginf" : "_g" + Num(m.gamma);
+  std::string k = ModelName(m.model);
+  if (m.model == ModelKind::kStudentT) k += std::isinf(m.gamma) ? "_ginf" : "_g" + Num(m.gamma);
   if (m.masking == Masking::kSeparable) k += "_separable";
   return k;
 }
@@ -393,7 +392,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       plan.notes.push_back("material '" + m.name + "' (" + u.first + "): needs " + u.second +
                            ", which brdfbake does not bake yet");
     }
-    if (m.model == "ggx-aniso") {
+    if (m.model == ModelKind::kGgxAniso) {
       plan.notes.push_back("material '" + m.name + "' (anisotropic GGX, strength " + Num(m.anisotropy) +
                            "): needs E(mu, phi, r, s) tables, which brdfbake does not bake yet; no table planned");
       continue;
@@ -412,8 +411,8 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     for (const TableKind kind : scene.engine.tables) {
       BakeSpec base;
       base.table = kind;
-      base.model.name = first.model;
-      base.model.gamma = first.model == "std" ? first.gamma : 2.0;
+      base.model.kind = first.model;
+      base.model.gamma = first.model == ModelKind::kStudentT ? first.gamma : 2.0;
       base.masking = first.masking;
       base.half = scene.engine.pixel == PixelType::kHalf;
       base.complement = scene.engine.complement && kind != TableKind::kDfg;

@@ -43,7 +43,7 @@ struct Params {
 
 struct Region {
   const char* name;
-  std::vector<const char*> models;
+  std::vector<ModelKind> models;
   // Draws parameters and two directions (mu of the first is the swept one).
   std::function<void(std::mt19937_64&, Params*, double* mu)> draw;
 };
@@ -54,44 +54,44 @@ double LogU(std::mt19937_64& r, double lo, double hi) { return lo * std::pow(hi 
 std::vector<Region> Regions() {
   const double deg = 3.141592653589793 / 180;
   return {
-      {"typical", {"ggx", "beckmann", "std", "ellipsoid"},
+      {"typical", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 0.05, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = 0.05 + 0.95 * U(r);
        }},
-      {"tiny alpha", {"ggx", "beckmann", "std", "ellipsoid"},
+      {"tiny alpha", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-4, 1e-3);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
-      {"grazing mu", {"ggx", "beckmann", "std", "ellipsoid"},
+      {"grazing mu", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = LogU(r, 1e-6, 1e-2);
        }},
-      {"heavy tails", {"std"},
+      {"heavy tails", {ModelKind::kStudentT},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = 1.5 + LogU(r, 1e-3, 0.1);
          *mu = U(r);
        }},
-      {"light tails", {"std"},
+      {"light tails", {ModelKind::kStudentT},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = LogU(r, 1e2, 1e6);
          *mu = U(r);
        }},
-      {"anisotropy 1000:1", {"ggx", "beckmann", "std", "ellipsoid"},
+      {"anisotropy 1000:1", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = LogU(r, 0.1, 1);
          p->ay = p->ax / LogU(r, 100, 1000);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
-      {"rotations to 80 deg", {"ellipsoid"},
+      {"rotations to 80 deg", {ModelKind::kEllipsoid},
        [deg](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = LogU(r, 1e-2, 1);
          p->ay = LogU(r, 1e-2, 1);
@@ -159,14 +159,14 @@ struct SampleBounds {
   double d = 0, lambda = 0, brdf = 0;
 };
 
-SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<double>& m_in,
+SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m_in,
                          const Vec3<double>& a_in, const Vec3<double>& b_in, StabilityRow* rows) {
   SampleBounds sb;
   const Vec3<float> af = RoundToFloat(a_in), bf = RoundToFloat(b_in), mf = RoundToFloat(m_in);
   const Vec3<double> a(af), b(bf), m(mf);
   const float ax = static_cast<float>(p.ax), ay = static_cast<float>(p.ay);
   float d, l, f;
-  if (model == "ggx") {
+  if (model == ModelKind::kGgx) {
     GgxBatchParams bp;
     bp.alpha_x = ax;
     bp.alpha_y = ay;
@@ -181,8 +181,8 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
            sb.brdf);
   }
 #if BRDFBAKE_WITH_BECKMANN
-  if (model == "beckmann" || model == "std") {
-    const bool beck = model == "beckmann";
+  if (model == ModelKind::kBeckmann || model == ModelKind::kStudentT) {
+    const bool beck = model == ModelKind::kBeckmann;
     const double gamma = beck ? std::numeric_limits<double>::infinity()
                               : static_cast<double>(static_cast<float>(p.gamma));
     const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStdExpSlope;
@@ -223,7 +223,7 @@ SampleBounds MeasureSimd(const std::string& model, const Params& p, const Vec3<d
   }
 #endif  // BRDFBAKE_WITH_BECKMANN
 #if BRDFBAKE_WITH_ELLIPSOID
-  if (model == "ellipsoid") {
+  if (model == ModelKind::kEllipsoid) {
     EllipsoidBatchParams bp;
     bp.alpha_x = ax;
     bp.alpha_y = ay;
@@ -281,8 +281,9 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
   static const char* kSimdQuantities[3] = {"D", "Lambda", "brdf"};
   const std::string simd_kernel = "simd:" + BatchTarget();
   for (const Region& region : Regions()) {
-    for (const char* model : region.models) {
-      if (!ModelBuilt(model)) continue;
+    for (const ModelKind kind : region.models) {
+      if (!ModelBuilt(kind)) continue;
+      const char* model = ModelName(kind);
       std::mt19937_64 rng(seed ^ std::hash<std::string>()(std::string(region.name) + model));
       StabilityRow rows[4], srows[3];
       for (int q = 0; q < 4; ++q) {
@@ -297,7 +298,6 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
         srows[q].quantity = kSimdQuantities[q];
         srows[q].kernel = simd_kernel;
       }
-      const std::string name = model;
       for (int i = 0; i < samples_per_region; ++i) {
         Params p{0.25, 0.25, 2.0, 0, 0, 0};
         double mu;
@@ -318,14 +318,14 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
           const Vec3<double> r = Reflect(b, m);
           if (r.z > 0) a = r;
         }
-        const SampleBounds sb = MeasureSimd(name, p, m, a, b, srows);
-        if (name == "ggx") {
+        const SampleBounds sb = MeasureSimd(kind, p, m, a, b, srows);
+        if (kind == ModelKind::kGgx) {
           MeasureFloat(GgxNdf<double>(p.ax, p.ay), GgxNdf<float>(float(p.ax), float(p.ay)), m, a, b,
                        sb, rows);
-        } else if (name == "beckmann") {
+        } else if (kind == ModelKind::kBeckmann) {
           MeasureFloat(BeckmannNdf<double>(p.ax, p.ay),
                        BeckmannNdf<float>(float(p.ax), float(p.ay)), m, a, b, sb, rows);
-        } else if (name == "std") {
+        } else if (kind == ModelKind::kStudentT) {
           MeasureFloat(StdNdf<double>(p.ax, p.ay, p.gamma),
                        StdNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), m, a, b, sb, rows);
         } else {

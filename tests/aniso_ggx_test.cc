@@ -136,7 +136,7 @@ TEST(AnisoGgxTest, StiffCasesFiniteInRangeAndWithinTolerance) {
 BakeSpec AnisoSpec(TableKind table) {
   BakeSpec s;
   s.table = table;
-  s.model.name = "ggx-aniso";
+  s.model.kind = ModelKind::kGgxAniso;
   s.mu.size = 4;
   s.phi.size = 3;
   s.roughness.size = 4;

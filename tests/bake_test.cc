@@ -196,7 +196,7 @@ TEST(BakeTest, EavgMeetsItsToleranceAndClaim) {
   for (const Case& c : {Case{"ggx", 2}, Case{"beckmann", 2}, Case{"std", 1.6}, Case{"std", 3}}) {
     BakeSpec spec;
     spec.table = TableKind::kEavg;
-    spec.model.name = c.model;
+    spec.model.kind = ParseModelKind(c.model);
     spec.model.gamma = c.gamma;
     BakeSpec ref_spec = spec;
     ref_spec.tolerance = 1e-10;
@@ -222,17 +222,17 @@ TEST(BakeTest, BitIdenticalAtAnyThreadCount) {
     specs.push_back(spec);
   }
   BakeSpec gamma;
-  gamma.model.name = "std";
+  gamma.model.kind = ModelKind::kStudentT;
   gamma.mu.size = gamma.roughness.size = 6;
   gamma.gamma.size = 5;
   specs.push_back(gamma);
   BakeSpec aniso;
-  aniso.model.name = "ggx-aniso";
+  aniso.model.kind = ModelKind::kGgxAniso;
   aniso.mu.size = aniso.roughness.size = 4;
   aniso.phi.size = aniso.anisotropy.size = 3;
   specs.push_back(aniso);
   BakeSpec ellipsoid;
-  ellipsoid.model.name = "ellipsoid";
+  ellipsoid.model.kind = ModelKind::kEllipsoid;
   ellipsoid.model.alpha_x = 0.3;
   ellipsoid.model.alpha_y = 0.6;
   ellipsoid.model.theta_x = 0.4;
@@ -244,7 +244,7 @@ TEST(BakeTest, BitIdenticalAtAnyThreadCount) {
   specs.push_back(ellipsoid);
   BakeSpec sel;
   sel.table = TableKind::kSelNorm;
-  sel.model.name = "sel";
+  sel.model.kind = ModelKind::kSel;
   sel.alpha_x.size = sel.alpha_y.size = 5;
   specs.push_back(sel);
   for (BakeSpec spec : specs) {
@@ -273,7 +273,7 @@ TEST(BakeTest, SimdTablesAgreeWithTheScalarReference) {
     for (TableKind table : {TableKind::kDfg, TableKind::kE, TableKind::kEavg}) {
       BakeSpec spec;
       spec.table = table;
-      spec.model.name = model;
+      spec.model.kind = ParseModelKind(model);
       spec.model.gamma = 1.8;
       spec.mu.size = spec.roughness.size = 9;
       spec.threads = 1;
@@ -366,7 +366,7 @@ TEST(BakeTest, OtherModelsBakeFinite) {
   for (const char* model : {"beckmann", "std"}) {
     for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
       BakeSpec spec;
-      spec.model.name = model;
+      spec.model.kind = ParseModelKind(model);
       spec.model.gamma = 3.5;
       spec.masking = masking;
       spec.mu.size = spec.roughness.size = 6;
@@ -385,7 +385,7 @@ TEST(BakeTest, OtherModelsBakeFinite) {
   BakeSpec g;
   g.mu.size = g.roughness.size = 5;
   BakeSpec s = g;
-  s.model.name = "std";
+  s.model.kind = ModelKind::kStudentT;
   s.model.gamma = 2;
   const Table tg = Bake(g), ts = Bake(s);
   for (size_t i = 0; i < tg.channels[0].values.size(); ++i) {
@@ -409,7 +409,7 @@ TEST(BakeTest, ExtremeTablesAgreeWithIndependentIntegration) {
                         {"beckmann", 2, Masking::kSeparable}};
   for (const Case& c : cases) {
     BakeSpec spec;
-    spec.model.name = c.model;
+    spec.model.kind = ParseModelKind(c.model);
     spec.model.gamma = c.gamma;
     spec.masking = c.masking;
     spec.mu.size = 5;
@@ -440,9 +440,9 @@ TEST(BakeTest, ExtremeTablesAgreeWithIndependentIntegration) {
 
 TEST(BakeTest, RejectsBadSpecs) {
   BakeSpec spec;
-  spec.model.name = "sel";
+  spec.model.kind = ModelKind::kSel;
   EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
-  spec.model.name = "ggx";
+  spec.model.kind = ModelKind::kGgx;
   spec.mu.size = 0;
   EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
   spec.mu.size = 1;  // edges need 2

@@ -27,7 +27,7 @@ std::vector<ModelParams> AllModels() {
   auto add = [&](const char* name, double ax, double ay, double gamma = 2, double tx = 0,
                  double ty = 0, double tz = 0) {
     ModelParams p;
-    p.name = name;
+    p.kind = ParseModelKind(name);
     p.alpha_x = ax;
     p.alpha_y = ay;
     p.gamma = gamma;

@@ -623,7 +623,7 @@ TEST(EllipsoidAlbedoTest, StiffCasesFiniteInRangeAndWithinTolerance) {
 // A tilted ellipsoid's E is not even in phi_o; the table says so.
 TEST(EllipsoidAlbedoTest, TableHasNoAzimuthalSymmetry) {
   BakeSpec spec;
-  spec.model.name = "ellipsoid";
+  spec.model.kind = ModelKind::kEllipsoid;
   spec.model.alpha_x = 0.3;
   spec.model.alpha_y = 0.6;
   spec.model.theta_x = 0.35;
@@ -678,7 +678,7 @@ TEST(EllipsoidAlbedoTest, EavgOfTiltedMaterialsMeetsTheTolerance) {
   for (const Case& c : {Case{0.3, 0.6, 20, 0, 30}, Case{0.5, 0.2, 45, -30, 0}}) {
     BakeSpec spec;
     spec.table = TableKind::kEavg;
-    spec.model.name = "ellipsoid";
+    spec.model.kind = ModelKind::kEllipsoid;
     spec.model.alpha_x = c.ax;
     spec.model.alpha_y = c.ay;
     spec.model.theta_x = c.tx * kDeg;

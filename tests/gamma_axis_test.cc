@@ -24,7 +24,7 @@ namespace {
 BakeSpec GammaSpec(TableKind table, int w, int h, int d) {
   BakeSpec s;
   s.table = table;
-  s.model.name = "std";
+  s.model.kind = ModelKind::kStudentT;
   s.mu.size = w;
   s.roughness.size = h;
   s.gamma.size = d;
@@ -77,7 +77,7 @@ TEST(GammaAxisTest, SlicesAreTheTablesAtTheirGamma) {
     }
     BakeSpec beckmann = spec;
     beckmann.gamma.size = 0;
-    beckmann.model.name = "beckmann";
+    beckmann.model.kind = ModelKind::kBeckmann;
     const Table tb = Bake(beckmann);
     for (size_t c = 0; c < t.channels.size(); ++c) {
       for (size_t i = 0; i < slice; ++i) {
@@ -141,9 +141,9 @@ TEST(GammaAxisTest, ExrHeaderListsTheGammaValues) {
 TEST(GammaAxisTest, RejectsBadGammaAxes) {
   BakeSpec spec = GammaSpec(TableKind::kE, 4, 4, 4);
   EXPECT_NO_THROW(ValidateBakeSpec(spec));
-  spec.model.name = "ggx";
+  spec.model.kind = ModelKind::kGgx;
   EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
-  spec.model.name = "std";
+  spec.model.kind = ModelKind::kStudentT;
   spec.gamma.min = 1.5;
   EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
   spec.gamma.min = 3;

@@ -28,7 +28,7 @@ TEST(GridTest, SimdSliceMatchesScalarModel) {
  for (const FresnelPair& fp : fresnels) {
  for (const char* model : {"ggx", "beckmann", "std", "ellipsoid"}) {
   GridRequest req;
-  req.model.name = model;
+  req.model.kind = ParseModelKind(model);
   req.model.gamma = 3.0;
   req.model.theta_x = 0.3;
   req.model.alpha_x = 0.2;
@@ -99,7 +99,7 @@ TEST(GridTest, RejectsBadRequests) {
   req.width = 0;
   EXPECT_THROW(EvalGrid(req), std::invalid_argument);
   req.width = 8;
-  req.model.name = "sel";
+  req.model.kind = ModelKind::kSel;
   EXPECT_THROW(EvalGrid(req), std::invalid_argument);
   EXPECT_THROW(ParseGridKind("cube"), std::invalid_argument);
 }

@@ -39,16 +39,24 @@ TEST(ModelTest, RejectsBadParametersWithOneLineMessages) {
   p.alpha_y = 0;
   EXPECT_NE(ErrorOf(p).find("alpha_y"), std::string::npos);
   p.alpha_y = 0.3;
-  p.name = "phong";
-  EXPECT_NE(ErrorOf(p).find("unknown model 'phong'"), std::string::npos);
-  p.name = "std";
+  try {
+    ParseModelKind("phong");
+    ADD_FAILURE() << "no error for an unknown model";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("unknown model 'phong'"), std::string::npos);
+  }
+  for (ModelKind k : {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT,
+                      ModelKind::kEllipsoid, ModelKind::kSel, ModelKind::kGgxAniso}) {
+    EXPECT_EQ(ParseModelKind(ModelName(k)), k) << ModelName(k);
+  }
+  p.kind = ModelKind::kStudentT;
   p.gamma = 1.5;
   EXPECT_NE(ErrorOf(p).find("gamma"), std::string::npos);
   p.gamma = std::numeric_limits<double>::quiet_NaN();
   EXPECT_NE(ErrorOf(p).find("gamma"), std::string::npos);
   p.gamma = std::numeric_limits<double>::infinity();
   EXPECT_EQ(ErrorOf(p), "");
-  p.name = "ellipsoid";
+  p.kind = ModelKind::kEllipsoid;
   p.theta_y = 2.0;
   EXPECT_NE(ErrorOf(p).find("theta_y"), std::string::npos);
   for (const ModelParams& bad : {p}) {
@@ -59,14 +67,14 @@ TEST(ModelTest, RejectsBadParametersWithOneLineMessages) {
 
 TEST(ModelTest, StdGammaTwoIsGgxAndInfinityIsBeckmann) {
   ModelParams g;
-  g.name = "ggx";
+  g.kind = ModelKind::kGgx;
   g.alpha_x = 0.3;
   g.alpha_y = 0.7;
   ModelParams s = g;
-  s.name = "std";
+  s.kind = ModelKind::kStudentT;
   s.gamma = 2;
   ModelParams b = g;
-  b.name = "beckmann";
+  b.kind = ModelKind::kBeckmann;
   ModelParams si = s;
   si.gamma = std::numeric_limits<double>::infinity();
   const auto mg = MakeModel(g), ms = MakeModel(s), mb = MakeModel(b), msi = MakeModel(si);
@@ -81,7 +89,7 @@ TEST(ModelTest, StdGammaTwoIsGgxAndInfinityIsBeckmann) {
 
 TEST(ModelTest, SelHasOnlyK) {
   ModelParams p;
-  p.name = "sel";
+  p.kind = ModelKind::kSel;
   const auto m = MakeModel(p);
   EXPECT_FALSE(m->IsMicrofacet());
   EXPECT_NEAR(m->K(Vec3<double>(0, 0, 1)), 1.0, 1e-12);

@@ -537,7 +537,7 @@ TEST(RangeTest, StoredValuesStayInTheUnitInterval) {
     BakeSpec spec;
     spec.table = c.table;
     spec.integrator = c.integrator;
-    spec.model.name = c.model;
+    spec.model.kind = ParseModelKind(c.model);
     spec.model.gamma = 3;
     spec.samples = c.samples;
     spec.half = c.half;
@@ -659,7 +659,7 @@ TEST(DomainTest, AlphaIsBoundedAndFiniteUpToTheBound) {
   ModelParams p;
   p.alpha_x = p.alpha_y = 1.4e154;
   EXPECT_THROW(ValidateModelParams(p), std::invalid_argument);
-  p.name = "sel";
+  p.kind = ModelKind::kSel;
   p.alpha_x = 1;
   p.alpha_y = 1e154;
   EXPECT_THROW(ValidateModelParams(p), std::invalid_argument);
@@ -668,7 +668,7 @@ TEST(DomainTest, AlphaIsBoundedAndFiniteUpToTheBound) {
     for (const GridKind kind : {GridKind::kSlice, GridKind::kHemisphere}) {
       for (const double ay : {kMaxAlpha, 1e-4, 1.0}) {
         GridRequest req;
-        req.model.name = model;
+        req.model.kind = ParseModelKind(model);
         req.model.alpha_x = kMaxAlpha;
         req.model.alpha_y = ay;
         req.model.gamma = 1.6;
@@ -691,7 +691,7 @@ TEST(DomainTest, AlphaIsBoundedAndFiniteUpToTheBound) {
 TEST(DomainTest, SelLobeIsFiniteUpToTheBound) {
   for (const double ay : {kMaxAlpha, 1e-4}) {
     ModelParams p;
-    p.name = "sel";
+    p.kind = ModelKind::kSel;
     p.alpha_x = kMaxAlpha;
     p.alpha_y = ay;
     p.theta_x = 0.3;
@@ -720,10 +720,10 @@ TEST(DomainTest, HugeGammaIsBeckmann) {
   // The table at the largest gammas is the Beckmann table, with an honest claim.
   BakeSpec spec;
   spec.mu.size = spec.roughness.size = 6;
-  spec.model.name = "beckmann";
+  spec.model.kind = ModelKind::kBeckmann;
   const Table b = Bake(spec);
   for (const double gamma : {1.7e308, std::numeric_limits<double>::max()}) {
-    spec.model.name = "std";
+    spec.model.kind = ModelKind::kStudentT;
     spec.model.gamma = gamma;
     const Table s = Bake(spec);
     for (size_t i = 0; i < s.channels[0].values.size(); ++i) {

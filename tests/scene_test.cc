@@ -78,7 +78,7 @@ TEST(SceneTest, GltfExampleReadsMaterialsAndExtensions) {
   // A roughness texture: the range [0, factor].
   EXPECT_EQ(s.materials[2].roughness_min, 0.0);
   EXPECT_EQ(s.materials[2].roughness_max, 0.7);
-  EXPECT_EQ(s.materials[3].model, "ggx-aniso");
+  EXPECT_EQ(s.materials[3].model, ModelKind::kGgxAniso);
   EXPECT_EQ(s.materials[3].anisotropy, 0.6);
   ASSERT_EQ(s.materials[4].unsupported.size(), 1u);
   EXPECT_EQ(s.materials[4].unsupported[0].first, "KHR_materials_sheen");
@@ -90,7 +90,7 @@ TEST(SceneTest, GltfExampleReadsMaterialsAndExtensions) {
   const ScenePlan plan = PlanScene(small);
   ASSERT_EQ(plan.tables.size(), 2u);
   for (const PlannedTable& p : plan.tables) {
-    EXPECT_EQ(p.spec.model.name, "ggx");
+    EXPECT_EQ(p.spec.model.kind, ModelKind::kGgx);
     EXPECT_EQ(p.spec.roughness.min, 0.0);
     EXPECT_EQ(p.spec.roughness.max, 0.9);
     EXPECT_EQ(std::find(p.materials.begin(), p.materials.end(), "brushed_aluminium"), p.materials.end());

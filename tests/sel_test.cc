@@ -242,7 +242,7 @@ TEST(SelTest, IntegralClosedForms) {
 TEST(SelTest, NormTable) {
   BakeSpec spec;
   spec.table = TableKind::kSelNorm;
-  spec.model.name = "sel";
+  spec.model.kind = ModelKind::kSel;
   spec.alpha_x.size = 4;
   spec.alpha_y.size = 3;
   spec.alpha_x.min = 0.1;
@@ -257,7 +257,7 @@ TEST(SelTest, NormTable) {
       EXPECT_EQ(t.channels[1].values[y * 4 + x], n.ratio);
     }
   }
-  spec.model.name = "ggx";
+  spec.model.kind = ModelKind::kGgx;
   EXPECT_THROW(ValidateBakeSpec(spec), std::invalid_argument);
 }
 

@@ -151,12 +151,12 @@ struct ModelOptions {
 
   brdfbake::ModelParams Get() const {
     brdfbake::ModelParams p;
-    p.name = model;
-    if (Given(app, "--gamma") && model != "std") {
+    p.kind = brdfbake::ParseModelKind(model);
+    if (Given(app, "--gamma") && p.kind != brdfbake::ModelKind::kStudentT) {
       Bad("--gamma: model " + model + " has no gamma (only std does)");
     }
     for (const char* t : {"--theta-x", "--theta-y", "--theta-z"}) {
-      if (Given(app, t) && model != "ellipsoid" && model != "sel") {
+      if (Given(app, t) && p.kind != brdfbake::ModelKind::kEllipsoid && p.kind != brdfbake::ModelKind::kSel) {
         Bad(std::string(t) + ": model " + model + " has no rotation (only ellipsoid and sel do)");
       }
     }
@@ -175,12 +175,12 @@ struct ModelOptions {
     p.theta_y = theta_y_deg * kDegree;
     p.theta_z = theta_z_deg * kDegree;
     brdfbake::ModelParams check = p;
-    if (model == "ggx-aniso") {
+    if (p.kind == brdfbake::ModelKind::kGgxAniso) {
       // A table model: its widths come from --roughness and --anisotropy.
       if (!alpha_x.empty() || !alpha_y.empty()) {
         Bad("--alpha-x/--alpha-y: ggx-aniso takes --roughness and --anisotropy");
       }
-      check.name = "ggx";
+      check.kind = brdfbake::ModelKind::kGgx;
     }
     brdfbake::ValidateModelParams(check);
     return p;
@@ -348,8 +348,8 @@ struct BakeOptions {
     brdfbake::BakeSpec spec;
     if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);
-    spec.model.name = model;
-    if (Given(app, "--gamma") && model != "std") {
+    spec.model.kind = brdfbake::ParseModelKind(model);
+    if (Given(app, "--gamma") && spec.model.kind != brdfbake::ModelKind::kStudentT) {
       Bad("--gamma: model " + model + " has no gamma (only std does)");
     }
     spec.model.gamma = ParseNumber("--gamma", gamma);
@@ -389,19 +389,19 @@ struct BakeOptions {
     spec.half = pixel == "half";
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
     // std without --gamma takes one more --size entry: the gamma axis.
-    const bool gamma_ok = model == "std" && !Given(app, "--gamma");
+    const bool gamma_ok = spec.model.kind == brdfbake::ModelKind::kStudentT && !Given(app, "--gamma");
     const size_t entries = !Given(app, "--size") || size.empty()
                                ? 0
                                : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const size_t plain = eavg ? 1 : 2;
-    if (entries == plain + 1 && !gamma_ok && model != "ggx-aniso") {
+    if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso) {
       Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
           " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
     }
     const bool gamma_axis = gamma_ok && entries == plain + 1;
-    const bool aniso = model == "ggx-aniso";
+    const bool aniso = spec.model.kind == brdfbake::ModelKind::kGgxAniso;
     const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
-    const bool ellipsoid = model == "ellipsoid";
+    const bool ellipsoid = spec.model.kind == brdfbake::ModelKind::kEllipsoid;
     if (!for_report) {
       for (const char* o : {"--alpha-x", "--alpha-y", "--theta-x", "--theta-y", "--theta-z"}) {
         if (Given(app, o) && !ellipsoid) {
@@ -596,7 +596,7 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
             std::to_string(h / table.spec.gamma.size) + " rows)";
   }
   std::printf("wrote %s: %s %s %s, %s integrator, baked in %.3f s, max abs error %.2e\n",
-              OneLine(path).c_str(), what.c_str(), table.spec.model.name.c_str(), dims.c_str(),
+              OneLine(path).c_str(), what.c_str(), table.spec.model.name(), dims.c_str(),
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
 }
 
@@ -857,7 +857,7 @@ int RunGrid(const EvalOptions& o) {
                           {{brdfbake::GridChannelName(gr.kind), &g.values}},
                           brdfbake::GridAttributes(gr, g));
   std::printf("wrote %s: %s grid %dx%d of %s in %.3f s (%s)\n", OneLine(o.grid_out).c_str(),
-              brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name.c_str(), secs,
+              brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name(), secs,
               g.path.c_str());
   return 0;
 }

@@ -100,7 +100,7 @@ struct BakeSpec {
   // phi_o and symmetric about pi/2, so [0, pi/2] covers every azimuth.
   Axis phi{"phi_o", 16, 0.0, kHalfPi, Warp::kLinear, Placement::kEdges};
   Axis anisotropy{"anisotropy", 16, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  bool Anisotropic() const { return model.name == "ggx-aniso"; }
+  bool Anisotropic() const { return model.kind == ModelKind::kGgxAniso; }
   // sel_norm: the lobe's widths, in [0, 1] (clamped below at 1e-4).
   Axis alpha_x{"alpha_x", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
   Axis alpha_y{"alpha_y", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};

@@ -20,12 +20,26 @@
 
 namespace brdfbake {
 
+// The model families, and ggx-aniso: GGX whose widths a table takes from
+// the roughness and the glTF anisotropy strength (bake and eval of E only).
+enum class ModelKind { kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso };
+
+// The kind's name on the command line and in files: ggx, beckmann, std,
+// ellipsoid, sel, ggx-aniso.
+const char* ModelName(ModelKind kind);
+
+// The kind `name` names; std::invalid_argument with a one-line message
+// listing this build's models if it names none.
+ModelKind ParseModelKind(const std::string& name);
+
 struct ModelParams {
-  std::string name = "ggx";  // ggx | beckmann | std | ellipsoid | sel
+  ModelKind kind = ModelKind::kGgx;
   double alpha_x = 0.25;
   double alpha_y = 0.25;
   double gamma = 2.0;  // std only; +inf = Beckmann
   double theta_x = 0, theta_y = 0, theta_z = 0;  // ellipsoid A = S R, sel Q (radians)
+
+  const char* name() const { return ModelName(kind); }
 
   // One-line JSON such as {"name":"ggx","alpha_x":0.25,"alpha_y":0.25}.
   std::string ToJson() const;
@@ -33,14 +47,16 @@ struct ModelParams {
 
 // Every model name, with a one-line description of its parameters.
 struct ModelInfo {
+  ModelKind kind;
   const char* name;
   const char* parameters;
   const char* source;
 };
 const std::vector<ModelInfo>& Models();  // the families this build contains
 
-// Whether `name` is a model family of this build (BRDFBAKE_MODELS).
-bool ModelBuilt(const std::string& name);
+// Whether `kind` is a model family of this build (BRDFBAKE_MODELS);
+// ggx-aniso is built with ggx.
+bool ModelBuilt(ModelKind kind);
 
 // The largest alpha accepted (roughness 100). Every model quantity, in
 // double, in float and in the SIMD kernels, is finite up to it

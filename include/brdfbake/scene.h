@@ -19,7 +19,7 @@ namespace brdfbake {
 
 struct SceneMaterial {
   std::string name;
-  std::string model = "ggx";  // ggx | beckmann | std | ggx-aniso
+  ModelKind model = ModelKind::kGgx;  // ggx, beckmann, std or ggx-aniso
   double roughness_min = 0.5, roughness_max = 0.5;
   double gamma = 2;  // std
   double anisotropy = 0;  // ggx-aniso strength (glTF KHR_materials_anisotropy)
