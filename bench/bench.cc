@@ -103,17 +103,18 @@ template <class Ndf>
 Vec3<double> Visible(const Ndf& ndf, const Vec3<double>& w, double u1, double u2) {
   return ndf.SampleVisible(w, u1, u2);
 }
-Vec3<double> PseudoVnis(const StdNdf<double>& ndf, const Vec3<double>& w, double u1, double u2) {
+Vec3<double> PseudoVnis(const StudentTNdf<double>& ndf, const Vec3<double>& w, double u1,
+                        double u2) {
   return ndf.SamplePseudoVnis(w, u1, u2);
 }
 
 BENCHMARK_CAPTURE(BM_D, ggx/scalar, GgxNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_D, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3));
-BENCHMARK_CAPTURE(BM_D, std/scalar, StdNdf<double>(0.3, 0.3, 3.3));
+BENCHMARK_CAPTURE(BM_D, std/scalar, StudentTNdf<double>(0.3, 0.3, 3.3));
 BENCHMARK_CAPTURE(BM_D, ellipsoid/scalar, EllipsoidNdf<double>(0.3, 0.5, 0.2, 0.1, 0.4));
 BENCHMARK_CAPTURE(BM_G2, ggx/scalar, GgxNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_G2, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3));
-BENCHMARK_CAPTURE(BM_G2, std/scalar, StdNdf<double>(0.3, 0.3, 3.3));
+BENCHMARK_CAPTURE(BM_G2, std/scalar, StudentTNdf<double>(0.3, 0.3, 3.3));
 BENCHMARK_CAPTURE(BM_G2, ellipsoid/scalar, EllipsoidNdf<double>(0.3, 0.5, 0.2, 0.1, 0.4));
 void BM_SelK(benchmark::State& state) {
   const Inputs& in = In();
@@ -128,12 +129,12 @@ void BM_SelK(benchmark::State& state) {
 BENCHMARK(BM_SelK)->Name("BM_K/sel/scalar");
 BENCHMARK_CAPTURE(BM_Brdf, ggx/scalar, GgxNdf<double>(0.3, 0.3));
 BENCHMARK_CAPTURE(BM_Brdf, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3));
-BENCHMARK_CAPTURE(BM_Brdf, std/scalar, StdNdf<double>(0.3, 0.3, 3.3));
+BENCHMARK_CAPTURE(BM_Brdf, std/scalar, StudentTNdf<double>(0.3, 0.3, 3.3));
 BENCHMARK_CAPTURE(BM_Brdf, ellipsoid/scalar, EllipsoidNdf<double>(0.3, 0.5, 0.2, 0.1, 0.4));
 BENCHMARK_CAPTURE(BM_Sample, ggx/scalar, GgxNdf<double>(0.3, 0.3), Visible<GgxNdf<double>>);
 BENCHMARK_CAPTURE(BM_Sample, beckmann/scalar, BeckmannNdf<double>(0.3, 0.3),
                   Visible<BeckmannNdf<double>>);
-BENCHMARK_CAPTURE(BM_Sample, std/scalar, StdNdf<double>(0.3, 0.3, 3.3), PseudoVnis);
+BENCHMARK_CAPTURE(BM_Sample, std/scalar, StudentTNdf<double>(0.3, 0.3, 3.3), PseudoVnis);
 BENCHMARK_CAPTURE(BM_Sample, ellipsoid/scalar, EllipsoidNdf<double>(0.3, 0.5, 0.2, 0.1, 0.4),
                   Visible<EllipsoidNdf<double>>);
 
@@ -173,8 +174,8 @@ void BM_BrdfBatch(benchmark::State& state, std::string target) {
 // D, G2, the other models' BRDF kernels and the visible-normal samplers, per
 // target. D takes the wi array as normals, G2 the (wi, wo) pairs.
 enum class Kernel {
-  kBeckmannBrdf, kStdBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible,
-  kGgxD, kBeckmannD, kStdD, kEllipsoidD, kGgxG2, kBeckmannG2, kStdG2, kEllipsoidG2, kSelK
+  kBeckmannBrdf, kStudentTBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible,
+  kGgxD, kBeckmannD, kStudentTD, kEllipsoidD, kGgxG2, kBeckmannG2, kStudentTG2, kEllipsoidG2, kSelK
 };
 void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) {
   ForceTarget(target);
@@ -189,7 +190,7 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
   BeckmannBatchParams bp;
   bp.alpha_x = bp.alpha_y = 0.3f;
   bp.f0 = 0.04f;
-  StdBatchParams sp;
+  StudentTBatchParams sp;
   sp.alpha_x = sp.alpha_y = 0.3f;
   sp.gamma = 3.3f;
   sp.f0 = 0.04f;
@@ -208,8 +209,8 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
         BeckmannBrdfBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
                           in.oy.data(), in.oz.data(), in.out.data(), kN);
         break;
-      case Kernel::kStdBrdf:
-        StdBrdfBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
+      case Kernel::kStudentTBrdf:
+        StudentTBrdfBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
                      in.oz.data(), in.out.data(), kN);
         break;
       case Kernel::kEllipsoidBrdf:
@@ -230,8 +231,8 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
       case Kernel::kBeckmannD:
         BeckmannDBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
         break;
-      case Kernel::kStdD:
-        StdDBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
+      case Kernel::kStudentTD:
+        StudentTDBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
         break;
       case Kernel::kEllipsoidD:
         EllipsoidDBatch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
@@ -244,8 +245,8 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
         BeckmannG2Batch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
                         in.oy.data(), in.oz.data(), in.out.data(), kN);
         break;
-      case Kernel::kStdG2:
-        StdG2Batch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
+      case Kernel::kStudentTG2:
+        StudentTG2Batch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
                    in.oz.data(), in.out.data(), kN);
         break;
       case Kernel::kSelK: {
@@ -361,7 +362,7 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(("BM_Brdf/beckmann/" + t).c_str(), brdfbake::BM_KernelBatch,
                                  Kernel::kBeckmannBrdf, t);
     benchmark::RegisterBenchmark(("BM_Brdf/std/" + t).c_str(), brdfbake::BM_KernelBatch,
-                                 Kernel::kStdBrdf, t);
+                                 Kernel::kStudentTBrdf, t);
     benchmark::RegisterBenchmark(("BM_Brdf/ellipsoid/" + t).c_str(), brdfbake::BM_KernelBatch,
                                  Kernel::kEllipsoidBrdf, t);
     benchmark::RegisterBenchmark(("BM_SampleVisible/ggx/" + t).c_str(), brdfbake::BM_KernelBatch,
@@ -370,9 +371,9 @@ int main(int argc, char** argv) {
                                  brdfbake::BM_KernelBatch, Kernel::kEllipsoidSampleVisible, t);
     const std::pair<const char*, Kernel> per_model[] = {
         {"BM_D/ggx/", Kernel::kGgxD},          {"BM_D/beckmann/", Kernel::kBeckmannD},
-        {"BM_D/std/", Kernel::kStdD},          {"BM_D/ellipsoid/", Kernel::kEllipsoidD},
+        {"BM_D/std/", Kernel::kStudentTD},          {"BM_D/ellipsoid/", Kernel::kEllipsoidD},
         {"BM_G2/ggx/", Kernel::kGgxG2},        {"BM_G2/beckmann/", Kernel::kBeckmannG2},
-        {"BM_G2/std/", Kernel::kStdG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2},
+        {"BM_G2/std/", Kernel::kStudentTG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2},
         {"BM_K/sel/", Kernel::kSelK}};
     for (const auto& [prefix, kernel] : per_model) {
       benchmark::RegisterBenchmark((prefix + t).c_str(), brdfbake::BM_KernelBatch, kernel, t);

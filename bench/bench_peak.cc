@@ -224,11 +224,11 @@ const int kRegistered = [] {
        }},
       {"std", 537, 12, 2, 33,
        [](const std::vector<float>* v, std::vector<float>* o) {
-         StdBatchParams p;
+         StudentTBatchParams p;
          p.alpha_x = p.alpha_y = 0.3f;
          p.gamma = 3.3f;
          p.f0 = 0.04f;
-         StdBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
+         StudentTBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
                       v[5].data(), o->data(), o->size());
        }},
       {"ellipsoid", 164, 1, 2, 1,

@@ -54,7 +54,7 @@ void BM_SampleVisibleBatch(benchmark::State& state, Model model, std::string tar
   SampleData& s = Data();
   BeckmannBatchParams bp;
   bp.alpha_x = bp.alpha_y = kAlpha;
-  StdBatchParams sp;
+  StudentTBatchParams sp;
   sp.alpha_x = sp.alpha_y = kAlpha;
   sp.gamma = kGamma;
   for (auto _ : state) {
@@ -62,7 +62,7 @@ void BM_SampleVisibleBatch(benchmark::State& state, Model model, std::string tar
       BeckmannSampleVisibleBatch(bp, s.wx.data(), s.wy.data(), s.wz.data(), s.u1.data(),
                                  s.u2.data(), s.mx.data(), s.my.data(), s.mz.data(), kSamples);
     } else {
-      StdSamplePseudoVnisBatch(sp, s.wx.data(), s.wy.data(), s.wz.data(), s.u1.data(),
+      StudentTSamplePseudoVnisBatch(sp, s.wx.data(), s.wy.data(), s.wz.data(), s.u1.data(),
                                s.u2.data(), s.mx.data(), s.my.data(), s.mz.data(), kSamples);
     }
     benchmark::DoNotOptimize(s.mz.data());
@@ -85,7 +85,7 @@ __attribute__((optimize("no-tree-vectorize"))) void ScalarSamples(const Sampler&
 void BM_SampleVisibleScalar(benchmark::State& state, Model model) {
   SampleData& s = Data();
   const BeckmannNdf<float> beckmann(kAlpha);
-  const StdNdf<float> std_ndf(kAlpha, kAlpha, kGamma);
+  const StudentTNdf<float> std_ndf(kAlpha, kAlpha, kGamma);
   for (auto _ : state) {
     if (model == Model::kBeckmann) {
       ScalarSamples([&](const Vec3<float>& w, float u1, float u2) {

@@ -56,7 +56,7 @@ struct SlopeAzimuth {
 // reference.
 // ke/ge are the Kronrod/Gauss sums of P22(r2) v^2 of each piece (weights
 // times integrand, without the half width), kb/gb those of P22(r2) v^2 Fc.
-// `Ndf` provides StdP22 (slope_ndf.h).
+// `Ndf` provides UnitP22 (slope_ndf.h).
 template <class Ndf>
 struct ScalarSlopeNodes {
   // The STD's P22 decays like a power and is never negligible.
@@ -66,7 +66,7 @@ struct ScalarSlopeNodes {
   const Ndf* ndf;
   void Lambda(const double* a, int n, double* out) const {
     for (int k = 0; k < n; ++k) {
-      out[k] = a[k] > 0 ? ndf->StdLambda(a[k]) : std::numeric_limits<double>::infinity();
+      out[k] = a[k] > 0 ? ndf->UnitLambda(a[k]) : std::numeric_limits<double>::infinity();
     }
   }
   void operator()(const SlopeAzimuth& az, const AzimuthLadder::Piece* const* pieces, int n,
@@ -77,7 +77,7 @@ struct ScalarSlopeNodes {
       for (int i = 0; i < 15; ++i) {
         const double t = az.two_b * pieces[p]->s2[i];
         const double v = az.v_min + t;
-        const double f = ndf->StdP22(az.r2_0 + az.r2_t * t) * (v * v);
+        const double f = ndf->UnitP22(az.r2_0 + az.r2_t * t) * (v * v);
         sums[0] += rule.wk[i] * f;
         sums[1] += rule.wg[i] * f;
         if (az.with_bias) {
@@ -95,7 +95,7 @@ struct ScalarSlopeNodes {
 };
 
 // The integrands over theta_i of E and dfg.bias for an isotropic
-// slope-space model (BeckmannNdf, StdNdf: StdLambda and StdP22).
+// slope-space model (BeckmannNdf, StudentTNdf: UnitLambda and UnitP22).
 template <class Ndf>
 class SlopeAzimuthalE : public AzimuthalFrame {
  public:
@@ -178,12 +178,12 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     return out;
   }
 
-  // Lambda of a direction at cos mu, sin s: StdLambda(mu / (alpha s)); +inf
+  // Lambda of a direction at cos mu, sin s: UnitLambda(mu / (alpha s)); +inf
   // on the horizon, 0 along the normal.
   double LambdaAt(double mu, double s) const {
     if (!(mu > 0)) return std::numeric_limits<double>::infinity();
     if (!(s > 0)) return 0.0;
-    return ndf_->StdLambda(mu / (alpha_ * s));
+    return ndf_->UnitLambda(mu / (alpha_ * s));
   }
 
   const Ndf* ndf_;

@@ -320,7 +320,8 @@ TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texe
   if (m == ModelKind::kBeckmann) return TexelFor(BeckmannNdf<double>(alpha), mu, spec, texel_seed);
 #endif
 #if BRDFBAKE_WITH_STD
-  if (m == ModelKind::kStudentT) return TexelFor(StdNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
+  if (m == ModelKind::kStudentT)
+    return TexelFor(StudentTNdf<double>(alpha, alpha, spec.model.gamma), mu, spec, texel_seed);
 #endif
   return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);  // ValidateBakeSpec admits no other
 }
@@ -362,7 +363,7 @@ std::string ModelJson(const BakeSpec& spec) {
     j["gamma"] = "the gamma axis (brdfbake.axes); its last value inf is beckmann";
   } else if (spec.model.kind == ModelKind::kStudentT) {
     if (std::isinf(spec.model.gamma)) j["gamma"] = "inf"; else j["gamma"] = spec.model.gamma;
-    if (std::isfinite(spec.model.gamma) && spec.model.gamma >= kStdBeckmannLimitGamma) {
+    if (std::isfinite(spec.model.gamma) && spec.model.gamma >= kStudentTBeckmannLimitGamma) {
       j["evaluated_as"] = "beckmann (the limit gamma -> inf; gamma >= 1e20 agrees with it to double precision)";
     }
   }

@@ -126,9 +126,9 @@ void BeckmannSampleRow(const BeckmannBatchParams& p, const float* u1, const floa
 }
 
 #if BRDFBAKE_WITH_STD
-// The STD rows run the Beckmann kernels when gamma >= kStdBeckmannGamma.
-void StdBrdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+// The STD rows run the Beckmann kernels when gamma >= kStudentTBeckmannGamma.
+void StudentTBrdfRow(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   WithFresnel(DF(), p, [&](const auto& fresnel) {
     WithMasking(p.masking, [&](auto separable) {
       if (c.beckmann) {
@@ -138,50 +138,50 @@ void StdBrdfRow(const StdBatchParams& p, const float* const* in, float* out, siz
         return;
       }
       ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-        return StdBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+        return StudentTBrdf(d, c, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
       });
     });
   });
 }
 
-void StdG1Row(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTG1Row(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) return BeckmannG1With(c.b, in, out, n);
   ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    const auto lambda = [&](auto x, auto y, auto z) { return StdLambda(d, c, x, y, z); };
+    const auto lambda = [&](auto x, auto y, auto z) { return StudentTLambda(d, c, x, y, z); };
     return G1FromLambda(d, lambda, v[0], v[1], v[2]);
   });
 }
-void StdG2Row(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTG2Row(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   const bool separable = p.masking == Masking::kSeparable;
   if (c.beckmann) return BeckmannG2With(c.b, separable, in, out, n);
   ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    const auto lambda = [&](auto x, auto y, auto z) { return StdLambda(d, c, x, y, z); };
+    const auto lambda = [&](auto x, auto y, auto z) { return StudentTLambda(d, c, x, y, z); };
     return G2FromLambda(d, separable, lambda, v[0], v[1], v[2], v[3], v[4], v[5]);
   });
 }
-void StdPdfNdfRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTPdfNdfRow(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) return BeckmannPdfNdfWith(c.b, in, out, n);
   ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    return hn::Mul(StdD(d, c, v[0], v[1], v[2]), hn::Max(v[2], hn::Zero(d)));
+    return hn::Mul(StudentTD(d, c, v[0], v[1], v[2]), hn::Max(v[2], hn::Zero(d)));
   });
 }
 
-void StdDRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTDRow(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) {
     ForEachVector<3>(in, 0.5f, out, n,
                      [&](auto d, const auto* v) { return BeckmannD(d, c.b, v[0], v[1], v[2]); });
     return;
   }
   ForEachVector<3>(in, 0.5f, out, n,
-                   [&](auto d, const auto* v) { return StdD(d, c, v[0], v[1], v[2]); });
+                   [&](auto d, const auto* v) { return StudentTD(d, c, v[0], v[1], v[2]); });
 }
 
-void StdLambdaRow(const StdBatchParams& p, const float* const* in, float* out, size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTLambdaRow(const StudentTBatchParams& p, const float* const* in, float* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) {
     ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
       return BeckmannLambda(d, c.b, v[0], v[1], v[2]);
@@ -189,12 +189,12 @@ void StdLambdaRow(const StdBatchParams& p, const float* const* in, float* out, s
     return;
   }
   ForEachVector<3>(in, 0.5f, out, n,
-                   [&](auto d, const auto* v) { return StdLambda(d, c, v[0], v[1], v[2]); });
+                   [&](auto d, const auto* v) { return StudentTLambda(d, c, v[0], v[1], v[2]); });
 }
 
-void StdSampleRow(const StdBatchParams& p, const float* u1, const float* u2, float* const* out,
-                  size_t n) {
-  const StdConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+void StudentTSampleRow(const StudentTBatchParams& p, const float* u1, const float* u2,
+                       float* const* out, size_t n) {
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) {
     ForEachSample(u1, u2, out, n, [&](auto d, auto v1, auto v2, auto* m) {
       BeckmannSampleNdf(d, c.b, v1, v2, &m[0], &m[1], &m[2]);
@@ -202,7 +202,7 @@ void StdSampleRow(const StdBatchParams& p, const float* u1, const float* u2, flo
     return;
   }
   ForEachSample(u1, u2, out, n, [&](auto d, auto v1, auto v2, auto* m) {
-    StdSampleNdf(d, c, v1, v2, &m[0], &m[1], &m[2]);
+    StudentTSampleNdf(d, c, v1, v2, &m[0], &m[1], &m[2]);
   });
 }
 
@@ -223,13 +223,13 @@ HWY_EXPORT(BeckmannG1Row);
 HWY_EXPORT(BeckmannG2Row);
 HWY_EXPORT(BeckmannPdfNdfRow);
 #if BRDFBAKE_WITH_STD
-HWY_EXPORT(StdBrdfRow);
-HWY_EXPORT(StdDRow);
-HWY_EXPORT(StdLambdaRow);
-HWY_EXPORT(StdSampleRow);
-HWY_EXPORT(StdG1Row);
-HWY_EXPORT(StdG2Row);
-HWY_EXPORT(StdPdfNdfRow);
+HWY_EXPORT(StudentTBrdfRow);
+HWY_EXPORT(StudentTDRow);
+HWY_EXPORT(StudentTLambdaRow);
+HWY_EXPORT(StudentTSampleRow);
+HWY_EXPORT(StudentTG1Row);
+HWY_EXPORT(StudentTG2Row);
+HWY_EXPORT(StudentTPdfNdfRow);
 #endif
 
 void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const float* u2,
@@ -240,11 +240,11 @@ void BeckmannSampleNdfBatch(const BeckmannBatchParams& p, const float* u1, const
 }
 
 #if BRDFBAKE_WITH_STD
-void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2, float* m_x,
-                       float* m_y, float* m_z, size_t n) {
+void StudentTSampleNdfBatch(const StudentTBatchParams& p, const float* u1, const float* u2,
+                            float* m_x, float* m_y, float* m_z, size_t n) {
   float* out[3] = {m_x, m_y, m_z};
   const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdSampleRow)(p, u1, u2, out, n);
+  HWY_DYNAMIC_DISPATCH(StudentTSampleRow)(p, u1, u2, out, n);
 }
 
 #endif  // BRDFBAKE_WITH_STD
@@ -271,12 +271,12 @@ BRDFBAKE_BATCH_3(BeckmannG1Batch, BeckmannBatchParams, BeckmannG1Row)
 BRDFBAKE_BATCH_6(BeckmannG2Batch, BeckmannBatchParams, BeckmannG2Row)
 BRDFBAKE_BATCH_3(BeckmannPdfNdfBatch, BeckmannBatchParams, BeckmannPdfNdfRow)
 #if BRDFBAKE_WITH_STD
-BRDFBAKE_BATCH_6(StdBrdfBatch, StdBatchParams, StdBrdfRow)
-BRDFBAKE_BATCH_3(StdDBatch, StdBatchParams, StdDRow)
-BRDFBAKE_BATCH_3(StdLambdaBatch, StdBatchParams, StdLambdaRow)
-BRDFBAKE_BATCH_3(StdG1Batch, StdBatchParams, StdG1Row)
-BRDFBAKE_BATCH_6(StdG2Batch, StdBatchParams, StdG2Row)
-BRDFBAKE_BATCH_3(StdPdfNdfBatch, StdBatchParams, StdPdfNdfRow)
+BRDFBAKE_BATCH_6(StudentTBrdfBatch, StudentTBatchParams, StudentTBrdfRow)
+BRDFBAKE_BATCH_3(StudentTDBatch, StudentTBatchParams, StudentTDRow)
+BRDFBAKE_BATCH_3(StudentTLambdaBatch, StudentTBatchParams, StudentTLambdaRow)
+BRDFBAKE_BATCH_3(StudentTG1Batch, StudentTBatchParams, StudentTG1Row)
+BRDFBAKE_BATCH_6(StudentTG2Batch, StudentTBatchParams, StudentTG2Row)
+BRDFBAKE_BATCH_3(StudentTPdfNdfBatch, StudentTBatchParams, StudentTPdfNdfRow)
 #endif  // BRDFBAKE_WITH_STD
 #undef BRDFBAKE_BATCH_3
 #undef BRDFBAKE_BATCH_6

@@ -40,19 +40,19 @@ void BeckmannPdfVisibleRow(const BeckmannBatchParams& p, const float* const* in,
 }
 
 #if BRDFBAKE_WITH_STD
-void StdSamplePseudoVnisRow(const StdBatchParams& p, const float* const* in, float* const* out,
-                            size_t n) {
-  const StdSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
+void StudentTSamplePseudoVnisRow(const StudentTBatchParams& p, const float* const* in,
+                                 float* const* out, size_t n) {
+  const StudentTSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
   ForEachVectorOut<5, 3>(in, 0.5f, out, n, [&](auto d, const auto* v, auto* r) {
-    StdSamplePseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], &r[0], &r[1], &r[2]);
+    StudentTSamplePseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], &r[0], &r[1], &r[2]);
   });
 }
 
-void StdPdfPseudoVnisRow(const StdBatchParams& p, const float* const* in, float* out,
+void StudentTPdfPseudoVnisRow(const StudentTBatchParams& p, const float* const* in, float* out,
                          size_t n) {
-  const StdSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
+  const StudentTSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
   ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
-    return StdPdfPseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
+    return StudentTPdfPseudoVnis(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
   });
 }
 
@@ -68,8 +68,8 @@ namespace brdfbake {
 HWY_EXPORT(BeckmannSampleVisibleRow);
 HWY_EXPORT(BeckmannPdfVisibleRow);
 #if BRDFBAKE_WITH_STD
-HWY_EXPORT(StdSamplePseudoVnisRow);
-HWY_EXPORT(StdPdfPseudoVnisRow);
+HWY_EXPORT(StudentTSamplePseudoVnisRow);
+HWY_EXPORT(StudentTPdfPseudoVnisRow);
 #endif
 
 void BeckmannSampleVisibleBatch(const BeckmannBatchParams& p, const float* wo_x,
@@ -90,21 +90,21 @@ void BeckmannPdfVisibleBatch(const BeckmannBatchParams& p, const float* wo_x, co
 }
 
 #if BRDFBAKE_WITH_STD
-void StdSamplePseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
-                              const float* wo_z, const float* u1, const float* u2, float* m_x,
-                              float* m_y, float* m_z, size_t n) {
+void StudentTSamplePseudoVnisBatch(const StudentTBatchParams& p, const float* wo_x,
+                                   const float* wo_y, const float* wo_z, const float* u1,
+                                   const float* u2, float* m_x, float* m_y, float* m_z, size_t n) {
   const float* in[5] = {wo_x, wo_y, wo_z, u1, u2};
   float* out[3] = {m_x, m_y, m_z};
   const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdSamplePseudoVnisRow)(p, in, out, n);
+  HWY_DYNAMIC_DISPATCH(StudentTSamplePseudoVnisRow)(p, in, out, n);
 }
 
-void StdPdfPseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
+void StudentTPdfPseudoVnisBatch(const StudentTBatchParams& p, const float* wo_x, const float* wo_y,
                            const float* wo_z, const float* m_x, const float* m_y,
                            const float* m_z, float* out, size_t n) {
   const float* in[6] = {wo_x, wo_y, wo_z, m_x, m_y, m_z};
   const FlushSubnormals ftz;
-  HWY_DYNAMIC_DISPATCH(StdPdfPseudoVnisRow)(p, in, out, n);
+  HWY_DYNAMIC_DISPATCH(StudentTPdfPseudoVnisRow)(p, in, out, n);
 }
 
 #endif  // BRDFBAKE_WITH_STD

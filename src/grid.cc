@@ -215,10 +215,10 @@ Grid EvalGrid(const GridRequest& req) {
 #endif
 #if BRDFBAKE_WITH_STD
         } else if (kind == ModelKind::kStudentT) {
-          StdBatchParams p;
+          StudentTBatchParams p;
           p.alpha_x = p.alpha_y = a;
           p.gamma = float(req.model.gamma);
-          StdG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
+          StudentTG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID
         } else {
@@ -262,13 +262,13 @@ Grid EvalGrid(const GridRequest& req) {
 #endif
 #if BRDFBAKE_WITH_STD
       } else if (kind == ModelKind::kStudentT) {
-        StdBatchParams p;
+        StudentTBatchParams p;
         p.alpha_x = ax;
         p.alpha_y = ay;
         p.gamma = float(req.model.gamma);
         SetBatchFresnel(req.fresnel, &p);
         p.masking = req.masking;
-        StdBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
+        StudentTBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
                      r.oz.data(), out, req.width);
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID

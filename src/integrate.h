@@ -53,8 +53,8 @@ struct VisibleSampler {
 };
 
 template <>
-struct VisibleSampler<StdNdf<double>> {
-  using Ndf = StdNdf<double>;
+struct VisibleSampler<StudentTNdf<double>> {
+  using Ndf = StudentTNdf<double>;
   static Vec3<double> Sample(const Ndf& ndf, const Vec3<double>& wo, double u1, double u2) {
     return ndf.SamplePseudoVnis(wo, u1, u2);
   }
@@ -152,7 +152,7 @@ template <class Ndf>
 double RimPower(const Ndf&) {
   return 0;
 }
-inline double RimPower(const StdNdf<double>& ndf) {
+inline double RimPower(const StudentTNdf<double>& ndf) {
   return std::isinf(ndf.gamma()) ? 0.0 : 2 - ndf.gamma();
 }
 
@@ -308,7 +308,7 @@ struct GgxDiskLines {
         // wi at -wo.z), so r2 is finite.
         const double r2 = (nh.x * nh.x + nh.y * nh.y) / (nh.z * nh.z);
         const double q = 1 + r2;
-        const double ratio = kPi<double> * F.ndf->StdP22(r2) * (q * q);
+        const double ratio = kPi<double> * F.ndf->UnitP22(r2) * (q * q);
         const double g2 = F.separable ? 1 / ((1 + lambda_wi) * (1 + F.lambda_wo))
                                       : 1 / (1 + lambda_wi + F.lambda_wo);
         v = ratio * g2 * (1 + F.lambda_ggx_wo);

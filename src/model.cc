@@ -64,12 +64,12 @@ class NdfModel : public Model {
 
 #if BRDFBAKE_WITH_STD
 template <>
-Vec3<double> NdfModel<StdNdf<double>>::Sample(const Vec3<double>& wo, double u1,
+Vec3<double> NdfModel<StudentTNdf<double>>::Sample(const Vec3<double>& wo, double u1,
                                               double u2) const {
   return ndf_.SamplePseudoVnis(wo, u1, u2);
 }
 template <>
-double NdfModel<StdNdf<double>>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
+double NdfModel<StudentTNdf<double>>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
   return ndf_.PdfPseudoVnis(wo, m);
 }
 #endif
@@ -230,8 +230,8 @@ std::unique_ptr<Model> MakeModel(const ModelParams& p) {
 #endif
 #if BRDFBAKE_WITH_STD
   if (p.kind == ModelKind::kStudentT) {
-    return std::make_unique<NdfModel<StdNdf<double>>>(
-        p, StdNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
+    return std::make_unique<NdfModel<StudentTNdf<double>>>(
+        p, StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
   }
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID

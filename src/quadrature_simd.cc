@@ -168,8 +168,9 @@ struct StudentTP22 {
   }
 };
 
-AzimuthalDfgResult StudentTAzimuthalTexel(const StdNdf<double>& ndf, double mu, Masking masking,
-                                          bool with_bias, double tol, int max_pieces) {
+AzimuthalDfgResult StudentTAzimuthalTexel(const StudentTNdf<double>& ndf, double mu,
+                                          Masking masking, bool with_bias, double tol,
+                                          int max_pieces) {
   const double g = ndf.gamma();
   if (std::isinf(g)) {
     return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
@@ -403,7 +404,7 @@ AzimuthalDfgResult SimdSlopeAzimuthalDfg(const BeckmannNdf<double>& ndf, double 
 #endif
 #if BRDFBAKE_WITH_STD
 HWY_EXPORT(StudentTAzimuthalTexel);
-AzimuthalDfgResult SimdSlopeAzimuthalDfg(const StdNdf<double>& ndf, double mu, Masking masking,
+AzimuthalDfgResult SimdSlopeAzimuthalDfg(const StudentTNdf<double>& ndf, double mu, Masking masking,
                                          bool with_bias, double tol, int max_pieces) {
   return HWY_DYNAMIC_DISPATCH(StudentTAzimuthalTexel)(ndf, mu, masking, with_bias, tol,
                                                       max_pieces);

@@ -39,7 +39,7 @@ AzimuthalDfgResult SimdSlopeAzimuthalDfg(const BeckmannNdf<double>& ndf, double 
                                          int max_pieces);
 #endif
 #if BRDFBAKE_WITH_STD
-AzimuthalDfgResult SimdSlopeAzimuthalDfg(const StdNdf<double>& ndf, double mu, Masking masking,
+AzimuthalDfgResult SimdSlopeAzimuthalDfg(const StudentTNdf<double>& ndf, double mu, Masking masking,
                                          bool with_bias, double tol, int max_pieces);
 #endif
 

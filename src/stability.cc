@@ -136,8 +136,8 @@ void Record(StabilityRow* row, double value, double ref, bool lambda, double bou
   row->max_error_over_bound = std::max(row->max_error_over_bound, err / bound);
 }
 
-// Squared standard slope of the normal m under the stretch (ax, ay).
-double StdSlope2(const Vec3<double>& m, double ax, double ay) {
+// Squared unit-roughness slope of the normal m under the stretch (ax, ay).
+double UnitSlope2(const Vec3<double>& m, double ax, double ay) {
   const double sx = m.x / ax, sy = m.y / ay;
   return (sx * sx + sy * sy) / (m.z * m.z);
 }
@@ -185,8 +185,8 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
     const bool beck = model == ModelKind::kBeckmann;
     const double gamma = beck ? std::numeric_limits<double>::infinity()
                               : static_cast<double>(static_cast<float>(p.gamma));
-    const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStdExpSlope;
-    const double brdf_slope = beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStdExpSlope;
+    const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStudentTExpSlope;
+    const double brdf_slope = beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStudentTExpSlope;
     if (beck) {
       BeckmannBatchParams bp;
       bp.alpha_x = ax;
@@ -196,19 +196,19 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
       BeckmannBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     } else {
 #if BRDFBAKE_WITH_STD
-      StdBatchParams bp;
+      StudentTBatchParams bp;
       bp.alpha_x = ax;
       bp.alpha_y = ay;
       bp.gamma = static_cast<float>(gamma);
-      StdDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
-      StdLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
-      StdBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
+      StudentTDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
+      StudentTLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
+      StudentTBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
 #endif
     }
-    const StdNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
+    const StudentTNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
     // The exponent E of the exponential factor (see kernel_bounds.h).
     auto exponent = [&](const Vec3<double>& n) {
-      const double r2 = StdSlope2(n, ax, ay);
+      const double r2 = UnitSlope2(n, ax, ay);
       return beck ? r2 : gamma * std::log1p(r2 / (gamma - 1));
     };
     const double e_m = exponent(m), e_h = exponent(Half(a, b));
@@ -326,8 +326,9 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
           MeasureFloat(BeckmannNdf<double>(p.ax, p.ay),
                        BeckmannNdf<float>(float(p.ax), float(p.ay)), m, a, b, sb, rows);
         } else if (kind == ModelKind::kStudentT) {
-          MeasureFloat(StdNdf<double>(p.ax, p.ay, p.gamma),
-                       StdNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), m, a, b, sb, rows);
+          MeasureFloat(StudentTNdf<double>(p.ax, p.ay, p.gamma),
+                       StudentTNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), m, a, b, sb,
+                       rows);
         } else {
           MeasureFloat(EllipsoidNdf<double>(p.ax, p.ay, p.tx, p.ty, p.tz),
                        EllipsoidNdf<float>(float(p.ax), float(p.ay), float(p.tx), float(p.ty),

@@ -64,13 +64,13 @@ TEST(AzimuthalSlopeTest, StudentTAgreesWithTheDiskQuadrature) {
   for (double gamma : {3.0, 30.0}) {
     for (double alpha : {0.01, 0.1, 1.0}) {
       AgreesWithTheDisk(("std " + std::to_string(gamma)).c_str(),
-                        StdNdf<double>(alpha, alpha, gamma), &worst);
+                        StudentTNdf<double>(alpha, alpha, gamma), &worst);
     }
   }
   // The heavy tail (the disk rule grades towards its rim and takes seconds
   // per texel here).
-  AgreesWithTheDisk("std 1.55", StdNdf<double>(0.1, 0.1, 1.55), &worst, {1e-7, 0.5});
-  AgreesWithTheDisk("std 1.55", StdNdf<double>(1.0, 1.0, 1.55), &worst, {0.02});
+  AgreesWithTheDisk("std 1.55", StudentTNdf<double>(0.1, 0.1, 1.55), &worst, {1e-7, 0.5});
+  AgreesWithTheDisk("std 1.55", StudentTNdf<double>(1.0, 1.0, 1.55), &worst, {0.02});
   std::printf("std: max |1D - 2D| over E, bias, scale = %.3g\n", worst);
 }
 #endif
@@ -97,7 +97,7 @@ TEST(AzimuthalSlopeTest, ClaimsBoundTheErrorAtLooseTolerances) {
   for (double alpha : {1e-4, 0.01, 0.3, 1.0}) {
     check(BeckmannNdf<double>(alpha));
 #if BRDFBAKE_WITH_STD
-    check(StdNdf<double>(alpha, alpha, 1.6));
+    check(StudentTNdf<double>(alpha, alpha, 1.6));
 #endif
   }
   std::printf("max true error / claim: %.3g\n", worst_ratio);

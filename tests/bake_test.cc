@@ -424,9 +424,10 @@ TEST(BakeTest, ExtremeTablesAgreeWithIndependentIntegration) {
         double ref = 1.0;  // mirror row
         if (r > 0) {
           const double alpha = r * r;
-          ref = std::string(c.model) == "std"
-                    ? ReferenceEFor(StdNdf<double>(alpha, alpha, c.gamma), mu, c.masking, 1e-10)
-                    : ReferenceEFor(BeckmannNdf<double>(alpha), mu, c.masking, 1e-10);
+          ref =
+              std::string(c.model) == "std"
+                  ? ReferenceEFor(StudentTNdf<double>(alpha, alpha, c.gamma), mu, c.masking, 1e-10)
+                  : ReferenceEFor(BeckmannNdf<double>(alpha), mu, c.masking, 1e-10);
         }
         worst = std::max(worst, std::abs(value - ref));
         EXPECT_NEAR(value, ref, 1e-5) << c.model << " gamma=" << c.gamma << " r=" << r

@@ -155,11 +155,11 @@ TEST(CancellationTest, CosineNearTheHorizon) {
 // STD at very large gamma: (1 + r^2/(gamma-1))^-gamma and the constants of
 // Lambda never form (gamma - 1)^gamma; D and Lambda stay finite and tend to
 // Beckmann like 1/gamma.
-TEST(CancellationTest, StdAtHugeGamma) {
+TEST(CancellationTest, StudentTAtHugeGamma) {
   const double alpha = 0.4;
   const BeckmannNdf<double> beck(alpha);
   for (double gamma : {200.0, 1e3, 1e6, 1e9, 1e15}) {
-    const StdNdf<double> sn(alpha, alpha, gamma);
+    const StudentTNdf<double> sn(alpha, alpha, gamma);
     for (double mu : {1.0, 0.9, 0.5, 0.1, 1e-4}) {
       const Vec3<double> w = FromMuPhi(mu, 0.3);
       const double d = sn.D(w), l = sn.Lambda(w);
@@ -231,7 +231,7 @@ TEST(CancellationTest, HalfVectorOfOppositeDirections) {
     const Vec3<double> wid(wi), wod(wo);
     EXPECT_EQ(Brdf(GgxNdf<double>(0.3), Fresnel::One(), wid, wod, Masking::kHeightCorrelated), 0.0);
     EXPECT_EQ(Brdf(BeckmannNdf<double>(0.3), Fresnel::One(), wid, wod, Masking::kSeparable), 0.0);
-    EXPECT_EQ(Brdf(StdNdf<double>(0.3, 0.3, 1.8), Fresnel::One(), wid, wod,
+    EXPECT_EQ(Brdf(StudentTNdf<double>(0.3, 0.3, 1.8), Fresnel::One(), wid, wod,
                    Masking::kHeightCorrelated),
               0.0);
     float out[4] = {-1, -1, -1, -1};
@@ -239,9 +239,9 @@ TEST(CancellationTest, HalfVectorOfOppositeDirections) {
     GgxBrdfBatch(gp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[0], 1);
     BeckmannBatchParams bp;
     BeckmannBrdfBatch(bp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[1], 1);
-    StdBatchParams sp;
+    StudentTBatchParams sp;
     sp.gamma = 1.8f;
-    StdBrdfBatch(sp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[2], 1);
+    StudentTBrdfBatch(sp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[2], 1);
     EllipsoidBatchParams ep;
     ep.theta_x = 0.5f;
     EllipsoidBrdfBatch(ep, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[3], 1);

@@ -104,7 +104,7 @@ TEST(GammaAxisTest, AgreesWithIndependentIntegration) {
         const double alpha = r * r;
         const double ref = std::isinf(gamma)
                                ? ReferenceEFor(BeckmannNdf<double>(alpha), mu, spec.masking, 1e-10)
-                               : ReferenceEFor(StdNdf<double>(alpha, alpha, gamma), mu,
+                               : ReferenceEFor(StudentTNdf<double>(alpha, alpha, gamma), mu,
                                                spec.masking, 1e-10);
         const double v = t.channels[0].values[(k * 4 + y) * 4 + x];
         worst = std::max(worst, std::abs(v - ref));

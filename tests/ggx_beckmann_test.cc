@@ -74,7 +74,7 @@ void CheckLambdaIntegral(const char* name, double (*p2)(double)) {
         integrator.integrate([&](double t) { return t * p2(a + t); }, 0.0,
                              std::numeric_limits<double>::infinity(), 1e-14) /
         a;
-    const double lambda = ndf.StdLambda(a);
+    const double lambda = ndf.UnitLambda(a);
     const double rel = std::abs(lambda - integral) / integral;
     worst = std::max(worst, rel);
     EXPECT_LT(rel, 1e-10) << name << " a=" << a << " " << lambda << " vs " << integral;

@@ -65,7 +65,7 @@ TEST(ModelTest, RejectsBadParametersWithOneLineMessages) {
   }
 }
 
-TEST(ModelTest, StdGammaTwoIsGgxAndInfinityIsBeckmann) {
+TEST(ModelTest, StudentTGammaTwoIsGgxAndInfinityIsBeckmann) {
   ModelParams g;
   g.kind = ModelKind::kGgx;
   g.alpha_x = 0.3;

@@ -121,7 +121,7 @@ TEST(PropertyTest, FloatReferencesAreFinite) {
     const float ax = float(p.alpha_x), ay = float(p.alpha_y);
     CheckFloat(GgxNdf<float>(ax, ay), s, "ggx");
     CheckFloat(BeckmannNdf<float>(ax, ay), s, "beckmann");
-    CheckFloat(StdNdf<float>(ax, ay, float(p.gamma)), s, "std");
+    CheckFloat(StudentTNdf<float>(ax, ay, float(p.gamma)), s, "std");
     CheckFloat(EllipsoidNdf<float>(ax, ay, float(p.theta_x), float(p.theta_y), float(p.theta_z)),
                s, "ellipsoid");
     const SelLobe<float> sel = SelLobe<float>::FromAngles(ax, ay, float(p.theta_x),

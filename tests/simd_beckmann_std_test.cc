@@ -51,9 +51,10 @@ constexpr double kIerfcRel = 3e-7;     // IerfcScaled
 constexpr double kExpNegSqRel = 1.5e-7; // ExpNegSquare where normal
 // (bounds:: in include/brdfbake/kernel_bounds.h states them for the library.)
 constexpr double kBeckDRel = 1e-6, kBeckLambda = 1e-6, kBeckBrdfRel = 2e-6;
-constexpr double kStdDRel = 1e-6, kStdLambda = 1e-6, kStdBrdfRel = 2e-6;
+constexpr double kStudentTDRel = 1e-6, kStudentTLambda = 1e-6, kStudentTBrdfRel = 2e-6;
 // Relative error per unit of the exponent (Beckmann r2 and a^2, STD E).
-constexpr double kExpSlope = bounds::kBeckmannExpSlope, kStdExpSlope = bounds::kStdExpSlope;
+constexpr double kExpSlope = bounds::kBeckmannExpSlope,
+                 kStudentTExpSlope = bounds::kStudentTExpSlope;
 constexpr double kBrdfExpSlope = bounds::kBeckmannBrdfExpSlope;
 static_assert(kBeckDRel + kExpSlope == bounds::SlopeD(1, bounds::kBeckmannExpSlope) &&
                   kBeckBrdfRel + kBrdfExpSlope == bounds::SlopeBrdf(1, kBrdfExpSlope),
@@ -184,9 +185,9 @@ double SlopeR2(const Vec3<double>& m, double ax, double ay) {
   const double sx = m.x / ax, sy = m.y / ay;
   return (sx * sx + sy * sy) / (m.z * m.z);
 }
-double StdExponentE(double r2, double gamma) {
+double StudentTExponentE(double r2, double gamma) {
   if (std::isinf(gamma) || gamma >= 1e10) return r2;
-  const double g = std::max(gamma, kMinStdGamma<double>);
+  const double g = std::max(gamma, kMinStudentTGamma<double>);
   return g * std::log1p(r2 / (g - 1));
 }
 double LambdaA(const Vec3<double>& w, double ax, double ay) {
@@ -204,7 +205,7 @@ void CheckDLambda(const Dirs& m, const std::vector<float>& d_out,
                   double* worst_l, const char* what) {
   for (size_t i = 0; i < m.size(); ++i) {
     const Vec3<double> v = m.At(i);
-    const double e = StdExponentE(SlopeR2(v, ax, ay), gamma);
+    const double e = StudentTExponentE(SlopeR2(v, ax, ay), gamma);
     const double rd = ref_d(v);
     const double qd = ExpScaledRatio(d_out[i], rd, e, d_rel, slope);
     if (e <= kFlushExponent && rd > 1e-36) worst_d[0] = std::max(worst_d[0], RelErr(d_out[i], rd));
@@ -256,31 +257,33 @@ const float kGammas[] = {1.5f, 1.501f, 1.6f, 2.0f, 3.0f, 7.5f, 30.0f, 1e4f, 1e6f
                          std::numeric_limits<float>::infinity()};
 
 #if BRDFBAKE_WITH_STD
-void CheckStdDAndLambda() {
+void CheckStudentTDAndLambda() {
   const Dirs m = TestDirs(8000, 13);
   std::vector<float> d_out(m.size()), l_out(m.size());
   for (float gamma : kGammas) {
     double worst_d[2] = {0, 0}, worst_l = 0;
     for (const auto& al : kAlphas) {
-      StdBatchParams p;
+      StudentTBatchParams p;
       p.alpha_x = al[0];
       p.alpha_y = al[1];
       p.gamma = gamma;
-      const StdNdf<double> ndf(al[0], al[1], gamma);
-      StdDBatch(p, m.x.data(), m.y.data(), m.z.data(), d_out.data(), m.size());
-      StdLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), l_out.data(), m.size());
-      CheckDLambda(m, d_out, l_out, [&](const Vec3<double>& v) { return ndf.D(v); },
-                   [&](const Vec3<double>& v) { return ndf.Lambda(v); }, ndf.alpha_x(),
-                   ndf.alpha_y(), gamma, kStdDRel, kStdExpSlope, kStdLambda, worst_d, &worst_l, "STD");
+      const StudentTNdf<double> ndf(al[0], al[1], gamma);
+      StudentTDBatch(p, m.x.data(), m.y.data(), m.z.data(), d_out.data(), m.size());
+      StudentTLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), l_out.data(), m.size());
+      CheckDLambda(
+          m, d_out, l_out, [&](const Vec3<double>& v) { return ndf.D(v); },
+          [&](const Vec3<double>& v) { return ndf.Lambda(v); }, ndf.alpha_x(), ndf.alpha_y(), gamma,
+          kStudentTDRel, kStudentTExpSlope, kStudentTLambda, worst_d, &worst_l, "STD");
       if (::testing::Test::HasFailure()) {
         std::printf("gamma %g alpha %g %g\n", gamma, al[0], al[1]);
         return;
       }
     }
-    std::printf("%s: STD gamma %g: D max rel error %.3g at E <= 1, %.3g at E <= 87 (bound %.1g + "
-                "%.2g E), Lambda %.3g (bound %.1g)\n",
-                hwy::TargetName(HWY_TARGET), gamma, worst_d[1], worst_d[0], kStdDRel, kStdExpSlope,
-                worst_l, kStdLambda);
+    std::printf(
+        "%s: STD gamma %g: D max rel error %.3g at E <= 1, %.3g at E <= 87 (bound %.1g + "
+        "%.2g E), Lambda %.3g (bound %.1g)\n",
+        hwy::TargetName(HWY_TARGET), gamma, worst_d[1], worst_d[0], kStudentTDRel,
+        kStudentTExpSlope, worst_l, kStudentTLambda);
   }
 }
 #endif  // BRDFBAKE_WITH_STD
@@ -298,7 +301,7 @@ void CheckBrdf(const char* name, const Ndf& ndf, double gamma, const Batch& batc
         const Vec3<double> a = wi.At(i), b = wo.At(i);
         const double ref = Brdf(ndf, fr, a, b, masking);
         const Vec3<double> s = a + b;
-        const double e = StdExponentE(SlopeR2(s, ndf.alpha_x(), ndf.alpha_y()), gamma);
+        const double e = StudentTExponentE(SlopeR2(s, ndf.alpha_x(), ndf.alpha_y()), gamma);
         const double q = ExpScaledRatio(out[i], ref, e, rel, slope);
         if (e <= kFlushExponent && ref > 1e-36) worst[0] = std::max(worst[0], RelErr(out[i], ref));
         if (e <= 1) worst[1] = std::max(worst[1], RelErr(out[i], ref));
@@ -326,32 +329,35 @@ void CheckBeckmannBrdf() {
     }, wi, wo, kBeckBrdfRel, kBrdfExpSlope, worst);
     if (::testing::Test::HasFailure()) return;
   }
-  std::printf("%s: Beckmann BRDF max rel error %.3g at r2 <= 1, %.3g at r2 <= 87 (bound %.1g + %.2g r2)\n",
-              hwy::TargetName(HWY_TARGET), worst[1], worst[0], kBeckBrdfRel, kBrdfExpSlope);
+  std::printf(
+      "%s: Beckmann BRDF max rel error %.3g at r2 <= 1, %.3g at r2 <= 87 (bound %.1g + %.2g r2)\n",
+      hwy::TargetName(HWY_TARGET), worst[1], worst[0], kBeckBrdfRel, kBrdfExpSlope);
 }
 
 #if BRDFBAKE_WITH_STD
-void CheckStdBrdf() {
+void CheckStudentTBrdf() {
   const Dirs wi = TestDirs(6000, 11), wo = TestDirs(6000, 12);
   for (float gamma : kGammas) {
     double worst[2] = {0, 0};
     for (const auto& al : kAlphas) {
-      const StdNdf<double> ndf(al[0], al[1], gamma);
+      const StudentTNdf<double> ndf(al[0], al[1], gamma);
       CheckBrdf("STD", ndf, gamma, [&](Masking masking, float f0, float* out) {
-        StdBatchParams p;
+        StudentTBatchParams p;
         p.alpha_x = al[0];
         p.alpha_y = al[1];
         p.gamma = gamma;
         p.f0 = f0;
         p.masking = masking;
-        StdBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
+        StudentTBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
                      wo.z.data(), out, wi.size());
-      }, wi, wo, kStdBrdfRel, kStdExpSlope, worst);
+      }, wi, wo, kStudentTBrdfRel, kStudentTExpSlope, worst);
       if (::testing::Test::HasFailure()) return;
     }
-    std::printf("%s: STD gamma %g: BRDF max rel error %.3g at E <= 1, %.3g at E <= 87 (bound %.1g + "
-                "%.2g E)\n",
-                hwy::TargetName(HWY_TARGET), gamma, worst[1], worst[0], kStdBrdfRel, kStdExpSlope);
+    std::printf(
+        "%s: STD gamma %g: BRDF max rel error %.3g at E <= 1, %.3g at E <= 87 (bound %.1g + "
+        "%.2g E)\n",
+        hwy::TargetName(HWY_TARGET), gamma, worst[1], worst[0], kStudentTBrdfRel,
+        kStudentTExpSlope);
   }
 }
 #endif  // BRDFBAKE_WITH_STD
@@ -397,12 +403,12 @@ void CheckSamplersMatchScalar() {
     }
 #if BRDFBAKE_WITH_STD
     for (float gamma : kGammas) {
-      StdBatchParams sp;
+      StudentTBatchParams sp;
       sp.alpha_x = al[0];
       sp.alpha_y = al[1];
       sp.gamma = gamma;
-      StdSampleNdfBatch(sp, u1.data(), u2.data(), mx.data(), my.data(), mz.data(), n);
-      const StdNdf<double> sndf(al[0], al[1], gamma);
+      StudentTSampleNdfBatch(sp, u1.data(), u2.data(), mx.data(), my.data(), mz.data(), n);
+      const StudentTNdf<double> sndf(al[0], al[1], gamma);
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> ref = sndf.SampleNdf(u1[i], u2[i]);
         ASSERT_LE(compare(ref, i, &worst_s), kSampleAbs)
@@ -454,7 +460,7 @@ void CheckCountsAndSentinels() {
   bp.alpha_x = 0.3f;
   bp.alpha_y = 0.1f;
 #if BRDFBAKE_WITH_STD
-  StdBatchParams sp;
+  StudentTBatchParams sp;
   sp.gamma = 2.7f;
   const size_t o3 = wi.size() - 64;  // directions from the a-sweep mix both STD forms
 #endif
@@ -474,18 +480,19 @@ void CheckCountsAndSentinels() {
   });
 #if BRDFBAKE_WITH_STD
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StdBrdfBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
+    StudentTBrdfBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
                  wo.y.data() + o, wo.z.data() + o, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StdDBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, dst, n);
+    StudentTDBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StdLambdaBatch(sp, wi.x.data() + o3 + o, wi.y.data() + o3 + o, wi.z.data() + o3 + o, dst,
+    StudentTLambdaBatch(sp, wi.x.data() + o3 + o, wi.y.data() + o3 + o, wi.z.data() + o3 + o, dst,
                    n);
   });
   CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
-    StdSampleNdfBatch(sp, u1.data() + o, u2.data() + o, dst, dst + stride, dst + 2 * stride, n);
+    StudentTSampleNdfBatch(sp, u1.data() + o, u2.data() + o, dst, dst + stride, dst + 2 * stride,
+                           n);
   });
 #endif
 }
@@ -505,9 +512,9 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckSamplersMatchScalar);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckCountsAndSentinels);
 
 #if BRDFBAKE_WITH_STD
-HWY_BEFORE_TEST(SimdStdTest);
-HWY_EXPORT_AND_TEST_P(SimdStdTest, CheckStdDAndLambda);
-HWY_EXPORT_AND_TEST_P(SimdStdTest, CheckStdBrdf);
+HWY_BEFORE_TEST(SimdStudentTTest);
+HWY_EXPORT_AND_TEST_P(SimdStudentTTest, CheckStudentTDAndLambda);
+HWY_EXPORT_AND_TEST_P(SimdStudentTTest, CheckStudentTBrdf);
 #endif
 }  // namespace brdfbake
 #endif

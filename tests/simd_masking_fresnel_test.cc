@@ -137,7 +137,7 @@ Model Ggx(float ax, float ay) {
 // Beckmann (gamma = inf) or STD.
 Model Slope(float ax, float ay, float gamma) {
   const bool beck = std::isinf(gamma);
-  const StdNdf<double> ndf(ax, ay, gamma);
+  const StudentTNdf<double> ndf(ax, ay, gamma);
   Model m;
   m.name = beck ? "beckmann" : "std gamma " + std::to_string(gamma);
   if (beck) {
@@ -161,24 +161,24 @@ Model Slope(float ax, float ay, float gamma) {
                         o.z.data(), out->data(), i.x.size());
     };
   } else {
-    StdBatchParams p;
+    StudentTBatchParams p;
     p.alpha_x = ax;
     p.alpha_y = ay;
     p.gamma = gamma;
     m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {
-      StdG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
+      StudentTG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
     };
     m.g2 = [p](Masking mk, const Dirs& i, const Dirs& o, std::vector<float>* out) {
-      StdBatchParams q = p;
+      StudentTBatchParams q = p;
       q.masking = mk;
-      StdG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
+      StudentTG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
                  out->data(), i.x.size());
     };
     m.brdf = [p](Masking mk, BatchFresnel kind, float eta, float k, const Dirs& i,
                  const Dirs& o, std::vector<float>* out) {
-      StdBatchParams q = p;
+      StudentTBatchParams q = p;
       SetFresnel(&q, mk, kind, eta, k);
-      StdBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
+      StudentTBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
                    out->data(), i.x.size());
     };
   }
@@ -199,7 +199,7 @@ Model Slope(float ax, float ay, float gamma) {
   };
   m.brdf_bound = [exponent, beck](const Vec3<double>& wi, const Vec3<double>& wo) {
     return bounds::SlopeBrdf(exponent(wi, wo),
-                             beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStdExpSlope);
+                             beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStudentTExpSlope);
   };
   m.may_flush = [exponent](const Vec3<double>& wi, const Vec3<double>& wo) {
     return exponent(wi, wo) > bounds::kFlushExponent;
@@ -310,16 +310,16 @@ void CheckPdfNdfAgainstScalar() {
   double worst = 0;
   for (float gamma : {INFINITY, 1.6f, 3.0f}) {
     for (float alpha : {1e-3f, 0.1f, 0.7f}) {
-      const StdNdf<double> ndf(alpha, alpha, gamma);
+      const StudentTNdf<double> ndf(alpha, alpha, gamma);
       if (std::isinf(gamma)) {
         BeckmannBatchParams p;
         p.alpha_x = p.alpha_y = alpha;
         BeckmannPdfNdfBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
       } else {
-        StdBatchParams p;
+        StudentTBatchParams p;
         p.alpha_x = p.alpha_y = alpha;
         p.gamma = gamma;
-        StdPdfNdfBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
+        StudentTPdfNdfBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
       }
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> v = m.At(i);
@@ -333,7 +333,7 @@ void CheckPdfNdfAgainstScalar() {
         if (e > bounds::kFlushExponent) continue;  // subnormal exponential, may be 0
         const double bound =
             bounds::SlopeD(e, std::isinf(gamma) ? bounds::kBeckmannExpSlope
-                                                : bounds::kStdExpSlope) + kG2Rounding;
+                                                : bounds::kStudentTExpSlope) + kG2Rounding;
         const double err = RelErr(out[i], ref);
         worst = std::max(worst, err / bound);
         ASSERT_LE(err, bound) << "gamma " << gamma << " alpha " << alpha << " i=" << i;
@@ -407,7 +407,7 @@ void CheckCountsAndSentinels() {
   gp.fresnel = BatchFresnel::kConductor;
   gp.eta = 0.2f;
   gp.k = 3.0f;
-  StdBatchParams sp;
+  StudentTBatchParams sp;
   sp.gamma = 2.5f;
   for (size_t off = 0; off < 3; ++off) {
     for (size_t n = 0; n <= max_n; ++n) {
@@ -421,8 +421,8 @@ void CheckCountsAndSentinels() {
         const float* oy = wo.y.data() + off;
         const float* oz = wo.z.data() + off;
         if (which == 0) GgxBrdfBatch(gp, ix, iy, iz, ox, oy, oz, out, n);
-        if (which == 1) StdG2Batch(sp, ix, iy, iz, ox, oy, oz, out, n);
-        if (which == 2) StdPdfNdfBatch(sp, ix, iy, iz, out, n);
+        if (which == 1) StudentTG2Batch(sp, ix, iy, iz, ox, oy, oz, out, n);
+        if (which == 2) StudentTPdfNdfBatch(sp, ix, iy, iz, out, n);
         for (size_t k = 0; k < buf.size(); ++k) {
           const bool inside = k >= 16 + off && k < 16 + off + n;
           if (inside) {

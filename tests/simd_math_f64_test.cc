@@ -7,7 +7,7 @@
 // full-mantissa points, and Beckmann's Lambda(a) swept log-uniformly over
 // [1e-8, 30], uniformly over [0, 30], at the subnormal and overflow edges,
 // and at a = 0, negative a, +-inf and NaN, and against its scalar twin
-// BeckmannNdf<double>::StdLambda. Each check asserts the bound documented
+// BeckmannNdf<double>::UnitLambda. Each check asserts the bound documented
 // beside the kernel and prints the observed maximum.
 
 #include <algorithm>
@@ -194,7 +194,7 @@ void CheckBeckmannLambdaF64() {
   const std::vector<double>& as = simd_math_f64_test::LambdaArgs();
   const std::vector<Ref>& refs = simd_math_f64_test::LambdaRefs();
   const auto got = MapF64(as, [](auto d, auto v) { return BeckmannLambdaF64(d, v); });
-  const BeckmannNdf<double> ndf(1.0);  // the scalar twin, StdLambda
+  const BeckmannNdf<double> ndf(1.0);  // the scalar twin, UnitLambda
   double worst_bound = 0, worst_rel = 0, worst_a = 0, worst_sub = 0;
   double worst_twin = 0, worst_scalar = 0, worst_scalar_rel = 0;
   for (size_t i = 0; i < as.size(); ++i) {
@@ -214,7 +214,7 @@ void CheckBeckmannLambdaF64() {
     // large a costs relative, not absolute, accuracy): the two agree to the
     // sum of their errors.
     if (a >= 1e-300 && a <= 26) {
-      const double twin = ndf.StdLambda(a);
+      const double twin = ndf.UnitLambda(a);
       const double twin_err = AbsErr(twin, ref);
       worst_scalar = std::max(worst_scalar, twin_err / std::max(1.0, ref.hi));
       worst_scalar_rel = std::max(worst_scalar_rel, twin_err / ref.hi);
@@ -239,9 +239,10 @@ void CheckBeckmannLambdaF64() {
               "points)\n",
               hwy::TargetName(HWY_TARGET), worst_bound, kLambdaBound, worst_rel, worst_a,
               kLambdaRel, worst_sub, as.size());
-  std::printf("%s: |BeckmannLambdaF64 - StdLambda| / max(1, Lambda) %.3g; StdLambda itself: %.3g, "
-              "max rel error %.3g (a <= 26)\n",
-              hwy::TargetName(HWY_TARGET), worst_twin, worst_scalar, worst_scalar_rel);
+  std::printf(
+      "%s: |BeckmannLambdaF64 - UnitLambda| / max(1, Lambda) %.3g; UnitLambda itself: %.3g, "
+      "max rel error %.3g (a <= 26)\n",
+      hwy::TargetName(HWY_TARGET), worst_twin, worst_scalar, worst_scalar_rel);
 }
 
 }  // namespace

@@ -56,7 +56,7 @@ constexpr double kPdfRel = 2e-6;      // densities: plus kPdfDot / (w.m) for the
 constexpr double kPdfDot = 2e-7;
 // Relative error of D per unit of its exponent; the batch calls flush
 // densities whose exponential factor is below FLT_MIN (kernel_bounds.h).
-constexpr double kBeckSlope = bounds::kBeckmannExpSlope, kStdSlope = bounds::kStdExpSlope;
+constexpr double kBeckSlope = bounds::kBeckmannExpSlope, kStudentTSlope = bounds::kStudentTExpSlope;
 constexpr double kFlushExponent = bounds::kFlushExponent;
 
 const char* Target() { return hwy::TargetName(HWY_TARGET); }
@@ -115,7 +115,7 @@ double DExponent(const Vec3<double>& m, double ax, double ay, double gamma) {
   const double sx = m.x / ax, sy = m.y / ay;
   const double r2 = (sx * sx + sy * sy) / (m.z * m.z);
   if (std::isinf(gamma) || gamma >= 1e10) return r2;
-  const double g = std::max(gamma, kMinStdGamma<double>);
+  const double g = std::max(gamma, kMinStudentTGamma<double>);
   return g * std::log1p(r2 / (g - 1));
 }
 
@@ -243,7 +243,7 @@ void CheckBeckmannSampleVisible() {
 // Every branch of Algorithm 1: sigma <= 0.01 (NDF), gamma > 10 (Beckmann),
 // the GGX, NDF and Beckmann bands between.
 #if BRDFBAKE_WITH_STD
-void CheckStdPseudoVnis() {
+void CheckStudentTPseudoVnis() {
   const size_t n = 4000;
   const Dirs wo = Views(n, 21);
   const std::vector<float> u1 = Uniforms(n, 22), u2 = Uniforms(n, 23);
@@ -257,22 +257,22 @@ void CheckStdPseudoVnis() {
   int cases[3] = {0, 0, 0};
   for (float gamma : gammas) {
     for (const auto& a : alphas) {
-      StdBatchParams p;
+      StudentTBatchParams p;
       p.alpha_x = a[0];
       p.alpha_y = a[1];
       p.gamma = gamma;
-      const StdNdf<double> ndf(a[0], a[1], gamma);
+      const StudentTNdf<double> ndf(a[0], a[1], gamma);
       const int branch = ndf.PseudoVnisBranch();
       ++cases[branch];
-      StdSamplePseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
+      StudentTSamplePseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
                                mx.data(), my.data(), mz.data(), n);
-      StdPdfPseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
+      StudentTPdfPseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
                             mz.data(), pdf.data(), n);
       const bool visible = branch != 0;
-      const double slope = branch == 1 ? 0.0 : branch == 2 ? kBeckSlope : kStdSlope;
+      const double slope = branch == 1 ? 0.0 : branch == 2 ? kBeckSlope : kStudentTSlope;
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> w = wo.At(i), got(mx[i], my[i], mz[i]);
-        // u2 = 1 is outside the NDF sampler's [0, 1) (StdSampleNdf clamps it
+        // u2 = 1 is outside the NDF sampler's [0, 1) (StudentTSampleNdf clamps it
         // to 1 - 2^-24, the reference to 1 - 2^-53).
         if (branch == 0 && u2[i] == 1.0f) continue;
         const Vec3<double> ref = ndf.SamplePseudoVnis(w, u1[i], u2[i]);
@@ -337,15 +337,16 @@ void CheckSamplingCountsAndSentinels() {
 #if BRDFBAKE_WITH_STD
   // gamma 3.3 at sigma 0.3: GGX; 7 at sigma 0.2: NDF; 12: Beckmann.
   for (float gamma : {3.3f, 7.0f, 12.0f}) {
-    StdBatchParams sp;
+    StudentTBatchParams sp;
     sp.alpha_x = 0.3f;
     sp.alpha_y = gamma == 7.0f ? 0.3f * 0.4444f : 0.3f;
     sp.gamma = gamma;
     CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-      StdSamplePseudoVnisBatch(sp, in[0], in[1], in[2], in[6], in[7], out[0], out[1], out[2], n);
+      StudentTSamplePseudoVnisBatch(sp, in[0], in[1], in[2], in[6], in[7], out[0], out[1], out[2],
+                                    n);
     });
     CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-      StdPdfPseudoVnisBatch(sp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
+      StudentTPdfPseudoVnisBatch(sp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
     });
   }
 #endif
@@ -363,8 +364,8 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannSamplingTest, CheckBeckmannSampleVisible);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannSamplingTest, CheckSamplingCountsAndSentinels);
 
 #if BRDFBAKE_WITH_STD
-HWY_BEFORE_TEST(SimdStdSamplingTest);
-HWY_EXPORT_AND_TEST_P(SimdStdSamplingTest, CheckStdPseudoVnis);
+HWY_BEFORE_TEST(SimdStudentTSamplingTest);
+HWY_EXPORT_AND_TEST_P(SimdStudentTSamplingTest, CheckStudentTPseudoVnis);
 #endif
 }  // namespace brdfbake
 #endif

@@ -7,7 +7,7 @@
 //  - against 40-digit values (Boost.Multiprecision cpp_bin_float<40>) on a
 //    quarter-decade grid of a over [1e-8, 1e8], both sides of each form
 //    switch (a = 4, u = 1) and out to 1e-300 and 1e300;
-//  - against the scalar twin StdNdf<double>::StdLambda on 3001 log-spaced a
+//  - against the scalar twin StudentTNdf<double>::UnitLambda on 3001 log-spaced a
 //    in [1e-8, 1e8] (random low bits) per gamma;
 //  - the special values (a <= 0, +inf, tiny and huge a), and that a lane's
 //    value does not depend on its neighbours (the branches that skip a form
@@ -96,7 +96,7 @@ inline Big LambdaBig(double gamma, const Big& kt, double a_d) {
     return kt / a * e * (gm1 / (2 * g - 3) + w * sum) - Big(0.5);
   }
   // (S) with G = 2F1(1, 3/2; gamma + 1; -v) by the Stieltjes fraction of
-  // std_detail::StdHyp2F1G (modified Lentz).
+  // student_t_detail::StudentTHyp2F1G (modified Lentz).
   const Big v = gm1 / (a * a);
   Big h = 1, cc = 1, dd = 0;
   for (int n = 1; n < 100000; ++n) {
@@ -237,7 +237,7 @@ void CheckAgainstFortyDigits() {
     std::vector<double> as;
     while (end < cases.size() && cases[end].gamma == gamma) as.push_back(cases[end++].a);
     const StudentTLambdaF64Consts c(gamma);
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     const std::vector<double> got = Map(c, as);
     for (size_t k = 0; k < as.size(); ++k) {
       const double a = as[k];
@@ -262,14 +262,14 @@ void CheckAgainstFortyDigits() {
           worst_rel[form] = rel, worst_rel_g[form] = gamma, worst_rel_a[form] = a;
         }
       }
-      worst_twin = std::max(worst_twin, AbsErr(ndf.StdLambda(a), ref) / std::max(1.0, ref.hi));
+      worst_twin = std::max(worst_twin, AbsErr(ndf.UnitLambda(a), ref) / std::max(1.0, ref.hi));
       // A lane's value does not depend on its neighbours.
       ASSERT_EQ(One(c, a), got[k]) << "gamma=" << gamma << " a=" << a;
     }
     i = end;
   }
   std::printf("%s: StudentTLambdaF64 vs 40 digits (%zu points): max |err| / max(1, Lambda) %.3g "
-              "at gamma=%g a=%.17g (bound %.2g); scalar StdLambda: %.3g\n",
+              "at gamma=%g a=%.17g (bound %.2g); scalar UnitLambda: %.3g\n",
               hwy::TargetName(HWY_TARGET), cases.size(), worst, worst_g, worst_a, kBound,
               worst_twin);
   std::printf("%s:   forms X, L: max rel error / (%.2g + %.2g expo + quadrature) %.3g\n",
@@ -287,17 +287,17 @@ void CheckAgainstScalarTwin() {
   double worst = 0, worst_g = 0, worst_a = 0;
   for (double gamma : simd_std_f64_test::Gammas()) {
     const StudentTLambdaF64Consts c(gamma);
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     const std::vector<double> got = Map(c, as);
     for (size_t k = 0; k < as.size(); ++k) {
-      const double ref = ndf.StdLambda(as[k]);
+      const double ref = ndf.UnitLambda(as[k]);
       const double diff = std::abs(got[k] - ref) / std::max(1.0, ref);
       ASSERT_LE(diff, kTwinBound) << "gamma=" << gamma << " a=" << as[k] << " got " << got[k]
                                   << " scalar " << ref;
       if (diff > worst) worst = diff, worst_g = gamma, worst_a = as[k];
     }
   }
-  std::printf("%s: |StudentTLambdaF64 - StdLambda| / max(1, Lambda) max %.3g at gamma=%g a=%.17g "
+  std::printf("%s: |StudentTLambdaF64 - UnitLambda| / max(1, Lambda) max %.3g at gamma=%g a=%.17g "
               "(%zu a x %zu gamma, bound %.2g)\n",
               hwy::TargetName(HWY_TARGET), worst, worst_g, worst_a, as.size(),
               simd_std_f64_test::Gammas().size(), kTwinBound);
@@ -326,9 +326,9 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 namespace brdfbake {
-HWY_BEFORE_TEST(SimdStdF64Test);
-HWY_EXPORT_AND_TEST_P(SimdStdF64Test, CheckAgainstFortyDigits);
-HWY_EXPORT_AND_TEST_P(SimdStdF64Test, CheckAgainstScalarTwin);
-HWY_EXPORT_AND_TEST_P(SimdStdF64Test, CheckSpecialValues);
+HWY_BEFORE_TEST(SimdStudentTF64Test);
+HWY_EXPORT_AND_TEST_P(SimdStudentTF64Test, CheckAgainstFortyDigits);
+HWY_EXPORT_AND_TEST_P(SimdStudentTF64Test, CheckAgainstScalarTwin);
+HWY_EXPORT_AND_TEST_P(SimdStudentTF64Test, CheckSpecialValues);
 }  // namespace brdfbake
 #endif

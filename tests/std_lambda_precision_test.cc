@@ -58,7 +58,7 @@ double LambdaRef(double gamma, double a) {
   return static_cast<double>(result / ba);
 }
 
-TEST(StdLambdaPrecisionTest, DoubleAndSimdAgainstFortyDigits) {
+TEST(StudentTLambdaPrecisionTest, DoubleAndSimdAgainstFortyDigits) {
   const double gammas[] = {1.501, 1.6, 2.0, 2.5, 3.7, 10.0, 100.0, 1e4, 1e6,
                            std::numeric_limits<double>::infinity()};
   std::vector<float> wx, wy, wz;
@@ -66,13 +66,13 @@ TEST(StdLambdaPrecisionTest, DoubleAndSimdAgainstFortyDigits) {
   double worst_double = 0, worst_simd = 0;
   int points = 0;
   for (double gamma : gammas) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     wx.clear(); wy.clear(); wz.clear(); refs.clear(); as.clear();
     for (int k = -8; k <= 8; ++k) {
       const double a = std::pow(10.0, k);
       const double ref = LambdaRef(gamma, a);
       if (!(ref > 1e-280)) continue;  // below what double represents
-      const double got = ndf.StdLambda(a);
+      const double got = ndf.UnitLambda(a);
       const double rel = std::abs(got - ref) / ref;
       worst_double = std::max(worst_double, rel);
       EXPECT_LT(rel, 1e-9) << "gamma=" << gamma << " a=" << a << " got " << got << " ref " << ref;
@@ -88,11 +88,11 @@ TEST(StdLambdaPrecisionTest, DoubleAndSimdAgainstFortyDigits) {
       as.push_back(static_cast<double>(wz.back()) / static_cast<double>(wx.back()));
       refs.push_back(LambdaRef(double(float(gamma)), as.back()));
     }
-    StdBatchParams p;
+    StudentTBatchParams p;
     p.alpha_x = p.alpha_y = 1.0f;
     p.gamma = static_cast<float>(gamma);
     std::vector<float> out(wx.size());
-    StdLambdaBatch(p, wx.data(), wy.data(), wz.data(), out.data(), out.size());
+    StudentTLambdaBatch(p, wx.data(), wy.data(), wz.data(), out.data(), out.size());
     for (size_t i = 0; i < out.size(); ++i) {
       // The kernel's stated bound: |err| / max(1, Lambda) <= 1e-6.
       const double err = std::abs(out[i] - refs[i]) / std::max(1.0, refs[i]);

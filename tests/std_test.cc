@@ -47,24 +47,24 @@ std::vector<double> LogGrid(double lo, double hi, int n) {
 
 // The unit-roughness slope density integrates to 1 over the slope plane:
 // int_0^inf pi P22(s) ds = 1 (s = r^2).
-TEST(StdTest, SlopeDensityIsNormalized) {
+TEST(StudentTTest, SlopeDensityIsNormalized) {
   boost::math::quadrature::exp_sinh<double> integrator;
   for (double gamma : {1.6, 2.0, 2.5, 7.5, 100.0}) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     // s = t^2 spreads the heavy tail (P22 ~ s^-gamma) over a wider range.
     const double integral = integrator.integrate(
-        [&](double t) { return 2.0 * t * kPi<double> * ndf.StdP22(t * t); }, 0.0, kInf, 1e-14);
+        [&](double t) { return 2.0 * t * kPi<double> * ndf.UnitP22(t * t); }, 0.0, kInf, 1e-14);
     std::printf("gamma=%g  int pi P22 ds = %.15f\n", gamma, integral);
     EXPECT_NEAR(integral, 1.0, 1e-12) << gamma;
   }
 }
 
-TEST(StdTest, DIsNormalized) {
+TEST(StudentTTest, DIsNormalized) {
   const Params params[] = {{0.5, 0.5, 1.6}, {0.3, 0.3, 2.5}, {0.5, 0.5, 7.5},
                            {0.5, 0.1, 1.6}, {0.5, 0.1, 2.5}, {0.5, 0.1, 7.5},
                            {1.0, 1.0, 3.0}, {0.2, 0.6, 20.0}};
   for (const Params& p : params) {
-    const StdNdf<double> ndf(p.ax, p.ay, p.gamma);
+    const StudentTNdf<double> ndf(p.ax, p.ay, p.gamma);
     const double integral = test::IntegrateHemisphereTheta(
         [&](const test::Dir& m) { return ndf.D(m) * m.z; }, 0.0, kPi<double> / 2, 1e-10);
     std::printf("std ax=%g ay=%g gamma=%g  int D cos = %.12f\n", p.ax, p.ay, p.gamma, integral);
@@ -110,14 +110,14 @@ double IntegrateVisibleHemisphereSingular(const std::function<double(const test:
 }
 
 // Smith: int G1(v) max(0, v.m) D(m) dm = v.z.
-TEST(StdTest, ProjectedAreaIdentity) {
+TEST(StudentTTest, ProjectedAreaIdentity) {
   const Params params[] = {{0.5, 0.5, 1.6}, {0.4, 0.4, 3.3}, {0.5, 0.1, 7.5},
                            {0.6, 0.3, 2.5}, {0.3, 0.3, 1000.0}, {0.1, 0.5, 1.6}};
   const double mus[] = {1.0, 0.6, 0.1};
   const double phis[] = {0.0, 0.9, 2.2};
   double worst = 0;
   for (const Params& p : params) {
-    const StdNdf<double> ndf(p.ax, p.ay, p.gamma);
+    const StudentTNdf<double> ndf(p.ax, p.ay, p.gamma);
     for (double mu : mus) {
       for (double phi : phis) {
         if (mu == 1.0 && phi != 0.0) continue;
@@ -164,18 +164,18 @@ double LambdaByQuadrature(double gamma, double a) {
   return std::exp(log_p2a) * (near + far) / a;
 }
 
-TEST(StdTest, LambdaMatchesEq17Integral) {
+TEST(StudentTTest, LambdaMatchesEq17Integral) {
   const double gammas[] = {1.6, 2, 2.5, 3, 3.5, 4, 7.5, 20, 100};
   const std::vector<double> as = LogGrid(1e-3, 1e3, 31);
   const double kTol = 1e-11;  // relative; measured max 2.3e-13 (gamma = 100)
   for (double gamma : gammas) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     double worst = 0;
     int n = 0;
     for (double a : as) {
       const double ref = LambdaByQuadrature(gamma, a);
       if (!(ref > 1e-280)) continue;  // underflow of the reference
-      const double lambda = ndf.StdLambda(a);
+      const double lambda = ndf.UnitLambda(a);
       const double rel = std::abs(lambda - ref) / ref;
       worst = std::max(worst, rel);
       ++n;
@@ -190,25 +190,25 @@ TEST(StdTest, LambdaMatchesEq17Integral) {
 // ---------------------------------------------------------------------------
 // Closed forms (seed 004 section 4) and Table 1
 
-TEST(StdTest, HasClosedForm) {
+TEST(StudentTTest, HasClosedForm) {
   for (double g : {2.0, 2.5, 3.0, 3.5, 4.0, 7.5, 20.0, 100.0, 100.5}) {
-    EXPECT_TRUE(StdHasClosedForm(g)) << g;
+    EXPECT_TRUE(StudentTHasClosedForm(g)) << g;
   }
   for (double g : {1.5, 1.6, 2.25, 3.3, 1e9, kInf, std::nan("")}) {
-    EXPECT_FALSE(StdHasClosedForm(g)) << g;
+    EXPECT_FALSE(StudentTHasClosedForm(g)) << g;
   }
-  EXPECT_TRUE(std::isnan(StdLambdaClosedForm(3.3, 1.0)));
+  EXPECT_TRUE(std::isnan(StudentTLambdaClosedForm(3.3, 1.0)));
 }
 
-TEST(StdTest, LambdaMatchesClosedForms) {
+TEST(StudentTTest, LambdaMatchesClosedForms) {
   const double gammas[] = {2, 2.5, 3, 3.5, 4, 7.5, 20, 100};
   const std::vector<double> as = LogGrid(1e-3, 1e3, 61);
   for (double gamma : gammas) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     double worst_abs = 0, worst_rel = 0;
     for (double a : as) {
-      const double lambda = ndf.StdLambda(a);
-      const double closed = StdLambdaClosedForm(gamma, a);
+      const double lambda = ndf.UnitLambda(a);
+      const double closed = StudentTLambdaClosedForm(gamma, a);
       // The closed forms end in a subtraction (of 1/2 or so): their
       // absolute error is ~1e-16 (1 + Lambda), so relative accuracy is only
       // expected where Lambda is not small.
@@ -220,7 +220,7 @@ TEST(StdTest, LambdaMatchesClosedForms) {
         EXPECT_LT(err, 1e-11 * lambda) << "gamma=" << gamma << " a=" << a;
       }
     }
-    std::printf("gamma=%-5g closed form vs StdLambda: max |diff|/(1+L) %.3g, rel (L>1e-3) %.3g\n",
+    std::printf("gamma=%-5g closed form vs UnitLambda: max |diff|/(1+L) %.3g, rel (L>1e-3) %.3g\n",
                 gamma, worst_abs, worst_rel);
   }
 }
@@ -260,10 +260,10 @@ double Table1PrintedRow35(double mu, double s) {
              (6 * pi * mu * s * (2 * m2 + 5 * s2));
 }
 
-TEST(StdTest, Table1Rows) {
+TEST(StudentTTest, Table1Rows) {
   const double s = 0.6;  // the rows depend on mu / s only
   for (double gamma : {2.0, 2.5, 3.0, 3.5, 4.0, kInf}) {
-    const StdNdf<double> ndf(s, s, gamma);
+    const StudentTNdf<double> ndf(s, s, gamma);
     double worst = 0;
     for (double mu : LogGrid(1e-2, 2.0, 15)) {
       const test::Dir w = Normalize(test::Dir(1.0, 0.0, mu));  // cot(theta) = mu
@@ -276,9 +276,9 @@ TEST(StdTest, Table1Rows) {
     std::printf("Table 1 row gamma=%g: max rel diff %.3g (mu/sigma in [1/60, 10/3])\n", gamma,
                 worst);
   }
-  const StdNdf<double> ndf(s, s, 3.5);
+  const StudentTNdf<double> ndf(s, s, 3.5);
   for (double mu : {0.1, 1.0, 3.0}) {
-    const double lambda = ndf.StdLambda(mu / s);
+    const double lambda = ndf.UnitLambda(mu / s);
     const double printed = Table1PrintedRow35(mu, s);
     std::printf("Table 1 gamma=7/2 as printed at mu=%g: %.6g (true %.6g)\n", mu, printed, lambda);
     EXPECT_GT(std::abs(printed - lambda), 0.5 * lambda);
@@ -299,9 +299,9 @@ std::vector<test::Dir> RandomDirections(int n, uint64_t seed) {
   return dirs;
 }
 
-TEST(StdTest, Gamma2IsGgx) {
+TEST(StudentTTest, Gamma2IsGgx) {
   for (const auto& [ax, ay] : {std::pair{0.4, 0.15}, std::pair{0.05, 0.9}, std::pair{1.0, 1.0}}) {
-    const StdNdf<double> std_ndf(ax, ay, 2.0);
+    const StudentTNdf<double> std_ndf(ax, ay, 2.0);
     const GgxNdf<double> ggx(ax, ay);
     double worst_d = 0, worst_l = 0, worst_s = 0;
     for (const test::Dir& w : RandomDirections(2000, 3)) {
@@ -325,15 +325,15 @@ TEST(StdTest, Gamma2IsGgx) {
   }
 }
 
-TEST(StdTest, GammaInfinityIsBeckmannExactly) {
-  const StdNdf<double> std_ndf(0.3, 0.7, kInf);
+TEST(StudentTTest, GammaInfinityIsBeckmannExactly) {
+  const StudentTNdf<double> std_ndf(0.3, 0.7, kInf);
   const BeckmannNdf<double> beckmann(0.3, 0.7);
   for (const test::Dir& w : RandomDirections(500, 4)) {
     EXPECT_EQ(std_ndf.D(w), beckmann.D(w));
     EXPECT_EQ(std_ndf.Lambda(w), beckmann.Lambda(w));
   }
   for (double u : {0.0, 1e-12, 0.3, 0.999, 1.0}) {
-    EXPECT_EQ(std_ndf.StdSampleR2(u), beckmann.StdSampleR2(u));
+    EXPECT_EQ(std_ndf.UnitSampleR2(u), beckmann.UnitSampleR2(u));
     const test::Dir a = std_ndf.SampleNdf(0.37, u), b = beckmann.SampleNdf(0.37, u);
     EXPECT_EQ(a.x, b.x);
     EXPECT_EQ(a.z, b.z);
@@ -344,12 +344,12 @@ TEST(StdTest, GammaInfinityIsBeckmannExactly) {
 // = (r^4/2 - r^2) / gamma + O(gamma^-2): D differs from Beckmann by
 // O((r^2 + r^4/2) / gamma). Lambda's relative difference is O((1 + a^4) /
 // gamma) (the tail is the first to feel the heavier Student law).
-TEST(StdTest, LargeGammaApproachesBeckmann) {
+TEST(StudentTTest, LargeGammaApproachesBeckmann) {
   const double ax = 0.3, ay = 0.5;
   const BeckmannNdf<double> beckmann(ax, ay);
   double worst_d = 0, worst_l = 0;
   for (double gamma : {1e5, 1e6}) {
-    const StdNdf<double> std_ndf(ax, ay, gamma);
+    const StudentTNdf<double> std_ndf(ax, ay, gamma);
     for (const test::Dir& w : RandomDirections(2000, 6)) {
       const double sx = w.x / (ax * w.z), sy = w.y / (ay * w.z), r2 = sx * sx + sy * sy;
       if (r2 > 30) continue;
@@ -362,10 +362,10 @@ TEST(StdTest, LargeGammaApproachesBeckmann) {
   // Lambda: gamma (Lambda_std / Lambda_beck - 1) = c(a) + O(1/gamma), with
   // c(a) <= 1.3 (1 + a^4) (measured) and c(0) = 3/8: for a -> 0, Lambda ->
   // K / ((2 gamma - 3) m) = (1 + 3/(8 gamma) + O(gamma^-2)) / (2 a sqrt(pi)).
-  const StdNdf<double> s5(1, 1, 1e5), s6(1, 1, 1e6);
+  const StudentTNdf<double> s5(1, 1, 1e5), s6(1, 1, 1e6);
   for (double a : LogGrid(1e-3, 20.0, 40)) {
-    const double lb = beckmann.StdLambda(a);
-    const double d5 = s5.StdLambda(a) / lb - 1, d6 = s6.StdLambda(a) / lb - 1;
+    const double lb = beckmann.UnitLambda(a);
+    const double d5 = s5.UnitLambda(a) / lb - 1, d6 = s6.UnitLambda(a) / lb - 1;
     EXPECT_LE(std::abs(d6), 1.5 * (1 + a * a * a * a) / 1e6) << "a=" << a;
     EXPECT_GT(d6, 0.0) << "a=" << a;  // the Student tail is heavier
     worst_l = std::max(worst_l, std::abs(d6));
@@ -377,7 +377,7 @@ TEST(StdTest, LargeGammaApproachesBeckmann) {
   // K switches from Boost's tgamma_delta_ratio to its asymptotic series.
   for (double gamma : {1e6, 1e9, 1e12}) {
     const double c0 =
-        gamma * (StdNdf<double>(1, 1, gamma).StdLambda(1e-3) / beckmann.StdLambda(1e-3) - 1);
+        gamma * (StudentTNdf<double>(1, 1, gamma).UnitLambda(1e-3) / beckmann.UnitLambda(1e-3) - 1);
     EXPECT_NEAR(c0, 0.375, 2e-3) << "gamma=" << gamma;
   }
   std::printf("gamma=1e6 vs Beckmann: D max rel diff %.3g (r^2 <= 30), Lambda max rel diff %.3g"
@@ -385,14 +385,14 @@ TEST(StdTest, LargeGammaApproachesBeckmann) {
               worst_d, worst_l);
 }
 
-TEST(StdTest, LambdaMonotoneFinitePositive) {
+TEST(StudentTTest, LambdaMonotoneFinitePositive) {
   const std::vector<double> as = LogGrid(1e-4, 1e4, 2001);
   for (double gamma : {1.0, 1.5, 1.5000001, 1.5001, 1.6, 2.0, 2.5, 3.3, 7.5, 20.0, 100.0,
                        1e4, 1e6, 1e12, kInf}) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     double prev = kInf;
     for (double a : as) {
-      const double l = ndf.StdLambda(a);
+      const double l = ndf.UnitLambda(a);
       ASSERT_TRUE(std::isfinite(l)) << "gamma=" << gamma << " a=" << a;
       ASSERT_GE(l, 0.0) << "gamma=" << gamma << " a=" << a;
       if (gamma < 10) {
@@ -406,11 +406,11 @@ TEST(StdTest, LambdaMonotoneFinitePositive) {
   }
   // gamma is clamped at 1.5 + 1e-6; Lambda grows as gamma -> 1.5 (the mean
   // slope diverges like 1 / (2 gamma - 3)) but stays finite.
-  EXPECT_EQ(StdNdf<double>(0.5, 0.5, 1.2).gamma(), kMinStdGamma<double>);
+  EXPECT_EQ(StudentTNdf<double>(0.5, 0.5, 1.2).gamma(), kMinStudentTGamma<double>);
   for (double a : {1e-3, 0.1, 1.0, 10.0, 1e3}) {
     double prev = 0;
     for (double gamma : {1.6, 1.55, 1.51, 1.501, 1.5001, 1.50001, 1.5}) {
-      const double l = StdNdf<double>(1.0, 1.0, gamma).StdLambda(a);
+      const double l = StudentTNdf<double>(1.0, 1.0, gamma).UnitLambda(a);
       EXPECT_TRUE(std::isfinite(l));
       EXPECT_GT(l, prev) << "a=" << a << " gamma=" << gamma;
       prev = l;
@@ -418,7 +418,7 @@ TEST(StdTest, LambdaMonotoneFinitePositive) {
     std::printf("a=%-6g Lambda at gamma=1.5+1e-6: %.6g\n", a, prev);
   }
   // And the full directional API stays finite at grazing angles.
-  const StdNdf<double> ndf(1e-4, 1.0, 1.5);
+  const StudentTNdf<double> ndf(1e-4, 1.0, 1.5);
   for (double mu : {1e-6, 1e-3, 0.5, 1.0}) {
     const test::Dir w = FromMuPhi(mu, 0.3);
     EXPECT_TRUE(std::isfinite(ndf.Lambda(w)));
@@ -429,11 +429,11 @@ TEST(StdTest, LambdaMonotoneFinitePositive) {
 // ---------------------------------------------------------------------------
 // Sampling
 
-TEST(StdTest, SampleR2InvertsRadialCdf) {
+TEST(StudentTTest, SampleR2InvertsRadialCdf) {
   for (double gamma : {1.5001, 1.6, 2.0, 3.3, 20.0, 1e6}) {
-    const StdNdf<double> ndf(1.0, 1.0, gamma);
+    const StudentTNdf<double> ndf(1.0, 1.0, gamma);
     for (double u : {1e-15, 1e-9, 1e-3, 0.3, 0.9, 0.999999}) {
-      const double r2 = ndf.StdSampleR2(u);
+      const double r2 = ndf.UnitSampleR2(u);
       // CDF(r^2) = 1 - (1 + r^2/(gamma-1))^(1-gamma) (seed 004 eq. 41-42).
       const double cdf = -std::expm1((1 - gamma) * std::log1p(r2 / (gamma - 1)));
       EXPECT_NEAR(cdf, u, 1e-13 * u) << "gamma=" << gamma << " u=" << u;
@@ -449,11 +449,11 @@ void ExpectChiSquare(const char* what, const test::ChiSquareResult& r) {
   EXPECT_GT(r.p_value, test::ChiSquareAlpha(kChiSquareTests)) << what;
 }
 
-TEST(StdTest, NdfSamplingChiSquare) {
+TEST(StudentTTest, NdfSamplingChiSquare) {
   const Params params[] = {{0.5, 0.5, 1.6}, {0.5, 0.5, 3.0}, {0.5, 0.5, 10.0},
                            {0.6, 0.2, 1.6}, {0.6, 0.2, 3.0}, {0.6, 0.2, 10.0}};
   for (const Params& p : params) {
-    const StdNdf<double> ndf(p.ax, p.ay, p.gamma);
+    const StudentTNdf<double> ndf(p.ax, p.ay, p.gamma);
     const auto r = test::ChiSquareDirections(
         [&](double u1, double u2, test::Dir* d) {
           *d = ndf.SampleNdf(u1, u2);
@@ -466,26 +466,26 @@ TEST(StdTest, NdfSamplingChiSquare) {
   }
 }
 
-TEST(StdTest, PseudoVnisBranches) {
+TEST(StudentTTest, PseudoVnisBranches) {
   // Algorithm 1 with sigma = sqrt(ax ay).
-  EXPECT_EQ(StdNdf<double>(0.005, 0.005, 3.0).PseudoVnisBranch(), 0);   // sigma <= 0.01
-  EXPECT_EQ(StdNdf<double>(0.005, 0.005, 50.0).PseudoVnisBranch(), 0);  // sigma first
-  EXPECT_EQ(StdNdf<double>(0.5, 0.5, 3.0).PseudoVnisBranch(), 1);     // GGX
-  EXPECT_EQ(StdNdf<double>(0.5, 0.5, 4.99).PseudoVnisBranch(), 1);    // upper = 5
-  EXPECT_EQ(StdNdf<double>(0.05, 0.05, 2.4).PseudoVnisBranch(), 1);   // upper = 2.5
-  EXPECT_EQ(StdNdf<double>(0.05, 0.05, 2.6).PseudoVnisBranch(), 0);   // gap
-  EXPECT_EQ(StdNdf<double>(0.15, 0.15, 6.0).PseudoVnisBranch(), 0);   // gap
-  EXPECT_EQ(StdNdf<double>(0.35, 0.35, 6.0).PseudoVnisBranch(), 2);   // lower = 5
-  EXPECT_EQ(StdNdf<double>(0.25, 0.25, 7.0).PseudoVnisBranch(), 0);   // lower = 7.5
-  EXPECT_EQ(StdNdf<double>(0.25, 0.25, 8.0).PseudoVnisBranch(), 2);
-  EXPECT_EQ(StdNdf<double>(0.05, 0.05, 10.5).PseudoVnisBranch(), 2);  // gamma > 10
-  EXPECT_EQ(StdNdf<double>(0.3, 0.3, kInf).PseudoVnisBranch(), 2);
+  EXPECT_EQ(StudentTNdf<double>(0.005, 0.005, 3.0).PseudoVnisBranch(), 0);   // sigma <= 0.01
+  EXPECT_EQ(StudentTNdf<double>(0.005, 0.005, 50.0).PseudoVnisBranch(), 0);  // sigma first
+  EXPECT_EQ(StudentTNdf<double>(0.5, 0.5, 3.0).PseudoVnisBranch(), 1);     // GGX
+  EXPECT_EQ(StudentTNdf<double>(0.5, 0.5, 4.99).PseudoVnisBranch(), 1);    // upper = 5
+  EXPECT_EQ(StudentTNdf<double>(0.05, 0.05, 2.4).PseudoVnisBranch(), 1);   // upper = 2.5
+  EXPECT_EQ(StudentTNdf<double>(0.05, 0.05, 2.6).PseudoVnisBranch(), 0);   // gap
+  EXPECT_EQ(StudentTNdf<double>(0.15, 0.15, 6.0).PseudoVnisBranch(), 0);   // gap
+  EXPECT_EQ(StudentTNdf<double>(0.35, 0.35, 6.0).PseudoVnisBranch(), 2);   // lower = 5
+  EXPECT_EQ(StudentTNdf<double>(0.25, 0.25, 7.0).PseudoVnisBranch(), 0);   // lower = 7.5
+  EXPECT_EQ(StudentTNdf<double>(0.25, 0.25, 8.0).PseudoVnisBranch(), 2);
+  EXPECT_EQ(StudentTNdf<double>(0.05, 0.05, 10.5).PseudoVnisBranch(), 2);  // gamma > 10
+  EXPECT_EQ(StudentTNdf<double>(0.3, 0.3, kInf).PseudoVnisBranch(), 2);
   // Anisotropic: sigma = sqrt(0.8 * 0.05) = 0.2 -> GGX upper bound 4.
-  EXPECT_EQ(StdNdf<double>(0.8, 0.05, 3.9).PseudoVnisBranch(), 1);
-  EXPECT_EQ(StdNdf<double>(0.8, 0.05, 4.1).PseudoVnisBranch(), 0);
+  EXPECT_EQ(StudentTNdf<double>(0.8, 0.05, 3.9).PseudoVnisBranch(), 1);
+  EXPECT_EQ(StudentTNdf<double>(0.8, 0.05, 4.1).PseudoVnisBranch(), 0);
 }
 
-TEST(StdTest, PseudoVnisChiSquare) {
+TEST(StudentTTest, PseudoVnisChiSquare) {
   struct Case {
     Params p;
     double mu, phi;
@@ -499,7 +499,7 @@ TEST(StdTest, PseudoVnisChiSquare) {
       {{0.3, 0.3, 1.6}, 0.5, 0.2, 1}};
   static_assert(6 + sizeof(cases) / sizeof(cases[0]) == kChiSquareTests);
   for (const Case& c : cases) {
-    const StdNdf<double> ndf(c.p.ax, c.p.ay, c.p.gamma);
+    const StudentTNdf<double> ndf(c.p.ax, c.p.ay, c.p.gamma);
     ASSERT_EQ(ndf.PseudoVnisBranch(), c.branch);
     const test::Dir w = FromMuPhi(c.mu, c.phi);
     const auto r = test::ChiSquareDirections(
@@ -521,16 +521,16 @@ TEST(StdTest, PseudoVnisChiSquare) {
 // ---------------------------------------------------------------------------
 // float
 
-TEST(StdTest, FloatMatchesDouble) {
+TEST(StudentTTest, FloatMatchesDouble) {
   double worst_l = 0, worst_d = 0;
   for (float gamma : {1.6f, 2.0f, 3.3f, 7.5f, 100.0f, 1e6f}) {
-    const StdNdf<float> nf(0.4f, 0.25f, gamma);
-    const StdNdf<double> nd(0.4, 0.25, static_cast<double>(gamma));
+    const StudentTNdf<float> nf(0.4f, 0.25f, gamma);
+    const StudentTNdf<double> nd(0.4, 0.25, static_cast<double>(gamma));
     for (double a : LogGrid(1e-3, 1e2, 60)) {
       const float af = static_cast<float>(a);
-      const double ld = nd.StdLambda(af);
+      const double ld = nd.UnitLambda(af);
       if (!(ld > 1e-30)) continue;
-      const double rel = std::abs(nf.StdLambda(af) - ld) / ld;
+      const double rel = std::abs(nf.UnitLambda(af) - ld) / ld;
       worst_l = std::max(worst_l, rel);
       EXPECT_LT(rel, 1e-5) << "gamma=" << gamma << " a=" << a;
     }
@@ -552,7 +552,8 @@ TEST(StdTest, FloatMatchesDouble) {
     EXPECT_LT(Length(Vec3<double>(m) - md), 1e-5);
     EXPECT_GE(nf.PseudoVnisBranch(), 0);
   }
-  EXPECT_NEAR(StdLambdaClosedForm(3.0f, 0.7f), StdLambdaClosedForm(3.0, double(0.7f)), 1e-6);
+  EXPECT_NEAR(StudentTLambdaClosedForm(3.0f, 0.7f), StudentTLambdaClosedForm(3.0, double(0.7f)),
+              1e-6);
   std::printf("float vs double: Lambda max rel %.3g, D max rel/(1+E) %.3g\n", worst_l,
               worst_d);
 }

@@ -28,7 +28,7 @@ struct BeckmannBatchParams {
   float eta = 1.5f, k = 0.0f;
 };
 
-struct StdBatchParams {
+struct StudentTBatchParams {
   float alpha_x = 0.25f, alpha_y = 0.25f;  // the seed's sigma_x, sigma_y; clamped below at 1e-4
   float gamma = 2.0f;  // clamped below at 1.5 + 1e-6; +inf (and >= 1e10) is Beckmann
   float f0 = 1.0f;     // Schlick F0; 1 means F = 1
@@ -66,22 +66,22 @@ void BeckmannPdfNdfBatch(const BeckmannBatchParams& p, const float* m_x, const f
                          const float* m_z, float* out, size_t n);
 
 // The same seven for STD.
-void StdBrdfBatch(const StdBatchParams& p, const float* wi_x, const float* wi_y,
+void StudentTBrdfBatch(const StudentTBatchParams& p, const float* wi_x, const float* wi_y,
                   const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
                   float* out, size_t n);
-void StdDBatch(const StdBatchParams& p, const float* m_x, const float* m_y, const float* m_z,
-               float* out, size_t n);
-void StdLambdaBatch(const StdBatchParams& p, const float* w_x, const float* w_y,
+void StudentTDBatch(const StudentTBatchParams& p, const float* m_x, const float* m_y,
+                    const float* m_z, float* out, size_t n);
+void StudentTLambdaBatch(const StudentTBatchParams& p, const float* w_x, const float* w_y,
                     const float* w_z, float* out, size_t n);
-void StdSampleNdfBatch(const StdBatchParams& p, const float* u1, const float* u2, float* m_x,
-                       float* m_y, float* m_z, size_t n);
+void StudentTSampleNdfBatch(const StudentTBatchParams& p, const float* u1, const float* u2,
+                            float* m_x, float* m_y, float* m_z, size_t n);
 
-void StdG1Batch(const StdBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
-                float* out, size_t n);
-void StdG2Batch(const StdBatchParams& p, const float* wi_x, const float* wi_y,
+void StudentTG1Batch(const StudentTBatchParams& p, const float* w_x, const float* w_y,
+                     const float* w_z, float* out, size_t n);
+void StudentTG2Batch(const StudentTBatchParams& p, const float* wi_x, const float* wi_y,
                 const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
                 float* out, size_t n);
-void StdPdfNdfBatch(const StdBatchParams& p, const float* m_x, const float* m_y,
+void StudentTPdfNdfBatch(const StudentTBatchParams& p, const float* m_x, const float* m_y,
                     const float* m_z, float* out, size_t n);
 
 }  // namespace brdfbake

@@ -8,7 +8,7 @@
 // Highway type here. Each call runs with subnormals flushed to zero, as the
 // calls of batch_beckmann_std.h do. For the same (u1, u2) the samplers return
 // the normal of the scalar BeckmannNdf::SampleVisible and
-// StdNdf::SamplePseudoVnis; the kernels and their error bounds are in
+// StudentTNdf::SamplePseudoVnis; the kernels and their error bounds are in
 // src/simd/beckmann_sampling-inl.h and std_sampling-inl.h. Directions and
 // normals are unit vectors in the shading frame (n = +z); views with
 // wo.z <= 0 give m = (0, 0, 0); outputs may not alias inputs.
@@ -32,14 +32,14 @@ void BeckmannPdfVisibleBatch(const BeckmannBatchParams& p, const float* wo_x, co
                              const float* wo_z, const float* m_x, const float* m_y,
                              const float* m_z, float* out, size_t n);
 
-// STD pseudo-VNIS: the proposal of StdNdf::PseudoVnisBranch() for
+// STD pseudo-VNIS: the proposal of StudentTNdf::PseudoVnisBranch() for
 // (alpha_x, alpha_y, gamma) of p (NDF sampling, GGX or Beckmann visible
 // normals), for n views and uniform pairs.
-void StdSamplePseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
-                              const float* wo_z, const float* u1, const float* u2, float* m_x,
-                              float* m_y, float* m_z, size_t n);
-// Density of StdSamplePseudoVnisBatch (the proposal's, see std_ndf.h).
-void StdPdfPseudoVnisBatch(const StdBatchParams& p, const float* wo_x, const float* wo_y,
+void StudentTSamplePseudoVnisBatch(const StudentTBatchParams& p, const float* wo_x,
+                                   const float* wo_y, const float* wo_z, const float* u1,
+                                   const float* u2, float* m_x, float* m_y, float* m_z, size_t n);
+// Density of StudentTSamplePseudoVnisBatch (the proposal's, see std_ndf.h).
+void StudentTPdfPseudoVnisBatch(const StudentTBatchParams& p, const float* wo_x, const float* wo_y,
                            const float* wo_z, const float* m_x, const float* m_y,
                            const float* m_z, float* out, size_t n);
 

@@ -26,11 +26,11 @@ class BeckmannNdf : public SlopeNdf<T, BeckmannNdf<T>> {
   BeckmannNdf(T alpha_x, T alpha_y) : Base(alpha_x, alpha_y) {}
 
   // Standard slopes: P22 = exp(-r^2) / pi.
-  T StdP22(T r2) const { return kInvPi<T> * std::exp(-r2); }
+  T UnitP22(T r2) const { return kInvPi<T> * std::exp(-r2); }
   // Lambda = (exp(-a^2) / (a sqrt(pi)) - erfc(a)) / 2 (seed 004 Table 1,
   // gamma -> inf, with erf(a) - 1 written as -erfc(a) so that the small
   // tail keeps its relative precision).
-  T StdLambda(T a) const {
+  T UnitLambda(T a) const {
     if (a > T(26)) return T(0);  // exp(-a^2) underflows double here
     return T(0.5) * (std::exp(-a * a) / (a * kSqrtPi<T>) - std::erfc(a));
   }
@@ -41,7 +41,9 @@ class BeckmannNdf : public SlopeNdf<T, BeckmannNdf<T>> {
     return kInvPi<T> * std::exp(-s2 / z2 - this->LogAreaScale(z2));
   }
   // Radial CDF 1 - exp(-r^2)  =>  r^2 = -log(1 - u).
-  T StdSampleR2(T u) const { return -std::log1p(-std::min(u, T(1) - std::numeric_limits<T>::epsilon() / 2)); }
+  T UnitSampleR2(T u) const {
+    return -std::log1p(-std::min(u, T(1) - std::numeric_limits<T>::epsilon() / 2));
+  }
 
   // Visible-normal sampling (Heitz and d'Eon 2014 stretch, exact inversion).
   // In the unit-roughness configuration with the view at cot(theta) = mu,

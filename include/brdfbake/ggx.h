@@ -22,13 +22,13 @@ class GgxNdf : public SlopeNdf<T, GgxNdf<T>> {
   GgxNdf(T alpha_x, T alpha_y) : Base(alpha_x, alpha_y) {}
 
   // Standard slopes: P22 = 1 / (pi (1 + r^2)^2) (seed 004 eq. 3, C = 2, B = 1).
-  T StdP22(T r2) const {
+  T UnitP22(T r2) const {
     const T q = T(1) + r2;
     return kInvPi<T> / (q * q);
   }
   // Lambda = (sqrt(1 + 1/a^2) - 1) / 2 (seed 004 Table 1, gamma = 2), written
   // as (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))) to avoid cancellation when a >> 1.
-  T StdLambda(T a) const {
+  T UnitLambda(T a) const {
     const T inv_a2 = T(1) / (a * a);
     return inv_a2 / (T(2) * (T(1) + std::sqrt(T(1) + inv_a2)));
   }
@@ -39,7 +39,7 @@ class GgxNdf : public SlopeNdf<T, GgxNdf<T>> {
     return kInvPi<T> / (this->ax_ * this->ay_ * q * q);
   }
   // Radial CDF 1 - 1/(1 + r^2)  =>  r^2 = u / (1 - u).
-  T StdSampleR2(T u) const { return u / std::max(T(1) - u, std::numeric_limits<T>::min()); }
+  T UnitSampleR2(T u) const { return u / std::max(T(1) - u, std::numeric_limits<T>::min()); }
 
   // Exact visible-normal sampling, seed 003 Listing 1; density DVisible(w, m).
   Vec3<T> SampleVisible(const Vec3<T>& w, T u1, T u2) const {

@@ -27,7 +27,7 @@ inline constexpr double kGgxRel = 2e-6;
 // gamma log1p(r2 / (gamma - 1))) is rounded like any float expression of
 // the inputs, and exp multiplies that relative error by E.
 inline constexpr double kBeckmannExpSlope = 3e-7;
-inline constexpr double kStdExpSlope = 4.5e-7;
+inline constexpr double kStudentTExpSlope = 4.5e-7;
 // The Beckmann BRDF forms its exponent from s = wi + wo (sums, squares and a
 // division more): one more ulp per unit of exponent (a sample at r2 = 65.5
 // in the lobe had 2.18e-5, above 3e-7 r2).

@@ -39,9 +39,9 @@ T ClampAlpha(T alpha) {
 }
 
 // CRTP base: Derived provides
-//   T StdP22(T r2) const       standard isotropic slope density
-//   T StdLambda(T a) const     Smith Lambda at a = cot(theta), a > 0
-//   T StdSampleR2(T u) const   inverse radial CDF of the standard slopes
+//   T UnitP22(T r2) const       standard isotropic slope density
+//   T UnitLambda(T a) const     Smith Lambda at a = cot(theta), a > 0
+//   T UnitSampleR2(T u) const   inverse radial CDF of the standard slopes
 // and may shadow DFromStretched (below) with a form that keeps D's range.
 template <typename T, class Derived>
 class SlopeNdf {
@@ -66,7 +66,7 @@ class SlopeNdf {
   // the quotient form loses range: P22 can underflow (float: below 1e-38)
   // where D itself, divided by a tiny ax ay z2^2, is still representable.
   T DFromStretched(T s2, T z2) const {
-    return self().StdP22(s2 / z2) / (ax_ * ay_ * z2 * z2);
+    return self().UnitP22(s2 / z2) / (ax_ * ay_ * z2 * z2);
   }
 
   // Smith Lambda; +inf for directions on or below the horizon.
@@ -75,7 +75,7 @@ class SlopeNdf {
     const T px = ax_ * w.x, py = ay_ * w.y;
     const T proj = std::sqrt(px * px + py * py);
     if (!(proj > T(0))) return T(0);
-    return self().StdLambda(w.z / proj);
+    return self().UnitLambda(w.z / proj);
   }
 
   // Smith G1(w) = 1 / (1 + Lambda(w)), independent of the microfacet normal.
@@ -99,7 +99,7 @@ class SlopeNdf {
 
   // Sampling of m with density D(m) m.z per steradian.
   Vec3<T> SampleNdf(T u1, T u2) const {
-    const T r = std::sqrt(self().StdSampleR2(u2));
+    const T r = std::sqrt(self().UnitSampleR2(u2));
     const T phi = T(2) * kPi<T> * u1;
     const T px = r * ax_ * std::cos(phi), py = r * ay_ * std::sin(phi);
     return Normalize(Vec3<T>(-px, -py, T(1)));

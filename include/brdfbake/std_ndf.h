@@ -49,18 +49,18 @@
 // overflow, no lgamma cancellation) or its asymptotic series for gamma > 1e8.
 // About 150 ns per call (any gamma, a log-uniform in [1e-3, 1e2]).
 //
-// Measured relative error of StdLambda<double> against 50-digit mpmath
+// Measured relative error of UnitLambda<double> against 50-digit mpmath
 // references (hypergeometric form, cross-checked by quadrature) on 61
 // log-spaced a in [1e-3, 1e3] plus 6 others, x gamma in {1.5+1e-6, 1.5001,
 // 1.6, 2, 2.5, 3, 3.5, 4, 7.5, 10, 20, 100, 1e3, 1e4, 1e5, 1e6, 1e8}
 // (every point with Lambda > 1e-300), and 400 random (gamma, a) with gamma in
 // (1.5, 3e4]: max 6e-14 for gamma <= 1e4, 1.5e-13 up to gamma = 1e8.
 // For T = float the evaluation is done in double and rounded once, so
-// StdNdf<float>::StdLambda is within 1 float ulp of the double value at the
+// StudentTNdf<float>::UnitLambda is within 1 float ulp of the double value at the
 // same (float) inputs. gamma > 1e8 (up to 1e300) is handled as well and
 // tends to the Beckmann value smoothly.
 //
-// gamma is clamped below at kMinStdGamma = 1.5 + 1e-6: the mean slope, hence
+// gamma is clamped below at kMinStudentTGamma = 1.5 + 1e-6: the mean slope, hence
 // Lambda, diverges as 1 / (2 gamma - 3) when gamma -> 1.5. gamma = +inf
 // delegates every hook to the Beckmann formulas (beckmann.h) bit for bit.
 //
@@ -113,32 +113,32 @@ namespace brdfbake {
 
 // Lower clamp of gamma (seed 004 requires gamma > 1.5 for a finite Lambda).
 template <typename T>
-inline constexpr T kMinStdGamma = T(1.5) + T(1e-6);
+inline constexpr T kMinStudentTGamma = T(1.5) + T(1e-6);
 
-// StdLambda uses the series (Y) for a <= kStdSeriesMaxA and m < 1, the
+// UnitLambda uses the series (Y) for a <= kStudentTSeriesMaxA and m < 1, the
 // continued fraction (S) elsewhere (see the header comment).
-inline constexpr double kStdSeriesMaxA = 1.5;
+inline constexpr double kStudentTSeriesMaxA = 1.5;
 
-// Largest gamma for which StdHasClosedForm is true (the closed forms are
+// Largest gamma for which StudentTHasClosedForm is true (the closed forms are
 // finite sums of about gamma terms).
-inline constexpr double kStdClosedFormMaxGamma = 10000.0;
+inline constexpr double kStudentTClosedFormMaxGamma = 10000.0;
 
 // From this gamma on the double reference is the Beckmann limit: the
 // relative difference of D is about r2^2 / (2 gamma), below 3e-15 for every
 // r2 < 745 where exp(-r2) is still a double, and Lambda's is smaller
-// (StdTest.HugeGammaIsBeckmann checks 1e16 .. the largest double). Without
+// (StudentTTest.HugeGammaIsBeckmann checks 1e16 .. the largest double). Without
 // the switch, terms such as 2 gamma - 3 overflow at gamma = 2^1023.
-inline constexpr double kStdBeckmannLimitGamma = 1e20;
+inline constexpr double kStudentTBeckmannLimitGamma = 1e20;
 
-// gamma clamped to [kMinStdGamma, +inf], +inf from kStdBeckmannLimitGamma
+// gamma clamped to [kMinStudentTGamma, +inf], +inf from kStudentTBeckmannLimitGamma
 // on; NaN stays NaN (as ClampAlpha).
 template <typename T>
-T ClampStdGamma(T gamma) {
-  if (gamma >= T(kStdBeckmannLimitGamma)) return std::numeric_limits<T>::infinity();
-  return std::max(gamma, kMinStdGamma<T>);
+T ClampStudentTGamma(T gamma) {
+  if (gamma >= T(kStudentTBeckmannLimitGamma)) return std::numeric_limits<T>::infinity();
+  return std::max(gamma, kMinStudentTGamma<T>);
 }
 
-namespace std_detail {
+namespace student_t_detail {
 
 // Working precision: float is evaluated in double.
 template <typename T>
@@ -151,7 +151,7 @@ using Wide = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
 // asymptotic series Gamma(z + 1/2) / (Gamma(z) sqrt(z)) = 1 - 1/(8z)
 // + 1/(128z^2) + 5/(1024z^3) + O(z^-4) is exact to double precision.
 template <typename W>
-W StdKt(W gamma) {
+W StudentTKt(W gamma) {
   const W z = gamma - W(1);
   if (z > W(1e8)) {
     const W iz = W(1) / z;
@@ -165,7 +165,7 @@ W StdKt(W gamma) {
 // (1 + m^2)^(3/2 - gamma) = exp(-expo), without overflow for huge a nor
 // underflow for huge gamma (where expo -> a^2, Beckmann's exponent).
 template <typename W>
-void StdExponent(W gamma, W a, W* u, W* expo) {
+void StudentTExponent(W gamma, W a, W* u, W* expo) {
   const W m = a / std::sqrt(gamma - W(1));
   if (m > W(1e100)) {
     *u = std::numeric_limits<W>::infinity();
@@ -193,7 +193,7 @@ void StdExponent(W gamma, W a, W* u, W* expo) {
 // a = 2, 36 at a = 3, 18 at a = 5, 11 at a = 10, fewer for small gamma or
 // m >= 1.
 template <typename W>
-W StdHyp2F1G(W gamma, W v) {
+W StudentTHyp2F1G(W gamma, W v) {
   const W tiny = std::numeric_limits<W>::min() / std::numeric_limits<W>::epsilon();
   const W tol = std::numeric_limits<W>::epsilon();
   auto guard = [tiny](W x) { return x < tiny ? tiny : x; };  // all terms > 0
@@ -220,29 +220,29 @@ W StdHyp2F1G(W gamma, W v) {
 }
 
 // Lambda by the positive continued fraction, form (S) of the header;
-// kt = StdKt(gamma), a > 0 finite.
+// kt = StudentTKt(gamma), a > 0 finite.
 //   Lambda = kt / (2a) (1 + m^2)^(3/2 - gamma)
 //            * [1 / (2 gamma - 3) + G (gamma - 1) / (2 gamma a^2)].
 template <typename W>
-W StdLambdaFraction(W gamma, W kt, W a) {
+W StudentTLambdaFraction(W gamma, W kt, W a) {
   W u, expo;
-  StdExponent(gamma, a, &u, &expo);
+  StudentTExponent(gamma, a, &u, &expo);
   const W v = (gamma - W(1)) / a / a;  // 1/m^2; 0 when a^2 overflows
-  const W g = StdHyp2F1G(gamma, v);
+  const W g = StudentTHyp2F1G(gamma, v);
   return kt / (W(2) * a) * std::exp(-expo) *
          (W(1) / (W(2) * gamma - W(3)) + g * v / (W(2) * gamma));
 }
 
 // Lambda by the series form (Y) of the header (seed eq. 21 after a Pfaff
-// transformation); kt = StdKt(gamma), a > 0, meant for m^2 < 1:
+// transformation); kt = StudentTKt(gamma), a > 0, meant for m^2 < 1:
 //   Lambda = kt / a (1 + m^2)^(3/2 - gamma)
 //            * [(gamma - 1) / (2 gamma - 3) + a^2 S / (1 + m^2)] - 1/2,
 //   S = 2F1(gamma - 1/2, 1; 3/2; y0) = sum_n (gamma - 1/2)_n / (3/2)_n y0^n,
 //   y0 = m^2 / (1 + m^2), all terms positive.
 template <typename W>
-W StdLambdaSeries(W gamma, W kt, W a) {
+W StudentTLambdaSeries(W gamma, W kt, W a) {
   W u, expo;
-  StdExponent(gamma, a, &u, &expo);
+  StudentTExponent(gamma, a, &u, &expo);
   const W w = a * a / (W(1) + u);  // (gamma - 1) y0
   const W tol = std::numeric_limits<W>::epsilon() / 2;
   W sum = W(1), term = W(1);
@@ -257,20 +257,20 @@ W StdLambdaSeries(W gamma, W kt, W a) {
   return std::max(W(0), lambda);
 }
 
-}  // namespace std_detail
+}  // namespace student_t_detail
 
 // True for the gamma values with a finite closed-form Lambda (seed 004
 // section 4): integers >= 2 and half-integers >= 5/2, up to
-// kStdClosedFormMaxGamma.
-inline bool StdHasClosedForm(double gamma) {
-  if (!(gamma >= 2.0) || gamma > kStdClosedFormMaxGamma) return false;
+// kStudentTClosedFormMaxGamma.
+inline bool StudentTHasClosedForm(double gamma) {
+  if (!(gamma >= 2.0) || gamma > kStudentTClosedFormMaxGamma) return false;
   const double twice = 2.0 * gamma;
   return twice == std::floor(twice);
 }
 
 // Closed-form unit-roughness Lambda(a), a = cot(theta) / sigma, for integer
 // and half-integer gamma (seed 004 section 4, eq. 29 with eq. 30 or 36-37);
-// NaN when !StdHasClosedForm(gamma). Evaluated in double (for float T too).
+// NaN when !StudentTHasClosedForm(gamma). Evaluated in double (for float T too).
 //
 // Eq. 29: Lambda = (gamma-1) A1 [ sqrt(gamma-1)/a (1+m^2)^(3/2-gamma) / (2gamma-3)
 //                                 - A2 ],
@@ -294,17 +294,17 @@ inline bool StdHasClosedForm(double gamma) {
 // error <= 1.3e-15 (1 + Lambda) for gamma <= 100 (1.3e-13 at gamma = 1e4,
 // rounding accumulated over the gamma terms), so the relative error grows
 // like 1/Lambda for large a (closed forms of this kind cannot do better; use
-// StdLambda there).
+// UnitLambda there).
 template <typename T>
-T StdLambdaClosedForm(T gamma, T a) {
+T StudentTLambdaClosedForm(T gamma, T a) {
   using W = double;
   const W g = static_cast<W>(gamma), av = static_cast<W>(a);
-  if (!StdHasClosedForm(g)) return std::numeric_limits<T>::quiet_NaN();
+  if (!StudentTHasClosedForm(g)) return std::numeric_limits<T>::quiet_NaN();
   if (!(av > W(0))) return std::numeric_limits<T>::infinity();
   if (std::isinf(av)) return T(0);
   const W m = av / std::sqrt(g - W(1));
   W m2, expo;
-  std_detail::StdExponent(g, av, &m2, &expo);
+  student_t_detail::StudentTExponent(g, av, &m2, &expo);
   const W x0 = W(1) / (W(1) + m2);                       // c0^2
   const W c0 = W(1) / std::sqrt(W(1) + m2);
   const W s0 = W(1) / std::sqrt(W(1) + W(1) / m2);       // m / sqrt(1 + m^2)
@@ -337,19 +337,20 @@ T StdLambdaClosedForm(T gamma, T a) {
 }
 
 template <typename T>
-class StdNdf : public SlopeNdf<T, StdNdf<T>> {
-  using Base = SlopeNdf<T, StdNdf<T>>;
-  using W = std_detail::Wide<T>;
+class StudentTNdf : public SlopeNdf<T, StudentTNdf<T>> {
+  using Base = SlopeNdf<T, StudentTNdf<T>>;
+  using W = student_t_detail::Wide<T>;
 
  public:
   // alpha_x, alpha_y: the seed's sigma_x, sigma_y (clamped as every model);
-  // gamma: clamped to [kMinStdGamma, +inf]; +inf is Beckmann exactly.
-  StdNdf(T alpha_x, T alpha_y, T gamma)
+  // gamma: clamped to [kMinStudentTGamma, +inf]; +inf is Beckmann exactly.
+  StudentTNdf(T alpha_x, T alpha_y, T gamma)
       : Base(alpha_x, alpha_y),
-        gamma_(ClampStdGamma(gamma)),
+        gamma_(ClampStudentTGamma(gamma)),
         beckmann_inf_(std::isinf(gamma_)),
-        kt_(beckmann_inf_ || std::isnan(gamma_) ? W(0)
-                                                 : std_detail::StdKt(static_cast<W>(gamma_))),
+        kt_(beckmann_inf_ || std::isnan(gamma_)
+                ? W(0)
+                : student_t_detail::StudentTKt(static_cast<W>(gamma_))),
         ggx_(this->ax_, this->ay_),
         beckmann_(this->ax_, this->ay_),
         branch_(ComputeBranch()) {}
@@ -358,8 +359,8 @@ class StdNdf : public SlopeNdf<T, StdNdf<T>> {
 
   // Seed 004 eq. 13 with sigma = 1: 1 / (pi (1 + r^2/(gamma-1))^gamma),
   // written as exp(-gamma log1p(.)) (no loss for large gamma).
-  T StdP22(T r2) const {
-    if (beckmann_inf_) return beckmann_.StdP22(r2);
+  T UnitP22(T r2) const {
+    if (beckmann_inf_) return beckmann_.UnitP22(r2);
     return kInvPi<T> * std::exp(-gamma_ * std::log1p(r2 / (gamma_ - T(1))));
   }
 
@@ -373,22 +374,22 @@ class StdNdf : public SlopeNdf<T, StdNdf<T>> {
 
   // Smith Lambda at a = cot(theta), unit roughness (seed 004 eq. 17 / 21);
   // see the header comment for the method and its measured accuracy.
-  T StdLambda(T a) const {
-    if (beckmann_inf_) return beckmann_.StdLambda(a);
+  T UnitLambda(T a) const {
+    if (beckmann_inf_) return beckmann_.UnitLambda(a);
     if (!(a > T(0))) return std::numeric_limits<T>::infinity();
     if (std::isinf(a)) return T(0);
     const W g = static_cast<W>(gamma_), av = static_cast<W>(a);
-    if (av <= W(kStdSeriesMaxA) && av * av < g - W(1)) {
-      return static_cast<T>(std_detail::StdLambdaSeries(g, kt_, av));
+    if (av <= W(kStudentTSeriesMaxA) && av * av < g - W(1)) {
+      return static_cast<T>(student_t_detail::StudentTLambdaSeries(g, kt_, av));
     }
-    return static_cast<T>(std_detail::StdLambdaFraction(g, kt_, av));
+    return static_cast<T>(student_t_detail::StudentTLambdaFraction(g, kt_, av));
   }
 
   // Inverse of the radial CDF 1 - (1 + r^2/(gamma-1))^(1-gamma) (seed 004
   // eq. 42 with sigma = 1): r^2 = (gamma-1) expm1(-log1p(-u) / (gamma-1)),
   // accurate for small u and for large gamma.
-  T StdSampleR2(T u) const {
-    if (beckmann_inf_) return beckmann_.StdSampleR2(u);
+  T UnitSampleR2(T u) const {
+    if (beckmann_inf_) return beckmann_.UnitSampleR2(u);
     const T uc = std::min(u, T(1) - std::numeric_limits<T>::epsilon() / 2);
     const T e = -std::log1p(-uc);
     return (gamma_ - T(1)) * std::expm1(e / (gamma_ - T(1)));

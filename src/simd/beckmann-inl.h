@@ -188,7 +188,7 @@ HWY_INLINE void CosSinTurns(D d, V u, V* cos_out, V* sin_out) {
   *sin_out = hn::IfThenElse(sin_neg, hn::Neg(s1), s1);
 }
 
-// NDF sampling (slope_ndf.h SampleNdf with BeckmannNdf::StdSampleR2): the
+// NDF sampling (slope_ndf.h SampleNdf with BeckmannNdf::UnitSampleR2): the
 // standard radial slope r^2 = -log(1 - u2), azimuth 2 pi u1, stretch by
 // (ax, ay), m = normalize(-slope, 1). Writes the three components.
 // Error: 1e-6 absolute per component (measured in the test).

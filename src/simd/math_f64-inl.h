@@ -4,7 +4,7 @@
 // Double-lane special functions for the integration core, the f64 twins of
 // src/simd/math-inl.h: exp(-x^2) without the rounding of x^2, and Beckmann's
 // unit-roughness Smith Lambda (the scalar reference is
-// BeckmannNdf<double>::StdLambda in include/brdfbake/beckmann.h). Each states
+// BeckmannNdf<double>::UnitLambda in include/brdfbake/beckmann.h). Each states
 // its range and the error measured against 50-digit values
 // (Boost.Multiprecision) by tests/simd_math_f64_test.cc on every target.
 // Highway 1.0.3 ops only (hn::Exp is 1 ulp for f64 there; no Erf).

@@ -3,9 +3,9 @@
 //
 // STD (Student's t slopes, seed 004) SIMD kernels, float lanes; the scalar
 // twins are in include/brdfbake/std_ndf.h, slope_ndf.h and brdf.h
-// (StdNdf<T>::D, ::Lambda, SampleNdf, Brdf). gamma is a per-call constant:
+// (StudentTNdf<T>::D, ::Lambda, SampleNdf, Brdf). gamma is a per-call constant:
 // everything that depends on gamma alone is computed once, in double, by
-// StdConsts; gamma >= kStdBeckmannGamma (1e10, and +inf) runs the Beckmann
+// StudentTConsts; gamma >= kStudentTBeckmannGamma (1e10, and +inf) runs the Beckmann
 // kernels (the relative difference is below r2^2 / gamma < 1e-6 wherever D or
 // Lambda is a normal float).
 //
@@ -87,16 +87,16 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // gamma from which the STD kernels run the Beckmann ones.
-constexpr double kStdBeckmannGamma = 1e10;
+constexpr double kStudentTBeckmannGamma = 1e10;
 // Terms of the series (Y) and points of the Gauss-Laguerre rule (L).
-constexpr int kStdSeriesTerms = 28;
-constexpr int kStdLaguerrePoints = 16;
-// Form (Y) for a < kStdSeriesMaxA and u < 1, (L) elsewhere.
-constexpr float kStdSeriesMaxAf = 1.25f;
+constexpr int kStudentTSeriesTerms = 28;
+constexpr int kStudentTLaguerrePoints = 16;
+// Form (Y) for a < kStudentTSeriesMaxA and u < 1, (L) elsewhere.
+constexpr float kStudentTSeriesMaxAf = 1.25f;
 
 // 16-point Gauss-Laguerre rule (nodes: roots of L_16; weights
 // x / (17 L_17(x))^2), computed with mpmath at 30 digits.
-constexpr double kLaguerre16[kStdLaguerrePoints][2] = {
+constexpr double kLaguerre16[kStudentTLaguerrePoints][2] = {
     {0.087649410478927839, 0.20615171495780099},  {0.46269632891508083, 0.33105785495088419},
     {1.1410577748312269, 0.26579577764421414},    {2.1292836450983805, 0.13629693429637754},
     {3.4370866338932067, 0.047328928694125222},   {5.0780186145497677, 0.011299900080339454},
@@ -108,19 +108,19 @@ constexpr double kLaguerre16[kStdLaguerrePoints][2] = {
 
 // Per-call constants of the STD kernels.
 template <class D>
-struct StdConsts {
+struct StudentTConsts {
   BeckmannConsts<D> b;  // alphas, F0; the whole model when beckmann is true
   bool beckmann;
   hn::Vec<D> gamma, gm1, inv_gm1, gm32, kt, half_kt, c1, c2, cy;
-  float series[kStdSeriesTerms];        // c_n, highest degree first
-  float lag_e[kStdLaguerrePoints];      // E_k
-  float lag_w[kStdLaguerrePoints];      // W_k
-  StdConsts(D d, float ax, float ay, float f0, float gamma_f) : b(d, ax, ay, f0) {
+  float series[kStudentTSeriesTerms];        // c_n, highest degree first
+  float lag_e[kStudentTLaguerrePoints];      // E_k
+  float lag_w[kStudentTLaguerrePoints];      // W_k
+  StudentTConsts(D d, float ax, float ay, float f0, float gamma_f) : b(d, ax, ay, f0) {
     double g = gamma_f;
-    if (!(g >= kMinStdGamma<double>)) g = kMinStdGamma<double>;
-    beckmann = g >= kStdBeckmannGamma;
+    if (!(g >= kMinStudentTGamma<double>)) g = kMinStudentTGamma<double>;
+    beckmann = g >= kStudentTBeckmannGamma;
     if (beckmann) g = 3.0;  // placeholder values, unused
-    const double k = std_detail::StdKt(g);
+    const double k = student_t_detail::StudentTKt(g);
     gamma = hn::Set(d, static_cast<float>(g));
     gm1 = hn::Set(d, static_cast<float>(g - 1));
     inv_gm1 = hn::Set(d, static_cast<float>(1 / (g - 1)));
@@ -131,11 +131,11 @@ struct StdConsts {
     c2 = hn::Set(d, static_cast<float>((g - 1) / (2 * g)));
     cy = hn::Set(d, static_cast<float>((g - 1) / (2 * g - 3)));
     double cn = 1;
-    for (int n = 0; n < kStdSeriesTerms; ++n) {
-      series[kStdSeriesTerms - 1 - n] = static_cast<float>(cn);
+    for (int n = 0; n < kStudentTSeriesTerms; ++n) {
+      series[kStudentTSeriesTerms - 1 - n] = static_cast<float>(cn);
       cn *= (g - 0.5 + n) / ((g - 1) * (n + 1.5));
     }
-    for (int i = 0; i < kStdLaguerrePoints; ++i) {
+    for (int i = 0; i < kStudentTLaguerrePoints; ++i) {
       lag_e[i] = static_cast<float>(-(g - 1) * std::expm1(-kLaguerre16[i][0] / g));
       lag_w[i] = static_cast<float>(kLaguerre16[i][1]);
     }
@@ -144,16 +144,16 @@ struct StdConsts {
 
 // exp(-gamma log1p(r2 / (gamma - 1))), the standard slope density times pi.
 template <class D, class V>
-HWY_INLINE V StdP22Pi(D d, const StdConsts<D>& c, V r2) {
+HWY_INLINE V StudentTP22Pi(D d, const StudentTConsts<D>& c, V r2) {
   const V x = hn::Min(hn::Mul(r2, c.inv_gm1), hn::Set(d, 1e37f));
   return hn::Exp(d, hn::Neg(hn::Mul(c.gamma, hn::Log1p(d, x))));
 }
 
 template <class D, class V>
-HWY_INLINE V StdD(D d, const StdConsts<D>& c, V mx, V my, V mz) {
+HWY_INLINE V StudentTD(D d, const StudentTConsts<D>& c, V mx, V my, V mz) {
   const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(mz, mz));
   const V q = hn::MulAdd(hn::Mul(mx, mx), c.b.inv_ax2, hn::Mul(hn::Mul(my, my), c.b.inv_ay2));
-  const V p = StdP22Pi(d, c, hn::Mul(q, iz2));
+  const V p = StudentTP22Pi(d, c, hn::Mul(q, iz2));
   // p first: p / m.z^4 stays finite for grazing m at small gamma, where
   // 1 / m.z^4 alone would overflow (p ~ (m.z^2)^gamma there).
   const V dv = hn::Mul(hn::Mul(hn::Mul(p, iz2), iz2), c.b.inv_pi_axay);
@@ -162,7 +162,7 @@ HWY_INLINE V StdD(D d, const StdConsts<D>& c, V mx, V my, V mz) {
 
 // Lambda for w.z > 0 (the caller selects +inf below the horizon).
 template <class D, class V>
-HWY_INLINE V StdLambdaAbove(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
+HWY_INLINE V StudentTLambdaAbove(D d, const StudentTConsts<D>& c, V wx, V wy, V wz) {
   const V p2 = hn::MulAdd(hn::Mul(wx, wx), c.b.ax2, hn::Mul(hn::Mul(wy, wy), c.b.ay2));
   const V proj = hn::Sqrt(p2);
   const V rinv = hn::Div(hn::Set(d, 1.0f), hn::Mul(wz, proj));
@@ -171,13 +171,13 @@ HWY_INLINE V StdLambdaAbove(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
   const V a2 = hn::Min(hn::Mul(a, a), hn::Set(d, 1e36f));
   const V u = hn::Mul(a2, c.inv_gm1);
   const V e = hn::Exp(d, hn::Neg(hn::Mul(c.gm32, hn::Log1p(d, u))));
-  const auto use_y = hn::And(hn::Lt(a, hn::Set(d, kStdSeriesMaxAf)),
+  const auto use_y = hn::And(hn::Lt(a, hn::Set(d, kStudentTSeriesMaxAf)),
                              hn::Lt(u, hn::Set(d, 1.0f)));
   V lam_y = hn::Zero(d), lam_l = hn::Zero(d);
   if (!hn::AllFalse(d, use_y)) {
     const V w = hn::Div(a2, hn::Add(hn::Set(d, 1.0f), u));
     V s = hn::Set(d, c.series[0]);
-    for (int n = 1; n < kStdSeriesTerms; ++n) s = hn::MulAdd(s, w, hn::Set(d, c.series[n]));
+    for (int n = 1; n < kStudentTSeriesTerms; ++n) s = hn::MulAdd(s, w, hn::Set(d, c.series[n]));
     const V br = hn::MulAdd(w, s, c.cy);
     lam_y = hn::Max(hn::MulSub(hn::Mul(hn::Mul(c.kt, ia), e), br, hn::Set(d, 0.5f)),
                     hn::Zero(d));
@@ -186,7 +186,7 @@ HWY_INLINE V StdLambdaAbove(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
     const V ia2 = hn::Mul(ia, ia);
     const V one = hn::Set(d, 1.0f);
     V g = hn::Zero(d);
-    for (int k = 0; k < kStdLaguerrePoints; ++k) {
+    for (int k = 0; k < kStudentTLaguerrePoints; ++k) {
       const V r = RsqrtNewton(d, hn::MulAdd(hn::Set(d, c.lag_e[k]), ia2, one));
       g = hn::MulAdd(hn::Set(d, c.lag_w[k]), hn::Mul(hn::Mul(r, r), r), g);
     }
@@ -198,14 +198,14 @@ HWY_INLINE V StdLambdaAbove(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
 }
 
 template <class D, class V>
-HWY_INLINE V StdLambda(D d, const StdConsts<D>& c, V wx, V wy, V wz) {
-  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), StdLambdaAbove(d, c, wx, wy, wz),
+HWY_INLINE V StudentTLambda(D d, const StudentTConsts<D>& c, V wx, V wy, V wz) {
+  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), StudentTLambdaAbove(d, c, wx, wy, wz),
                         hn::Set(d, HUGE_VALF));
 }
 
 template <class D, class V, class Fr>
-HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
-                     V oz, const Fr& fresnel) {
+HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix, V iy, V iz, V ox,
+                          V oy, V oz, const Fr& fresnel) {
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
   const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(sz, sz));
@@ -215,10 +215,10 @@ HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V i
   // p22 first, then the factors >= 1: (L / s.z^2)^2 = 1 / h.z^4 alone would
   // overflow for grazing pairs at small gamma, where p22 ~ h.z^(2 gamma), and a
   // subnormal p22 is not rounded again on its own scale.
-  const V d_h = hn::Mul(hn::Mul(hn::Mul(StdP22Pi(d, c, hn::Mul(q, iz2)), l_iz2), l_iz2),
+  const V d_h = hn::Mul(hn::Mul(hn::Mul(StudentTP22Pi(d, c, hn::Mul(q, iz2)), l_iz2), l_iz2),
                         c.b.inv_pi_axay);
-  const V li = StdLambdaAbove(d, c, ix, iy, iz);
-  const V lo = StdLambdaAbove(d, c, ox, oy, oz);
+  const V li = StudentTLambdaAbove(d, c, ix, iy, iz);
+  const V lo = StudentTLambdaAbove(d, c, ox, oy, oz);
   const V one = hn::Set(d, 1.0f);
   const V g_den = separable ? hn::Mul(hn::Add(one, li), hn::Add(one, lo))
                             : hn::Add(one, hn::Add(li, lo));
@@ -232,17 +232,19 @@ HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V i
 
 // With Schlick's Fresnel at the constants' F0.
 template <class D, class V>
-HWY_INLINE V StdBrdf(D d, const StdConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
-  return StdBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.b.f0});
+HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix, V iy, V iz, V ox,
+                          V oy, V oz) {
+  return StudentTBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.b.f0});
 }
 
-// NDF sampling (slope_ndf.h SampleNdf with StdNdf::StdSampleR2): the
+// NDF sampling (slope_ndf.h SampleNdf with StudentTNdf::UnitSampleR2): the
 // inverse radial CDF r^2 = (gamma - 1) expm1(-log1p(-u2) / (gamma - 1))
 // (seed 004 eq. 42, sigma = 1), then the stretch of beckmann-inl.h.
 // Error: 2e-6 absolute per component (log1p near u2 = 1 is amplified by
 // expm1's exponent, up to 33 at gamma = 1.501).
 template <class D, class V>
-HWY_INLINE void StdSampleNdf(D d, const StdConsts<D>& c, V u1, V u2, V* mx, V* my, V* mz) {
+HWY_INLINE void StudentTSampleNdf(D d, const StudentTConsts<D>& c, V u1, V u2, V* mx, V* my,
+                                  V* mz) {
   const V uc = hn::Min(u2, hn::Set(d, 0.99999994f));
   const V e = hn::Neg(hn::Log1p(d, hn::Neg(uc)));
   const V r2 = hn::Mul(c.gm1, hn::Expm1(d, hn::Mul(e, c.inv_gm1)));

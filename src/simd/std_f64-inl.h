@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // STD (Student's t slopes, seed 004) unit-roughness Smith Lambda for double
-// lanes, for the integration core: the f64 twin of StdLambdaAbove in
-// src/simd/std-inl.h. Scalar reference: StdNdf<double>::StdLambda
+// lanes, for the integration core: the f64 twin of StudentTLambdaAbove in
+// src/simd/std-inl.h. Scalar reference: StudentTNdf<double>::UnitLambda
 // (include/brdfbake/std_ndf.h, whose header comment defines kt, u = m^2,
 // forms (Y) and (S)). a = cot(theta) / alpha; gamma is a per-call constant
 // and everything that depends on it alone (kt, series coefficients,
@@ -67,8 +67,8 @@ namespace brdfbake {
 // Everything StudentTLambdaF64 needs that depends on gamma alone. Built once
 // per call (per texel) in plain double code: two recurrences of up to 104
 // and 57 steps (one division each) and 8 expm1, plus kt by
-// std_detail::StdKt (Boost's tgamma_delta_ratio, as the scalar twin).
-// Measured ~1 us (0.73 us of it in StdKt); 1.5 KB. It holds no Highway
+// student_t_detail::StudentTKt (Boost's tgamma_delta_ratio, as the scalar twin).
+// Measured ~1 us (0.73 us of it in StudentTKt); 1.5 KB. It holds no Highway
 // type, so one object serves every target.
 struct StudentTLambdaF64Consts {
   // Form (Y) for u < 1 and a < kSeriesMaxA, (X) for u >= 1, (L) elsewhere.
@@ -94,14 +94,14 @@ struct StudentTLambdaF64Consts {
   double lag_e[kLaguerrePoints];  // E_k = -(gamma - 1) expm1(-x_k / gamma)
   double lag_w[kLaguerrePoints];  // W_k
 
-  // gamma in [kMinStdGamma, kStdBeckmannLimitGamma) (clamped below).
+  // gamma in [kMinStudentTGamma, kStudentTBeckmannLimitGamma) (clamped below).
   explicit StudentTLambdaF64Consts(double gamma) {
-    const double g = std::max(gamma, kMinStdGamma<double>);
+    const double g = std::max(gamma, kMinStudentTGamma<double>);
     const double gm1 = g - 1;
     gm1_inv = 1 / gm1;
     log_gm1_inv = -std::log(gm1);
     gm32 = g - 1.5;
-    kt = std_detail::StdKt(g);
+    kt = student_t_detail::StudentTKt(g);
     half_kt = kt / 2;
     c1 = 1 / (2 * g - 3);
     c2 = gm1 / (2 * g);
@@ -202,7 +202,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // of the latency of one chain); coef in the block layout of
 // StudentTLambdaF64Consts. Positive coefficients and x >= 0: no cancellation.
 template <class D, class V>
-HWY_INLINE V StdF64Poly4(D d, const double* coef, int blocks, V x) {
+HWY_INLINE V StudentTF64Poly4(D d, const double* coef, int blocks, V x) {
   const V x2 = hn::Mul(x, x);
   const V x4 = hn::Mul(x2, x2);
   V p0 = hn::Set(d, coef[0]), p1 = hn::Set(d, coef[1]);
@@ -220,8 +220,8 @@ HWY_INLINE V StdF64Poly4(D d, const double* coef, int blocks, V x) {
 // STD unit-roughness Smith Lambda(a), a = cot(theta) / alpha, for the gamma
 // of c (forms (Y), (X), (L) at the top of this file).
 //
-// Range: gamma in [1.5 + 1e-6, 1e20) (from kStdBeckmannLimitGamma = 1e20
-// on the caller runs BeckmannLambdaF64 of math_f64-inl.h, as StdNdf does);
+// Range: gamma in [1.5 + 1e-6, 1e20) (from kStudentTBeckmannLimitGamma = 1e20
+// on the caller runs BeckmannLambdaF64 of math_f64-inl.h, as StudentTNdf does);
 // any double a: +inf for a <= 0, where the true value exceeds DBL_MAX (a
 // below ~6e-304 at gamma = 1.5+1e-6) and where 1/a overflows (a < 5.6e-309),
 // 0 for a = +inf; never NaN unless a is NaN.
@@ -240,8 +240,8 @@ HWY_INLINE V StdF64Poly4(D d, const double* coef, int blocks, V x) {
 // and AVX2, 2.61e-15 on SSE4, SSSE3 and SCALAR (gamma = 5.9e15, a = 3.43);
 // (X), (L) within 0.65 of their relative bound (9e-14 at expo = 692, 2.5e-12
 // at a = 4 in (L)). 4.1e-15 (AVX2 and SSE4) over 260k more random points
-// with a in [0, 4], where (Y) is least accurate. Against StdNdf<double>::
-// StdLambda (itself within 5e-16 of the 40-digit values there): 2e-15.
+// with a in [0, 4], where (Y) is least accurate. Against StudentTNdf<double>::
+// UnitLambda (itself within 5e-16 of the 40-digit values there): 2e-15.
 // Cost per vector: 2 divisions (1/a, x0), hn::Log1p (~26 ops, 2 of them
 // divisions) and hn::Exp (~30 ops), ~25 mul/compare/select/mask ops, and
 // for each form some lane needs: (Y) n_Y + 6 FMA/mul, n_Y = 36 (gamma =
@@ -278,10 +278,10 @@ HWY_INLINE V StudentTLambdaF64(D d, const StudentTLambdaF64Consts& c, V a) {
   V lam_y = hn::Zero(d);
   if (!hn::AllFalse(d, use_y)) {
     const V w = hn::Mul(a2, x0);
-    lam_y = hn::MulSub(kt_ia_e, StdF64Poly4(d, c.y_coef, c.y_blocks, w), hn::Set(d, 0.5));
+    lam_y = hn::MulSub(kt_ia_e, StudentTF64Poly4(d, c.y_coef, c.y_blocks, w), hn::Set(d, 0.5));
   }
   V bracket = hn::Zero(d);  // of form (S): P_X(x0), or the same by quadrature
-  if (!hn::AllFalse(d, use_x)) bracket = StdF64Poly4(d, c.x_coef, c.x_blocks, x0);
+  if (!hn::AllFalse(d, use_x)) bracket = StudentTF64Poly4(d, c.x_coef, c.x_blocks, x0);
   if (!hn::AllFalse(d, use_l)) {
     const V ia2 = hn::Mul(ia, ia);
     V g = hn::Zero(d);
