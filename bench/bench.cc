@@ -14,8 +14,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
@@ -156,28 +155,46 @@ FloatInputs& FIn() {
   return in;
 }
 
-void BM_BrdfBatch(benchmark::State& state, std::string target) {
-  ForceTarget(target);
-  FloatInputs& in = FIn();
-  GgxBatchParams p;
+// The batch interface per target: every model's BRDF, D, G2 (and the sel
+// lobe's K) over the same inputs, and the visible-normal samplers. D takes
+// the wi array as normals, G2 and the BRDF the (wi, wo) pairs, the samplers
+// the wo array.
+BatchModel BenchModel(ModelKind kind) {
+  BatchModel p;
+  p.kind = kind;
   p.alpha_x = p.alpha_y = 0.3f;
   p.f0 = 0.04f;
+  if (kind == ModelKind::kStudentT) p.gamma = 3.3f;
+  if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
+    p.alpha_y = 0.5f;
+    p.theta_x = 0.2f;
+  }
+  if (kind == ModelKind::kEllipsoid) {
+    p.theta_y = 0.1f;
+    p.theta_z = 0.4f;
+  }
+  return p;
+}
+
+void BM_EvalBatch(benchmark::State& state, ModelKind kind, Quantity q, std::string target) {
+  ForceTarget(target);
+  FloatInputs& in = FIn();
+  const BatchModel p = BenchModel(kind);
+  const DirArrays wi{in.ix.data(), in.iy.data(), in.iz.data()};
+  const DirArrays wo{in.ox.data(), in.oy.data(), in.oz.data()};
   for (auto _ : state) {
-    GgxBrdfBatch(p, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
-                 in.oz.data(), in.out.data(), kN);
+    if (IsPairQuantity(q)) {
+      EvalBatch(p, q, wi, wo, in.out.data(), kN);
+    } else {
+      EvalBatch(p, q, wi, in.out.data(), kN);
+    }
     benchmark::DoNotOptimize(in.out.data());
   }
   ForceTarget("best");
   state.SetItemsProcessed(state.iterations() * kN);
 }
 
-// D, G2, the other models' BRDF kernels and the visible-normal samplers, per
-// target. D takes the wi array as normals, G2 the (wi, wo) pairs.
-enum class Kernel {
-  kBeckmannBrdf, kStudentTBrdf, kEllipsoidBrdf, kGgxSampleVisible, kEllipsoidSampleVisible,
-  kGgxD, kBeckmannD, kStudentTD, kEllipsoidD, kGgxG2, kBeckmannG2, kStudentTG2, kEllipsoidG2, kSelK
-};
-void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) {
+void BM_VisibleSamples(benchmark::State& state, ModelKind kind, std::string target) {
   ForceTarget(target);
   FloatInputs& in = FIn();
   static std::vector<float> u1, u2, mx(kN), my(kN), mz(kN);
@@ -187,82 +204,10 @@ void BM_KernelBatch(benchmark::State& state, Kernel kernel, std::string target) 
       u2.push_back(float(In().u2[i]));
     }
   }
-  BeckmannBatchParams bp;
-  bp.alpha_x = bp.alpha_y = 0.3f;
-  bp.f0 = 0.04f;
-  StudentTBatchParams sp;
-  sp.alpha_x = sp.alpha_y = 0.3f;
-  sp.gamma = 3.3f;
-  sp.f0 = 0.04f;
-  EllipsoidBatchParams ep;
-  ep.alpha_x = 0.3f;
-  ep.alpha_y = 0.5f;
-  ep.theta_x = 0.2f;
-  ep.theta_y = 0.1f;
-  ep.theta_z = 0.4f;
-  ep.f0 = 0.04f;
-  GgxBatchParams gp;
-  gp.alpha_x = gp.alpha_y = 0.3f;
+  const BatchModel p = BenchModel(kind);
   for (auto _ : state) {
-    switch (kernel) {
-      case Kernel::kBeckmannBrdf:
-        BeckmannBrdfBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
-                          in.oy.data(), in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kStudentTBrdf:
-        StudentTBrdfBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
-                     in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kEllipsoidBrdf:
-        EllipsoidBrdfBatch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
-                           in.oy.data(), in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kGgxSampleVisible:
-        GgxSampleVisibleBatch(gp, in.ox.data(), in.oy.data(), in.oz.data(), u1.data(), u2.data(),
-                              mx.data(), my.data(), mz.data(), kN);
-        break;
-      case Kernel::kEllipsoidSampleVisible:
-        EllipsoidSampleVisibleBatch(ep, in.ox.data(), in.oy.data(), in.oz.data(), u1.data(),
-                                    u2.data(), mx.data(), my.data(), mz.data(), kN);
-        break;
-      case Kernel::kGgxD:
-        GgxDBatch(gp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kBeckmannD:
-        BeckmannDBatch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kStudentTD:
-        StudentTDBatch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kEllipsoidD:
-        EllipsoidDBatch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kGgxG2:
-        GgxG2Batch(gp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
-                   in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kBeckmannG2:
-        BeckmannG2Batch(bp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
-                        in.oy.data(), in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kStudentTG2:
-        StudentTG2Batch(sp, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(), in.oy.data(),
-                   in.oz.data(), in.out.data(), kN);
-        break;
-      case Kernel::kSelK: {
-        SelBatchParams sel;
-        sel.alpha_x = 0.3f;
-        sel.alpha_y = 0.5f;
-        sel.theta_x = 0.2f;
-        SelKBatch(sel, in.ix.data(), in.iy.data(), in.iz.data(), in.out.data(), kN);
-        break;
-      }
-      case Kernel::kEllipsoidG2:
-        EllipsoidG2Batch(ep, in.ix.data(), in.iy.data(), in.iz.data(), in.ox.data(),
-                         in.oy.data(), in.oz.data(), in.out.data(), kN);
-        break;
-    }
-    benchmark::DoNotOptimize(in.out.data());
+    SampleBatch(p, Sampler::kVisible, {in.ox.data(), in.oy.data(), in.oz.data()}, u1.data(),
+                u2.data(), {mx.data(), my.data(), mz.data()}, kN);
     benchmark::DoNotOptimize(mz.data());
   }
   ForceTarget("best");
@@ -356,27 +301,24 @@ BENCHMARK_CAPTURE(BM_BakeE, ggx/engine1024, IntegratorKind::kEngine, 1024, 0.0, 
 }  // namespace brdfbake
 
 int main(int argc, char** argv) {
-  using brdfbake::Kernel;
+  using brdfbake::ModelKind;
+  using brdfbake::Quantity;
+  const ModelKind kinds[] = {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT,
+                             ModelKind::kEllipsoid, ModelKind::kSel};
+  const std::pair<const char*, Quantity> quantities[] = {
+      {"BM_Brdf/", Quantity::kBrdf}, {"BM_D/", Quantity::kD}, {"BM_G2/", Quantity::kG2},
+      {"BM_K/", Quantity::kK}};
   for (const std::string& t : brdfbake::AvailableTargets()) {
-    benchmark::RegisterBenchmark(("BM_Brdf/ggx/" + t).c_str(), brdfbake::BM_BrdfBatch, t);
-    benchmark::RegisterBenchmark(("BM_Brdf/beckmann/" + t).c_str(), brdfbake::BM_KernelBatch,
-                                 Kernel::kBeckmannBrdf, t);
-    benchmark::RegisterBenchmark(("BM_Brdf/std/" + t).c_str(), brdfbake::BM_KernelBatch,
-                                 Kernel::kStudentTBrdf, t);
-    benchmark::RegisterBenchmark(("BM_Brdf/ellipsoid/" + t).c_str(), brdfbake::BM_KernelBatch,
-                                 Kernel::kEllipsoidBrdf, t);
-    benchmark::RegisterBenchmark(("BM_SampleVisible/ggx/" + t).c_str(), brdfbake::BM_KernelBatch,
-                                 Kernel::kGgxSampleVisible, t);
-    benchmark::RegisterBenchmark(("BM_SampleVisible/ellipsoid/" + t).c_str(),
-                                 brdfbake::BM_KernelBatch, Kernel::kEllipsoidSampleVisible, t);
-    const std::pair<const char*, Kernel> per_model[] = {
-        {"BM_D/ggx/", Kernel::kGgxD},          {"BM_D/beckmann/", Kernel::kBeckmannD},
-        {"BM_D/std/", Kernel::kStudentTD},          {"BM_D/ellipsoid/", Kernel::kEllipsoidD},
-        {"BM_G2/ggx/", Kernel::kGgxG2},        {"BM_G2/beckmann/", Kernel::kBeckmannG2},
-        {"BM_G2/std/", Kernel::kStudentTG2},        {"BM_G2/ellipsoid/", Kernel::kEllipsoidG2},
-        {"BM_K/sel/", Kernel::kSelK}};
-    for (const auto& [prefix, kernel] : per_model) {
-      benchmark::RegisterBenchmark((prefix + t).c_str(), brdfbake::BM_KernelBatch, kernel, t);
+    for (const auto& [prefix, q] : quantities) {
+      for (ModelKind kind : kinds) {
+        if (!brdfbake::BatchSupports(kind, q)) continue;
+        const std::string name = prefix + std::string(brdfbake::ModelName(kind)) + "/" + t;
+        benchmark::RegisterBenchmark(name.c_str(), brdfbake::BM_EvalBatch, kind, q, t);
+      }
+    }
+    for (ModelKind kind : {ModelKind::kGgx, ModelKind::kEllipsoid}) {
+      const std::string name = "BM_SampleVisible/" + std::string(brdfbake::ModelName(kind)) + "/" + t;
+      benchmark::RegisterBenchmark(name.c_str(), brdfbake::BM_VisibleSamples, kind, t);
     }
   }
   benchmark::Initialize(&argc, argv);

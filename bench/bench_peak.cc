@@ -16,8 +16,7 @@
 #include <benchmark/benchmark.h>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
+#include "brdfbake/targets.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "bench/bench_peak.cc"
@@ -208,40 +207,40 @@ const int kRegistered = [] {
   static const KernelMix kMixes[] = {
       {"ggx", 47, 1, 2, 1,
        [](const std::vector<float>* v, std::vector<float>* o) {
-         GgxBatchParams p;
+         BatchModel p{ModelKind::kGgx};
          p.alpha_x = p.alpha_y = 0.3f;
          p.f0 = 0.04f;
-         GgxBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
-                      v[5].data(), o->data(), o->size());
+         EvalBatch(p, Quantity::kBrdf, {v[0].data(), v[1].data(), v[2].data()},
+                   {v[3].data(), v[4].data(), v[5].data()}, o->data(), o->size());
        }},
       {"beckmann", 201, 4, 0, 3,
        [](const std::vector<float>* v, std::vector<float>* o) {
-         BeckmannBatchParams p;
+         BatchModel p{ModelKind::kBeckmann};
          p.alpha_x = p.alpha_y = 0.3f;
          p.f0 = 0.04f;
-         BeckmannBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
-                           v[5].data(), o->data(), o->size());
+         EvalBatch(p, Quantity::kBrdf, {v[0].data(), v[1].data(), v[2].data()},
+                   {v[3].data(), v[4].data(), v[5].data()}, o->data(), o->size());
        }},
       {"std", 537, 12, 2, 33,
        [](const std::vector<float>* v, std::vector<float>* o) {
-         StudentTBatchParams p;
+         BatchModel p{ModelKind::kStudentT};
          p.alpha_x = p.alpha_y = 0.3f;
          p.gamma = 3.3f;
          p.f0 = 0.04f;
-         StudentTBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
-                      v[5].data(), o->data(), o->size());
+         EvalBatch(p, Quantity::kBrdf, {v[0].data(), v[1].data(), v[2].data()},
+                   {v[3].data(), v[4].data(), v[5].data()}, o->data(), o->size());
        }},
       {"ellipsoid", 164, 1, 2, 1,
        [](const std::vector<float>* v, std::vector<float>* o) {
-         EllipsoidBatchParams p;
+         BatchModel p{ModelKind::kEllipsoid};
          p.alpha_x = 0.3f;
          p.alpha_y = 0.5f;
          p.theta_x = 0.2f;
          p.theta_y = 0.1f;
          p.theta_z = 0.4f;
          p.f0 = 0.04f;
-         EllipsoidBrdfBatch(p, v[0].data(), v[1].data(), v[2].data(), v[3].data(), v[4].data(),
-                            v[5].data(), o->data(), o->size());
+         EvalBatch(p, Quantity::kBrdf, {v[0].data(), v[1].data(), v[2].data()},
+                   {v[3].data(), v[4].data(), v[5].data()}, o->data(), o->size());
        }}};
   const std::vector<std::string> targets = AvailableTargets();
   const bool avx3 = std::find(targets.begin(), targets.end(), "AVX3") != targets.end();

@@ -17,7 +17,7 @@
 #include <benchmark/benchmark.h>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_sampling.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/std_ndf.h"
 
@@ -52,18 +52,18 @@ SampleData& Data() {
 void BM_SampleVisibleBatch(benchmark::State& state, Model model, std::string target) {
   ForceTarget(target);
   SampleData& s = Data();
-  BeckmannBatchParams bp;
+  BatchModel bp{ModelKind::kBeckmann};
   bp.alpha_x = bp.alpha_y = kAlpha;
-  StudentTBatchParams sp;
+  BatchModel sp{ModelKind::kStudentT};
   sp.alpha_x = sp.alpha_y = kAlpha;
   sp.gamma = kGamma;
   for (auto _ : state) {
     if (model == Model::kBeckmann) {
-      BeckmannSampleVisibleBatch(bp, s.wx.data(), s.wy.data(), s.wz.data(), s.u1.data(),
-                                 s.u2.data(), s.mx.data(), s.my.data(), s.mz.data(), kSamples);
+      SampleBatch(bp, Sampler::kVisible, {s.wx.data(), s.wy.data(), s.wz.data()}, s.u1.data(),
+                  s.u2.data(), {s.mx.data(), s.my.data(), s.mz.data()}, kSamples);
     } else {
-      StudentTSamplePseudoVnisBatch(sp, s.wx.data(), s.wy.data(), s.wz.data(), s.u1.data(),
-                               s.u2.data(), s.mx.data(), s.my.data(), s.mz.data(), kSamples);
+      SampleBatch(sp, Sampler::kVisible, {s.wx.data(), s.wy.data(), s.wz.data()}, s.u1.data(),
+                  s.u2.data(), {s.mx.data(), s.my.data(), s.mz.data()}, kSamples);
     }
     benchmark::DoNotOptimize(s.mz.data());
   }

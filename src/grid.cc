@@ -14,8 +14,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/version.h"
 
 namespace brdfbake {
@@ -155,28 +154,6 @@ RowDirs MakeRow(const GridRequest& req, int y) {
   return r;
 }
 
-// The batch kernels' Fresnel from a grey Fresnel (channel 0).
-template <class P>
-void SetBatchFresnel(const Fresnel& f, P* p) {
-  switch (f.kind) {
-    case FresnelKind::kOne:
-      p->f0 = 1.0f;
-      return;
-    case FresnelKind::kSchlick:
-      p->f0 = float(f.f0[0]);
-      return;
-    case FresnelKind::kDielectric:
-      p->fresnel = BatchFresnel::kDielectric;
-      p->eta = float(f.eta);
-      return;
-    case FresnelKind::kConductor:
-      p->fresnel = BatchFresnel::kConductor;
-      p->eta = float(f.n[0]);
-      p->k = float(f.k[0]);
-      return;
-  }
-}
-
 }  // namespace
 
 Grid EvalGrid(const GridRequest& req) {
@@ -198,38 +175,13 @@ Grid EvalGrid(const GridRequest& req) {
   tbb::parallel_for(0, req.height, [&](int y) {
     const RowDirs r = MakeRow(req, y);
     float* out = g.values.data() + size_t(y) * req.width;
-    const ModelKind kind = req.model.kind;
     if (req.kind == GridKind::kG1) {
       const double rough = (y + 0.5) / req.height;
       const float a = float(std::max(rough * rough, 1e-4));
       if (simd) {
-        if (kind == ModelKind::kGgx) {
-          GgxBatchParams p;
-          p.alpha_x = p.alpha_y = a;
-          GgxG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
-#if BRDFBAKE_WITH_BECKMANN
-        } else if (kind == ModelKind::kBeckmann) {
-          BeckmannBatchParams p;
-          p.alpha_x = p.alpha_y = a;
-          BeckmannG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
-#endif
-#if BRDFBAKE_WITH_STD
-        } else if (kind == ModelKind::kStudentT) {
-          StudentTBatchParams p;
-          p.alpha_x = p.alpha_y = a;
-          p.gamma = float(req.model.gamma);
-          StudentTG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
-#endif
-#if BRDFBAKE_WITH_ELLIPSOID
-        } else {
-          EllipsoidBatchParams p;
-          p.alpha_x = p.alpha_y = a;
-          p.theta_x = float(req.model.theta_x);
-          p.theta_y = float(req.model.theta_y);
-          p.theta_z = float(req.model.theta_z);
-          EllipsoidG1Batch(p, r.ix.data(), r.iy.data(), r.iz.data(), out, req.width);
-#endif
-        }
+        BatchModel p = BatchModelOf(req.model);
+        p.alpha_x = p.alpha_y = a;
+        EvalBatch(p, Quantity::kG1, {r.ix.data(), r.iy.data(), r.iz.data()}, out, req.width);
       } else {
         ModelParams mp = req.model;
         mp.alpha_x = mp.alpha_y = a;
@@ -241,50 +193,9 @@ Grid EvalGrid(const GridRequest& req) {
       return;
     }
     if (simd) {
-      const float ax = float(req.model.alpha_x), ay = float(req.model.alpha_y);
-      if (kind == ModelKind::kGgx) {
-        GgxBatchParams p;
-        p.alpha_x = ax;
-        p.alpha_y = ay;
-        SetBatchFresnel(req.fresnel, &p);
-        p.masking = req.masking;
-        GgxBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
-                     r.oz.data(), out, req.width);
-#if BRDFBAKE_WITH_BECKMANN
-      } else if (kind == ModelKind::kBeckmann) {
-        BeckmannBatchParams p;
-        p.alpha_x = ax;
-        p.alpha_y = ay;
-        SetBatchFresnel(req.fresnel, &p);
-        p.masking = req.masking;
-        BeckmannBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
-                          r.oz.data(), out, req.width);
-#endif
-#if BRDFBAKE_WITH_STD
-      } else if (kind == ModelKind::kStudentT) {
-        StudentTBatchParams p;
-        p.alpha_x = ax;
-        p.alpha_y = ay;
-        p.gamma = float(req.model.gamma);
-        SetBatchFresnel(req.fresnel, &p);
-        p.masking = req.masking;
-        StudentTBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
-                     r.oz.data(), out, req.width);
-#endif
-#if BRDFBAKE_WITH_ELLIPSOID
-      } else {
-        EllipsoidBatchParams p;
-        p.alpha_x = ax;
-        p.alpha_y = ay;
-        p.theta_x = float(req.model.theta_x);
-        p.theta_y = float(req.model.theta_y);
-        p.theta_z = float(req.model.theta_z);
-        SetBatchFresnel(req.fresnel, &p);
-        p.masking = req.masking;
-        EllipsoidBrdfBatch(p, r.ix.data(), r.iy.data(), r.iz.data(), r.ox.data(), r.oy.data(),
-                           r.oz.data(), out, req.width);
-#endif
-      }
+      EvalBatch(BatchModelOf(req.model, req.masking, req.fresnel), Quantity::kBrdf,
+                {r.ix.data(), r.iy.data(), r.iz.data()}, {r.ox.data(), r.oy.data(), r.oz.data()},
+                out, req.width);
     } else {
       for (int x = 0; x < req.width; ++x) {
         out[x] = float(model->Brdf(Vec3<double>(r.ix[x], r.iy[x], r.iz[x]),

@@ -14,6 +14,7 @@
 #include "brdfbake/brdf.h"
 #include "brdfbake/ggx.h"
 #include "brdfbake/std_ndf.h"
+#include "brdfbake/targets.h"
 #include "azimuthal.h"
 #include "azimuthal_slope.h"
 

@@ -11,8 +11,7 @@
 #include <random>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/model.h"
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/beckmann.h"
@@ -165,14 +164,19 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
   const Vec3<float> af = RoundToFloat(a_in), bf = RoundToFloat(b_in), mf = RoundToFloat(m_in);
   const Vec3<double> a(af), b(bf), m(mf);
   const float ax = static_cast<float>(p.ax), ay = static_cast<float>(p.ay);
+  BatchModel bp;
+  bp.kind = model;
+  bp.alpha_x = ax;
+  bp.alpha_y = ay;
+  bp.gamma = static_cast<float>(p.gamma);
+  bp.theta_x = static_cast<float>(p.tx);
+  bp.theta_y = static_cast<float>(p.ty);
+  bp.theta_z = static_cast<float>(p.tz);
   float d, l, f;
+  EvalBatch(bp, Quantity::kD, {&mf.x, &mf.y, &mf.z}, &d, 1);
+  EvalBatch(bp, Quantity::kLambda, {&af.x, &af.y, &af.z}, &l, 1);
+  EvalBatch(bp, Quantity::kBrdf, {&af.x, &af.y, &af.z}, {&bf.x, &bf.y, &bf.z}, &f, 1);
   if (model == ModelKind::kGgx) {
-    GgxBatchParams bp;
-    bp.alpha_x = ax;
-    bp.alpha_y = ay;
-    GgxDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
-    GgxLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
-    GgxBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     const GgxNdf<double> nd(ax, ay);
     sb = {bounds::kGgxRel, bounds::kGgxRel, bounds::kGgxRel};
     Record(&rows[0], d, nd.D(m), false, sb.d);
@@ -187,24 +191,6 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
                               : static_cast<double>(static_cast<float>(p.gamma));
     const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStudentTExpSlope;
     const double brdf_slope = beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStudentTExpSlope;
-    if (beck) {
-      BeckmannBatchParams bp;
-      bp.alpha_x = ax;
-      bp.alpha_y = ay;
-      BeckmannDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
-      BeckmannLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
-      BeckmannBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
-    } else {
-#if BRDFBAKE_WITH_STD
-      StudentTBatchParams bp;
-      bp.alpha_x = ax;
-      bp.alpha_y = ay;
-      bp.gamma = static_cast<float>(gamma);
-      StudentTDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
-      StudentTLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
-      StudentTBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
-#endif
-    }
     const StudentTNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
     // The exponent E of the exponential factor (see kernel_bounds.h).
     auto exponent = [&](const Vec3<double>& n) {
@@ -224,15 +210,6 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
 #endif  // BRDFBAKE_WITH_BECKMANN
 #if BRDFBAKE_WITH_ELLIPSOID
   if (model == ModelKind::kEllipsoid) {
-    EllipsoidBatchParams bp;
-    bp.alpha_x = ax;
-    bp.alpha_y = ay;
-    bp.theta_x = static_cast<float>(p.tx);
-    bp.theta_y = static_cast<float>(p.ty);
-    bp.theta_z = static_cast<float>(p.tz);
-    EllipsoidDBatch(bp, &mf.x, &mf.y, &mf.z, &d, 1);
-    EllipsoidLambdaBatch(bp, &af.x, &af.y, &af.z, &l, 1);
-    EllipsoidBrdfBatch(bp, &af.x, &af.y, &af.z, &bf.x, &bf.y, &bf.z, &f, 1);
     const EllipsoidNdf<double> nd(bp.alpha_x, bp.alpha_y, bp.theta_x, bp.theta_y, bp.theta_z);
     const Mat3<double>& m_a = nd.shape_matrix();
     const Mat3<double> m_ait =

@@ -25,8 +25,6 @@
 #include "azimuthal.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ggx.h"
@@ -113,10 +111,10 @@ TEST(CancellationTest, TanSquaredAtGrazingAndNormalIncidence) {
       if (!(fz > 0)) continue;
       const Big t2f = (Big(fx) * fx) / (Big(fz) * fz);
       const Big ggx_ref_f = (sqrt(1 + a2 * t2f) - 1) / 2;
-      GgxBatchParams gp;
+      BatchModel gp{ModelKind::kGgx};
       gp.alpha_x = gp.alpha_y = static_cast<float>(alpha);
       float out = 0;
-      GgxLambdaBatch(gp, &fx, &fy, &fz, &out, 1);
+      EvalBatch(gp, Quantity::kLambda, {&fx, &fy, &fz}, &out, 1);
       // The kernel's alpha is the float one.
       const Big a2f = Big(gp.alpha_x) * gp.alpha_x;
       const Big ref_f = (sqrt(1 + a2f * t2f) - 1) / 2;
@@ -235,16 +233,16 @@ TEST(CancellationTest, HalfVectorOfOppositeDirections) {
                    Masking::kHeightCorrelated),
               0.0);
     float out[4] = {-1, -1, -1, -1};
-    GgxBatchParams gp;
-    GgxBrdfBatch(gp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[0], 1);
-    BeckmannBatchParams bp;
-    BeckmannBrdfBatch(bp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[1], 1);
-    StudentTBatchParams sp;
+    BatchModel gp{ModelKind::kGgx};
+    EvalBatch(gp, Quantity::kBrdf, {&wi.x, &wi.y, &wi.z}, {&wo.x, &wo.y, &wo.z}, &out[0], 1);
+    BatchModel bp{ModelKind::kBeckmann};
+    EvalBatch(bp, Quantity::kBrdf, {&wi.x, &wi.y, &wi.z}, {&wo.x, &wo.y, &wo.z}, &out[1], 1);
+    BatchModel sp{ModelKind::kStudentT};
     sp.gamma = 1.8f;
-    StudentTBrdfBatch(sp, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[2], 1);
-    EllipsoidBatchParams ep;
+    EvalBatch(sp, Quantity::kBrdf, {&wi.x, &wi.y, &wi.z}, {&wo.x, &wo.y, &wo.z}, &out[2], 1);
+    BatchModel ep{ModelKind::kEllipsoid};
     ep.theta_x = 0.5f;
-    EllipsoidBrdfBatch(ep, &wi.x, &wi.y, &wi.z, &wo.x, &wo.y, &wo.z, &out[3], 1);
+    EvalBatch(ep, Quantity::kBrdf, {&wi.x, &wi.y, &wi.z}, {&wo.x, &wo.y, &wo.z}, &out[3], 1);
     for (int k = 0; k < 4; ++k) {
       EXPECT_EQ(out[k], 0.0f) << "kernel " << k << " wi " << wi.x << "," << wi.y << "," << wi.z;
     }

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/targets.h"
 #include "aniso_ggx.h"
 #include "ellipsoid_albedo.h"
 #include "quadrature_simd.h"

@@ -20,7 +20,7 @@
 #include <random>
 #include <vector>
 
-#include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/batch.h"
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
@@ -61,7 +61,7 @@ static_assert(kBeckDRel + kExpSlope == bounds::SlopeD(1, bounds::kBeckmannExpSlo
               "the test's bounds are the library's");
 constexpr double kSampleAbs = 1e-6;     // sampled normals, per component
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// The batch calls flush subnormals to zero (src/batch_beckmann_std.cc):
+// The batch calls flush subnormals to zero (src/batch.cc):
 // results whose exponential factor exp(-E) is below FLT_MIN (E > 87.3, with
 // some slack for the rounding of E) or whose value is below FLT_MIN may be 0.
 constexpr double kFlushExponent = bounds::kFlushExponent;
@@ -234,12 +234,12 @@ void CheckBeckmannDAndLambda() {
   std::vector<float> d_out(m.size()), l_out(m.size());
   double worst_d[2] = {0, 0}, worst_l = 0;
   for (const auto& al : kAlphas) {
-    BeckmannBatchParams p;
+    BatchModel p{ModelKind::kBeckmann};
     p.alpha_x = al[0];
     p.alpha_y = al[1];
     const BeckmannNdf<double> ndf(al[0], al[1]);
-    BeckmannDBatch(p, m.x.data(), m.y.data(), m.z.data(), d_out.data(), m.size());
-    BeckmannLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), l_out.data(), m.size());
+    EvalBatch(p, Quantity::kD, {m.x.data(), m.y.data(), m.z.data()}, d_out.data(), m.size());
+    EvalBatch(p, Quantity::kLambda, {m.x.data(), m.y.data(), m.z.data()}, l_out.data(), m.size());
     CheckDLambda(m, d_out, l_out, [&](const Vec3<double>& v) { return ndf.D(v); },
                  [&](const Vec3<double>& v) { return ndf.Lambda(v); }, ndf.alpha_x(),
                  ndf.alpha_y(), kInf, kBeckDRel, kExpSlope, kBeckLambda, worst_d, &worst_l, "Beckmann");
@@ -263,13 +263,13 @@ void CheckStudentTDAndLambda() {
   for (float gamma : kGammas) {
     double worst_d[2] = {0, 0}, worst_l = 0;
     for (const auto& al : kAlphas) {
-      StudentTBatchParams p;
+      BatchModel p{ModelKind::kStudentT};
       p.alpha_x = al[0];
       p.alpha_y = al[1];
       p.gamma = gamma;
       const StudentTNdf<double> ndf(al[0], al[1], gamma);
-      StudentTDBatch(p, m.x.data(), m.y.data(), m.z.data(), d_out.data(), m.size());
-      StudentTLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), l_out.data(), m.size());
+      EvalBatch(p, Quantity::kD, {m.x.data(), m.y.data(), m.z.data()}, d_out.data(), m.size());
+      EvalBatch(p, Quantity::kLambda, {m.x.data(), m.y.data(), m.z.data()}, l_out.data(), m.size());
       CheckDLambda(
           m, d_out, l_out, [&](const Vec3<double>& v) { return ndf.D(v); },
           [&](const Vec3<double>& v) { return ndf.Lambda(v); }, ndf.alpha_x(), ndf.alpha_y(), gamma,
@@ -319,13 +319,13 @@ void CheckBeckmannBrdf() {
   for (const auto& al : kAlphas) {
     const BeckmannNdf<double> ndf(al[0], al[1]);
     CheckBrdf("Beckmann", ndf, kInf, [&](Masking masking, float f0, float* out) {
-      BeckmannBatchParams p;
+      BatchModel p{ModelKind::kBeckmann};
       p.alpha_x = al[0];
       p.alpha_y = al[1];
       p.f0 = f0;
       p.masking = masking;
-      BeckmannBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
-                        wo.z.data(), out, wi.size());
+      EvalBatch(p, Quantity::kBrdf, {wi.x.data(), wi.y.data(), wi.z.data()},
+                {wo.x.data(), wo.y.data(), wo.z.data()}, out, wi.size());
     }, wi, wo, kBeckBrdfRel, kBrdfExpSlope, worst);
     if (::testing::Test::HasFailure()) return;
   }
@@ -342,14 +342,14 @@ void CheckStudentTBrdf() {
     for (const auto& al : kAlphas) {
       const StudentTNdf<double> ndf(al[0], al[1], gamma);
       CheckBrdf("STD", ndf, gamma, [&](Masking masking, float f0, float* out) {
-        StudentTBatchParams p;
+        BatchModel p{ModelKind::kStudentT};
         p.alpha_x = al[0];
         p.alpha_y = al[1];
         p.gamma = gamma;
         p.f0 = f0;
         p.masking = masking;
-        StudentTBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
-                     wo.z.data(), out, wi.size());
+        EvalBatch(p, Quantity::kBrdf, {wi.x.data(), wi.y.data(), wi.z.data()},
+                  {wo.x.data(), wo.y.data(), wo.z.data()}, out, wi.size());
       }, wi, wo, kStudentTBrdfRel, kStudentTExpSlope, worst);
       if (::testing::Test::HasFailure()) return;
     }
@@ -391,10 +391,10 @@ void CheckSamplersMatchScalar() {
     return e;
   };
   for (const auto& al : kAlphas) {
-    BeckmannBatchParams bp;
+    BatchModel bp{ModelKind::kBeckmann};
     bp.alpha_x = al[0];
     bp.alpha_y = al[1];
-    BeckmannSampleNdfBatch(bp, u1.data(), u2.data(), mx.data(), my.data(), mz.data(), n);
+    SampleBatch(bp, Sampler::kNdf, {}, u1.data(), u2.data(), {mx.data(), my.data(), mz.data()}, n);
     const BeckmannNdf<double> bndf(al[0], al[1]);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> ref = bndf.SampleNdf(u1[i], u2[i]);
@@ -403,11 +403,12 @@ void CheckSamplersMatchScalar() {
     }
 #if BRDFBAKE_WITH_STD
     for (float gamma : kGammas) {
-      StudentTBatchParams sp;
+      BatchModel sp{ModelKind::kStudentT};
       sp.alpha_x = al[0];
       sp.alpha_y = al[1];
       sp.gamma = gamma;
-      StudentTSampleNdfBatch(sp, u1.data(), u2.data(), mx.data(), my.data(), mz.data(), n);
+      SampleBatch(sp, Sampler::kNdf, {}, u1.data(), u2.data(), {mx.data(), my.data(), mz.data()},
+                  n);
       const StudentTNdf<double> sndf(al[0], al[1], gamma);
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> ref = sndf.SampleNdf(u1[i], u2[i]);
@@ -456,43 +457,43 @@ void CheckCountsAndSentinels() {
   const Dirs wi = TestDirs(40, 4), wo = TestDirs(40, 5);
   std::vector<float> u1, u2;
   SampleUs(40, &u1, &u2);
-  BeckmannBatchParams bp;
+  BatchModel bp{ModelKind::kBeckmann};
   bp.alpha_x = 0.3f;
   bp.alpha_y = 0.1f;
 #if BRDFBAKE_WITH_STD
-  StudentTBatchParams sp;
+  BatchModel sp{ModelKind::kStudentT};
   sp.gamma = 2.7f;
   const size_t o3 = wi.size() - 64;  // directions from the a-sweep mix both STD forms
 #endif
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    BeckmannBrdfBatch(bp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
-                      wo.y.data() + o, wo.z.data() + o, dst, n);
+    EvalBatch(bp, Quantity::kBrdf, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o},
+              {wo.x.data() + o, wo.y.data() + o, wo.z.data() + o}, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    BeckmannDBatch(bp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, dst, n);
+    EvalBatch(bp, Quantity::kD, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    BeckmannLambdaBatch(bp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, dst, n);
+    EvalBatch(bp, Quantity::kLambda, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
   });
   CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
-    BeckmannSampleNdfBatch(bp, u1.data() + o, u2.data() + o, dst, dst + stride,
-                           dst + 2 * stride, n);
+    SampleBatch(bp, Sampler::kNdf, {}, u1.data() + o, u2.data() + o,
+                {dst, dst + stride, dst + 2 * stride}, n);
   });
 #if BRDFBAKE_WITH_STD
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StudentTBrdfBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
-                 wo.y.data() + o, wo.z.data() + o, dst, n);
+    EvalBatch(sp, Quantity::kBrdf, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o},
+              {wo.x.data() + o, wo.y.data() + o, wo.z.data() + o}, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StudentTDBatch(sp, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, dst, n);
+    EvalBatch(sp, Quantity::kD, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
   });
   CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    StudentTLambdaBatch(sp, wi.x.data() + o3 + o, wi.y.data() + o3 + o, wi.z.data() + o3 + o, dst,
-                   n);
+    EvalBatch(sp, Quantity::kLambda,
+              {wi.x.data() + o3 + o, wi.y.data() + o3 + o, wi.z.data() + o3 + o}, dst, n);
   });
   CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
-    StudentTSampleNdfBatch(sp, u1.data() + o, u2.data() + o, dst, dst + stride, dst + 2 * stride,
-                           n);
+    SampleBatch(sp, Sampler::kNdf, {}, u1.data() + o, u2.data() + o,
+                {dst, dst + stride, dst + 2 * stride}, n);
   });
 #endif
 }

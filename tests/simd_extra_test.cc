@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The Fresnel, GGX sampling and ellipsoid SIMD kernels (batch_extra.h)
+// The Fresnel, GGX sampling and ellipsoid SIMD kernels (batch.h)
 // against their double scalar references on every compiled target (one
 // gtest case per target): dense sweeps including alpha 1e-4, anisotropy
 // 1000:1, grazing directions down to mu = 1e-6 and ellipsoid tilts up to 80
@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_extra.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/sel.h"
 #include "brdfbake/brdf.h"
@@ -209,14 +209,14 @@ void CheckGgxSampleVisible() {
   std::vector<float> mx(n), my(n), mz(n), pdf(n);
   double worst = 0, worst_raw = 0, worst_pdf = 0;
   for (const auto& a : kGgxAlphas) {
-    GgxBatchParams p;
+    BatchModel p{ModelKind::kGgx};
     p.alpha_x = a[0];
     p.alpha_y = a[1];
     const GgxNdf<double> ndf(a[0], a[1]);
-    GgxSampleVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
-                          mx.data(), my.data(), mz.data(), n);
-    GgxPdfVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
-                       mz.data(), pdf.data(), n);
+    SampleBatch(p, Sampler::kVisible, {wo.x.data(), wo.y.data(), wo.z.data()}, u1.data(), u2.data(),
+                {mx.data(), my.data(), mz.data()}, n);
+    EvalBatch(p, Quantity::kPdfVisible, {wo.x.data(), wo.y.data(), wo.z.data()},
+              {mx.data(), my.data(), mz.data()}, pdf.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> ref = ndf.SampleVisible(wo.At(i), u1[i], u2[i]);
       const Vec3<double> got(mx[i], my[i], mz[i]);
@@ -248,12 +248,12 @@ void CheckGgxPdfVisibleRandom() {
   std::vector<float> out(n);
   double worst = 0;
   for (const auto& a : kGgxAlphas) {
-    GgxBatchParams p;
+    BatchModel p{ModelKind::kGgx};
     p.alpha_x = a[0];
     p.alpha_y = a[1];
     const GgxNdf<double> ndf(a[0], a[1]);
-    GgxPdfVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), m.x.data(), m.y.data(),
-                       m.z.data(), out.data(), n);
+    EvalBatch(p, Quantity::kPdfVisible, {wo.x.data(), wo.y.data(), wo.z.data()},
+              {m.x.data(), m.y.data(), m.z.data()}, out.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const double wm = Dot(wo.At(i), m.At(i));
       if (std::abs(wm) < 1e-6) continue;
@@ -273,12 +273,12 @@ void CheckGgxSampleNdf() {
   std::vector<float> mx(n), my(n), mz(n), pdf(n);
   double worst = 0, worst_raw = 0, worst_pdf = 0;
   for (const auto& a : kGgxAlphas) {
-    GgxBatchParams p;
+    BatchModel p{ModelKind::kGgx};
     p.alpha_x = a[0];
     p.alpha_y = a[1];
     const GgxNdf<double> ndf(a[0], a[1]);
-    GgxSampleNdfBatch(p, u1.data(), u2.data(), mx.data(), my.data(), mz.data(), n);
-    GgxPdfNdfBatch(p, mx.data(), my.data(), mz.data(), pdf.data(), n);
+    SampleBatch(p, Sampler::kNdf, {}, u1.data(), u2.data(), {mx.data(), my.data(), mz.data()}, n);
+    EvalBatch(p, Quantity::kPdfNdf, {mx.data(), my.data(), mz.data()}, pdf.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> ref = ndf.SampleNdf(u1[i], u2[i]);
       const Vec3<double> got(mx[i], my[i], mz[i]);
@@ -312,8 +312,8 @@ const EllConfig kEllConfigs[] = {
     {1e-4f, 1e-4f, 10, 0, 0},   {1e-3f, 1.0f, 20, 30, 0},
 };
 
-EllipsoidBatchParams ToParams(const EllConfig& c) {
-  EllipsoidBatchParams p;
+BatchModel ToParams(const EllConfig& c) {
+  BatchModel p{ModelKind::kEllipsoid};
   p.alpha_x = c.ax;
   p.alpha_y = c.ay;
   p.theta_x = static_cast<float>(c.tx * kDeg);
@@ -322,11 +322,11 @@ EllipsoidBatchParams ToParams(const EllConfig& c) {
   return p;
 }
 
-EllipsoidNdf<double> ToNdf(const EllipsoidBatchParams& p) {
+EllipsoidNdf<double> ToNdf(const BatchModel& p) {
   return EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
 }
 
-Mat3<double> InvT(const EllipsoidBatchParams& p) {
+Mat3<double> InvT(const BatchModel& p) {
   return bounds::EllipsoidKernelInvT(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z);
 }
 
@@ -357,12 +357,12 @@ void CheckEllipsoidDLambdaG1() {
   std::vector<float> d_out(n), l_out(n), g_out(n);
   double worst_d = 0, worst_l = 0, worst_g = 0;
   for (const EllConfig& cfg : kEllConfigs) {
-    const EllipsoidBatchParams p = ToParams(cfg);
+    const BatchModel p = ToParams(cfg);
     const EllipsoidNdf<double> ndf = ToNdf(p);
     const Mat3<double> ait = InvT(p), a = ndf.shape_matrix();
-    EllipsoidDBatch(p, m.x.data(), m.y.data(), m.z.data(), d_out.data(), n);
-    EllipsoidLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), l_out.data(), n);
-    EllipsoidG1Batch(p, m.x.data(), m.y.data(), m.z.data(), g_out.data(), n);
+    EvalBatch(p, Quantity::kD, {m.x.data(), m.y.data(), m.z.data()}, d_out.data(), n);
+    EvalBatch(p, Quantity::kLambda, {m.x.data(), m.y.data(), m.z.data()}, l_out.data(), n);
+    EvalBatch(p, Quantity::kG1, {m.x.data(), m.y.data(), m.z.data()}, g_out.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> v = m.At(i);
       const double kd = Kappa(ait, v), ka = Kappa(a, v);
@@ -398,14 +398,14 @@ void CheckEllipsoidBrdf() {
   for (const EllConfig& cfg : kEllConfigs) {
     for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
       for (float f0 : {1.0f, 0.04f}) {
-        EllipsoidBatchParams p = ToParams(cfg);
+        BatchModel p = ToParams(cfg);
         p.f0 = f0;
         p.masking = masking;
         const EllipsoidNdf<double> ndf = ToNdf(p);
         const Mat3<double> ait = InvT(p), a = ndf.shape_matrix();
         const Fresnel fr = Fresnel::Schlick({f0, f0, f0});
-        EllipsoidBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
-                           wo.z.data(), out.data(), n);
+        EvalBatch(p, Quantity::kBrdf, {wi.x.data(), wi.y.data(), wi.z.data()},
+                  {wo.x.data(), wo.y.data(), wo.z.data()}, out.data(), n);
         for (size_t i = 0; i < n; ++i) {
           const Vec3<double> s = wi.At(i) + wo.At(i);
           const double kappa =
@@ -424,8 +424,8 @@ void CheckEllipsoidBrdf() {
       }
     }
   }
-  std::printf("%s: ellipsoid BRDF max rel error / (kappa g_cond) %.3g (bound %.1g)\n", Target(), worst,
-              kEllBrdfRel);
+  std::printf("%s: ellipsoid BRDF max rel error / (kappa g_cond) %.3g (bound %.1g)\n", Target(),
+              worst, kEllBrdfRel);
 }
 
 void CheckEllipsoidSampleVisible() {
@@ -435,13 +435,13 @@ void CheckEllipsoidSampleVisible() {
   std::vector<float> mx(n), my(n), mz(n), pdf(n);
   double worst = 0, worst_raw = 0, worst_pdf = 0;
   for (const EllConfig& cfg : kEllConfigs) {
-    const EllipsoidBatchParams p = ToParams(cfg);
+    const BatchModel p = ToParams(cfg);
     const EllipsoidNdf<double> ndf = ToNdf(p);
     const Mat3<double> ait = InvT(p), a = ndf.shape_matrix(), kxa = KCrossA(a);
-    EllipsoidSampleVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
-                                mx.data(), my.data(), mz.data(), n);
-    EllipsoidPdfVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
-                             mz.data(), pdf.data(), n);
+    SampleBatch(p, Sampler::kVisible, {wo.x.data(), wo.y.data(), wo.z.data()}, u1.data(), u2.data(),
+                {mx.data(), my.data(), mz.data()}, n);
+    EvalBatch(p, Quantity::kPdfVisible, {wo.x.data(), wo.y.data(), wo.z.data()},
+              {mx.data(), my.data(), mz.data()}, pdf.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> ref = ndf.SampleVisible(wo.At(i), u1[i], u2[i]);
       const Vec3<double> got(mx[i], my[i], mz[i]);
@@ -522,37 +522,38 @@ void CheckExtraCountsAndSentinels() {
   CheckCounts(1, [](const float* const* in, float* const* out, size_t n) {
     FresnelConductorBatch(0.2f, 3.0f, in[5], out[0], n);
   });
-  GgxBatchParams gp;
+  BatchModel gp{ModelKind::kGgx};
   gp.alpha_x = 0.3f;
   gp.alpha_y = 0.05f;
   CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    GgxSampleVisibleBatch(gp, in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2], n);
+    SampleBatch(gp, Sampler::kVisible, {in[3], in[4], in[5]}, in[6], in[7],
+                {out[0], out[1], out[2]}, n);
   });
   CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    GgxSampleNdfBatch(gp, in[6], in[7], out[0], out[1], out[2], n);
+    SampleBatch(gp, Sampler::kNdf, {}, in[6], in[7], {out[0], out[1], out[2]}, n);
   });
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    GgxPdfVisibleBatch(gp, in[3], in[4], in[5], in[0], in[1], in[2], out[0], n);
+    EvalBatch(gp, Quantity::kPdfVisible, {in[3], in[4], in[5]}, {in[0], in[1], in[2]}, out[0], n);
   });
 #if BRDFBAKE_WITH_ELLIPSOID
-  const EllipsoidBatchParams ep = ToParams({0.2f, 0.5f, 30, 20, 10});
+  const BatchModel ep = ToParams({0.2f, 0.5f, 30, 20, 10});
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EllipsoidBrdfBatch(ep, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
+    EvalBatch(ep, Quantity::kBrdf, {in[0], in[1], in[2]}, {in[3], in[4], in[5]}, out[0], n);
   });
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EllipsoidG1Batch(ep, in[0], in[1], in[2], out[0], n);
+    EvalBatch(ep, Quantity::kG1, {in[0], in[1], in[2]}, out[0], n);
   });
   CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    EllipsoidSampleVisibleBatch(ep, in[3], in[4], in[5], in[6], in[7], out[0], out[1], out[2],
-                                n);
+    SampleBatch(ep, Sampler::kVisible, {in[3], in[4], in[5]}, in[6], in[7],
+                {out[0], out[1], out[2]}, n);
   });
 #endif
 #if BRDFBAKE_WITH_SEL
-  SelBatchParams sp;
+  BatchModel sp{ModelKind::kSel};
   sp.alpha_x = 0.1f;
   sp.theta_y = 0.5f;
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    SelKBatch(sp, in[0], in[1], in[2], out[0], n);
+    EvalBatch(sp, Quantity::kK, {in[0], in[1], in[2]}, out[0], n);
   });
 #endif
 }
@@ -573,13 +574,13 @@ void CheckSelK() {
                       {1e-3f, 0.05f, 1.2f, 0.7f, -0.5f}, {1.0f, 1.0f, 0.1f, 0.2f, 0.3f}};
   double worst = 0, worst_raw = 0;
   for (const Cfg& c : cfgs) {
-    SelBatchParams p;
+    BatchModel p{ModelKind::kSel};
     p.alpha_x = c.ax;
     p.alpha_y = c.ay;
     p.theta_x = c.tx;
     p.theta_y = c.ty;
     p.theta_z = c.tz;
-    SelKBatch(p, w.x.data(), w.y.data(), w.z.data(), out.data(), n);
+    EvalBatch(p, Quantity::kK, {w.x.data(), w.y.data(), w.z.data()}, out.data(), n);
     const SelLobe<double> lobe = SelLobe<double>::FromAngles(c.ax, c.ay, c.tx, c.ty, c.tz);
     const SelLobe<double> in_lobe_space(c.ax, c.ay, Mat3<double>::Diagonal(1, 1, 1));
     const Mat3<double>& q = lobe.q();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ggx.h"
 
@@ -54,13 +55,13 @@ void CheckBrdfAgainstScalar() {
   for (const auto& a : alphas) {
     for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
       for (float f0 : {1.0f, 0.04f}) {
-        GgxBatchParams p;
+        BatchModel p{ModelKind::kGgx};
         p.alpha_x = a[0];
         p.alpha_y = a[1];
         p.f0 = f0;
         p.masking = masking;
-        GgxBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(),
-                     wo.z.data(), out.data(), n);
+        EvalBatch(p, Quantity::kBrdf, {wi.x.data(), wi.y.data(), wi.z.data()},
+                  {wo.x.data(), wo.y.data(), wo.z.data()}, out.data(), n);
         const GgxNdf<double> ndf(a[0], a[1]);
         const Fresnel fr = Fresnel::Schlick({f0, f0, f0});
         for (size_t i = 0; i < n; ++i) {
@@ -83,17 +84,17 @@ void CheckDAndLambdaAgainstScalar() {
   std::vector<float> out(n);
   double worst_d = 0, worst_l = 0;
   for (const auto& a : {std::pair<float, float>{1e-4f, 1e-4f}, {0.2f, 0.2f}, {1.0f, 1e-3f}}) {
-    GgxBatchParams p;
+    BatchModel p{ModelKind::kGgx};
     p.alpha_x = a.first;
     p.alpha_y = a.second;
     const GgxNdf<double> ndf(a.first, a.second);
-    GgxDBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
+    EvalBatch(p, Quantity::kD, {m.x.data(), m.y.data(), m.z.data()}, out.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const double err = RelErr(out[i], ndf.D(m.At(i)));
       worst_d = std::max(worst_d, err);
       ASSERT_LE(err, kMaxRelError) << i;
     }
-    GgxLambdaBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
+    EvalBatch(p, Quantity::kLambda, {m.x.data(), m.y.data(), m.z.data()}, out.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const double ref = ndf.Lambda(m.At(i));
       const double err = std::abs(out[i] - ref) / std::max(1.0, ref);
@@ -111,18 +112,18 @@ void CheckCountsAndSentinels() {
   const size_t lanes = hwy::HWY_NAMESPACE::Lanes(hwy::HWY_NAMESPACE::ScalableTag<float>());
   const size_t max_n = 2 * lanes + 3;
   const Dirs wi = RandomDirs(max_n + 8, 4), wo = RandomDirs(max_n + 8, 5);
-  GgxBatchParams p;
+  BatchModel p{ModelKind::kGgx};
   std::vector<float> full(max_n + 8);
-  GgxBrdfBatch(p, wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(), wo.y.data(), wo.z.data(),
-               full.data(), max_n + 8);
+  EvalBatch(p, Quantity::kBrdf, {wi.x.data(), wi.y.data(), wi.z.data()},
+            {wo.x.data(), wo.y.data(), wo.z.data()}, full.data(), max_n + 8);
   const float kSentinel = -12345.0f;
   for (size_t misalign = 0; misalign < 4; ++misalign) {
     for (size_t n = 0; n <= max_n; ++n) {
       std::vector<float> out(n + 8, kSentinel);
       float* dst = out.data() + 1 + misalign % 2;
       const size_t o = misalign;
-      GgxBrdfBatch(p, wi.x.data() + o, wi.y.data() + o, wi.z.data() + o, wo.x.data() + o,
-                   wo.y.data() + o, wo.z.data() + o, dst, n);
+      EvalBatch(p, Quantity::kBrdf, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o},
+                {wo.x.data() + o, wo.y.data() + o, wo.z.data() + o}, dst, n);
       for (size_t i = 0; i < n; ++i) ASSERT_EQ(dst[i], full[i + o]) << n << " " << i;
       for (float* s = out.data(); s < dst; ++s) ASSERT_EQ(*s, kSentinel);
       for (float* s = dst + n; s < out.data() + out.size(); ++s) ASSERT_EQ(*s, kSentinel);

@@ -17,8 +17,6 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_beckmann_std.h"
-#include "brdfbake/batch_extra.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/brdf.h"
 #include "brdfbake/ellipsoid.h"
@@ -99,27 +97,27 @@ double SlopeLambdaBound(const Vec3<double>& w, double ax, double ay, double lamb
 }
 
 Model Ggx(float ax, float ay) {
-  GgxBatchParams p;
+  BatchModel p{ModelKind::kGgx};
   p.alpha_x = ax;
   p.alpha_y = ay;
   const GgxNdf<double> ndf(ax, ay);
   Model m;
   m.name = "ggx";
   m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {
-    GgxG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
+    EvalBatch(p, Quantity::kG1, {w.x.data(), w.y.data(), w.z.data()}, o->data(), w.x.size());
   };
   m.g2 = [p](Masking mk, const Dirs& i, const Dirs& o, std::vector<float>* out) {
-    GgxBatchParams q = p;
+    BatchModel q = p;
     q.masking = mk;
-    GgxG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-               out->data(), i.x.size());
+    EvalBatch(q, Quantity::kG2, {i.x.data(), i.y.data(), i.z.data()},
+              {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
   };
   m.brdf = [p](Masking mk, BatchFresnel kind, float eta, float k, const Dirs& i, const Dirs& o,
                std::vector<float>* out) {
-    GgxBatchParams q = p;
+    BatchModel q = p;
     SetFresnel(&q, mk, kind, eta, k);
-    GgxBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-                 out->data(), i.x.size());
+    EvalBatch(q, Quantity::kBrdf, {i.x.data(), i.y.data(), i.z.data()},
+              {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
   };
   m.lambda = [ndf](const Vec3<double>& w) { return ndf.Lambda(w); };
   m.g2_ref = [ndf](const Vec3<double>& wi, const Vec3<double>& wo, Masking mk) {
@@ -141,45 +139,45 @@ Model Slope(float ax, float ay, float gamma) {
   Model m;
   m.name = beck ? "beckmann" : "std gamma " + std::to_string(gamma);
   if (beck) {
-    BeckmannBatchParams p;
+    BatchModel p{ModelKind::kBeckmann};
     p.alpha_x = ax;
     p.alpha_y = ay;
     m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {
-      BeckmannG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
+      EvalBatch(p, Quantity::kG1, {w.x.data(), w.y.data(), w.z.data()}, o->data(), w.x.size());
     };
     m.g2 = [p](Masking mk, const Dirs& i, const Dirs& o, std::vector<float>* out) {
-      BeckmannBatchParams q = p;
+      BatchModel q = p;
       q.masking = mk;
-      BeckmannG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-                      out->data(), i.x.size());
+      EvalBatch(q, Quantity::kG2, {i.x.data(), i.y.data(), i.z.data()},
+                {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
     };
     m.brdf = [p](Masking mk, BatchFresnel kind, float eta, float k, const Dirs& i,
                  const Dirs& o, std::vector<float>* out) {
-      BeckmannBatchParams q = p;
+      BatchModel q = p;
       SetFresnel(&q, mk, kind, eta, k);
-      BeckmannBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(),
-                        o.z.data(), out->data(), i.x.size());
+      EvalBatch(q, Quantity::kBrdf, {i.x.data(), i.y.data(), i.z.data()},
+                {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
     };
   } else {
-    StudentTBatchParams p;
+    BatchModel p{ModelKind::kStudentT};
     p.alpha_x = ax;
     p.alpha_y = ay;
     p.gamma = gamma;
     m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {
-      StudentTG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
+      EvalBatch(p, Quantity::kG1, {w.x.data(), w.y.data(), w.z.data()}, o->data(), w.x.size());
     };
     m.g2 = [p](Masking mk, const Dirs& i, const Dirs& o, std::vector<float>* out) {
-      StudentTBatchParams q = p;
+      BatchModel q = p;
       q.masking = mk;
-      StudentTG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-                 out->data(), i.x.size());
+      EvalBatch(q, Quantity::kG2, {i.x.data(), i.y.data(), i.z.data()},
+                {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
     };
     m.brdf = [p](Masking mk, BatchFresnel kind, float eta, float k, const Dirs& i,
                  const Dirs& o, std::vector<float>* out) {
-      StudentTBatchParams q = p;
+      BatchModel q = p;
       SetFresnel(&q, mk, kind, eta, k);
-      StudentTBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-                   out->data(), i.x.size());
+      EvalBatch(q, Quantity::kBrdf, {i.x.data(), i.y.data(), i.z.data()},
+                {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
     };
   }
   m.lambda = [ndf](const Vec3<double>& w) { return ndf.Lambda(w); };
@@ -208,7 +206,7 @@ Model Slope(float ax, float ay, float gamma) {
 }
 
 Model Ellipsoid(float ax, float ay, float tx, float ty, float tz) {
-  EllipsoidBatchParams p;
+  BatchModel p{ModelKind::kEllipsoid};
   p.alpha_x = ax;
   p.alpha_y = ay;
   p.theta_x = tx;
@@ -220,20 +218,20 @@ Model Ellipsoid(float ax, float ay, float tx, float ty, float tz) {
   Model m;
   m.name = "ellipsoid";
   m.g1 = [p](Masking, const Dirs& w, std::vector<float>* o) {
-    EllipsoidG1Batch(p, w.x.data(), w.y.data(), w.z.data(), o->data(), w.x.size());
+    EvalBatch(p, Quantity::kG1, {w.x.data(), w.y.data(), w.z.data()}, o->data(), w.x.size());
   };
   m.g2 = [p](Masking mk, const Dirs& i, const Dirs& o, std::vector<float>* out) {
-    EllipsoidBatchParams q = p;
+    BatchModel q = p;
     q.masking = mk;
-    EllipsoidG2Batch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(), o.z.data(),
-                     out->data(), i.x.size());
+    EvalBatch(q, Quantity::kG2, {i.x.data(), i.y.data(), i.z.data()},
+              {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
   };
   m.brdf = [p](Masking mk, BatchFresnel kind, float eta, float k, const Dirs& i, const Dirs& o,
                std::vector<float>* out) {
-    EllipsoidBatchParams q = p;
+    BatchModel q = p;
     SetFresnel(&q, mk, kind, eta, k);
-    EllipsoidBrdfBatch(q, i.x.data(), i.y.data(), i.z.data(), o.x.data(), o.y.data(),
-                       o.z.data(), out->data(), i.x.size());
+    EvalBatch(q, Quantity::kBrdf, {i.x.data(), i.y.data(), i.z.data()},
+              {o.x.data(), o.y.data(), o.z.data()}, out->data(), i.x.size());
   };
   m.lambda = [ndf](const Vec3<double>& w) { return ndf.Lambda(w); };
   m.g2_ref = [ndf](const Vec3<double>& wi, const Vec3<double>& wo, Masking mk) {
@@ -312,14 +310,14 @@ void CheckPdfNdfAgainstScalar() {
     for (float alpha : {1e-3f, 0.1f, 0.7f}) {
       const StudentTNdf<double> ndf(alpha, alpha, gamma);
       if (std::isinf(gamma)) {
-        BeckmannBatchParams p;
+        BatchModel p{ModelKind::kBeckmann};
         p.alpha_x = p.alpha_y = alpha;
-        BeckmannPdfNdfBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
+        EvalBatch(p, Quantity::kPdfNdf, {m.x.data(), m.y.data(), m.z.data()}, out.data(), n);
       } else {
-        StudentTBatchParams p;
+        BatchModel p{ModelKind::kStudentT};
         p.alpha_x = p.alpha_y = alpha;
         p.gamma = gamma;
-        StudentTPdfNdfBatch(p, m.x.data(), m.y.data(), m.z.data(), out.data(), n);
+        EvalBatch(p, Quantity::kPdfNdf, {m.x.data(), m.y.data(), m.z.data()}, out.data(), n);
       }
       for (size_t i = 0; i < n; ++i) {
         const Vec3<double> v = m.At(i);
@@ -403,11 +401,11 @@ void CheckCountsAndSentinels() {
   const size_t max_n = 2 * lanes + 3;
   const Dirs wi = RandomDirs(max_n + 8, 36), wo = RandomDirs(max_n + 8, 37);
   const float kSentinel = -12345.0f;
-  GgxBatchParams gp;
+  BatchModel gp{ModelKind::kGgx};
   gp.fresnel = BatchFresnel::kConductor;
   gp.eta = 0.2f;
   gp.k = 3.0f;
-  StudentTBatchParams sp;
+  BatchModel sp{ModelKind::kStudentT};
   sp.gamma = 2.5f;
   for (size_t off = 0; off < 3; ++off) {
     for (size_t n = 0; n <= max_n; ++n) {
@@ -420,9 +418,9 @@ void CheckCountsAndSentinels() {
         const float* ox = wo.x.data() + off;
         const float* oy = wo.y.data() + off;
         const float* oz = wo.z.data() + off;
-        if (which == 0) GgxBrdfBatch(gp, ix, iy, iz, ox, oy, oz, out, n);
-        if (which == 1) StudentTG2Batch(sp, ix, iy, iz, ox, oy, oz, out, n);
-        if (which == 2) StudentTPdfNdfBatch(sp, ix, iy, iz, out, n);
+        if (which == 0) EvalBatch(gp, Quantity::kBrdf, {ix, iy, iz}, {ox, oy, oz}, out, n);
+        if (which == 1) EvalBatch(sp, Quantity::kG2, {ix, iy, iz}, {ox, oy, oz}, out, n);
+        if (which == 2) EvalBatch(sp, Quantity::kPdfNdf, {ix, iy, iz}, out, n);
         for (size_t k = 0; k < buf.size(); ++k) {
           const bool inside = k >= 16 + off && k < 16 + off + n;
           if (inside) {

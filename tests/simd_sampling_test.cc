@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // The Beckmann visible-normal sampler and the STD pseudo-VNIS
-// (batch_sampling.h) against their double scalar references on every
+// (batch.h) against their double scalar references on every
 // compiled target (one gtest case per target): for the same (u1, u2) the
 // kernel must return the reference's normal, within the bound documented
 // beside the kernel, over alpha from 1e-4 to 1, anisotropy 1000:1, views
@@ -24,7 +24,7 @@
 #include <boost/math/special_functions/erf.hpp>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/batch_sampling.h"
+#include "brdfbake/targets.h"
 #include "brdfbake/beckmann.h"
 #include "brdfbake/kernel_bounds.h"
 #include "brdfbake/std_ndf.h"
@@ -208,14 +208,14 @@ void CheckBeckmannSampleVisible() {
   std::vector<float> mx(n), my(n), mz(n), pdf(n);
   double worst = 0, worst_raw = 0, worst_pdf = 0, worst_dot = 1;
   for (const auto& a : kAlphas) {
-    BeckmannBatchParams p;
+    BatchModel p{ModelKind::kBeckmann};
     p.alpha_x = a[0];
     p.alpha_y = a[1];
     const BeckmannNdf<double> ndf(a[0], a[1]);
-    BeckmannSampleVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
-                               mx.data(), my.data(), mz.data(), n);
-    BeckmannPdfVisibleBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
-                            mz.data(), pdf.data(), n);
+    SampleBatch(p, Sampler::kVisible, {wo.x.data(), wo.y.data(), wo.z.data()}, u1.data(), u2.data(),
+                {mx.data(), my.data(), mz.data()}, n);
+    EvalBatch(p, Quantity::kPdfVisible, {wo.x.data(), wo.y.data(), wo.z.data()},
+              {mx.data(), my.data(), mz.data()}, pdf.data(), n);
     for (size_t i = 0; i < n; ++i) {
       const Vec3<double> w = wo.At(i), got(mx[i], my[i], mz[i]);
       const Vec3<double> ref = ndf.SampleVisible(w, u1[i], u2[i]);
@@ -257,17 +257,17 @@ void CheckStudentTPseudoVnis() {
   int cases[3] = {0, 0, 0};
   for (float gamma : gammas) {
     for (const auto& a : alphas) {
-      StudentTBatchParams p;
+      BatchModel p{ModelKind::kStudentT};
       p.alpha_x = a[0];
       p.alpha_y = a[1];
       p.gamma = gamma;
       const StudentTNdf<double> ndf(a[0], a[1], gamma);
       const int branch = ndf.PseudoVnisBranch();
       ++cases[branch];
-      StudentTSamplePseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), u1.data(), u2.data(),
-                               mx.data(), my.data(), mz.data(), n);
-      StudentTPdfPseudoVnisBatch(p, wo.x.data(), wo.y.data(), wo.z.data(), mx.data(), my.data(),
-                            mz.data(), pdf.data(), n);
+      SampleBatch(p, Sampler::kVisible, {wo.x.data(), wo.y.data(), wo.z.data()}, u1.data(),
+                  u2.data(), {mx.data(), my.data(), mz.data()}, n);
+      EvalBatch(p, Quantity::kPdfVisible, {wo.x.data(), wo.y.data(), wo.z.data()},
+                {mx.data(), my.data(), mz.data()}, pdf.data(), n);
       const bool visible = branch != 0;
       const double slope = branch == 1 ? 0.0 : branch == 2 ? kBeckSlope : kStudentTSlope;
       for (size_t i = 0; i < n; ++i) {
@@ -325,28 +325,29 @@ void CheckCounts(int n_out, const BatchCall& call) {
 
 void CheckSamplingCountsAndSentinels() {
   EXPECT_EQ(BatchTarget(), hwy::TargetName(HWY_TARGET));
-  BeckmannBatchParams bp;
+  BatchModel bp{ModelKind::kBeckmann};
   bp.alpha_x = 0.3f;
   bp.alpha_y = 0.05f;
   CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    BeckmannSampleVisibleBatch(bp, in[0], in[1], in[2], in[6], in[7], out[0], out[1], out[2], n);
+    SampleBatch(bp, Sampler::kVisible, {in[0], in[1], in[2]}, in[6], in[7],
+                {out[0], out[1], out[2]}, n);
   });
   CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    BeckmannPdfVisibleBatch(bp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
+    EvalBatch(bp, Quantity::kPdfVisible, {in[0], in[1], in[2]}, {in[3], in[4], in[5]}, out[0], n);
   });
 #if BRDFBAKE_WITH_STD
   // gamma 3.3 at sigma 0.3: GGX; 7 at sigma 0.2: NDF; 12: Beckmann.
   for (float gamma : {3.3f, 7.0f, 12.0f}) {
-    StudentTBatchParams sp;
+    BatchModel sp{ModelKind::kStudentT};
     sp.alpha_x = 0.3f;
     sp.alpha_y = gamma == 7.0f ? 0.3f * 0.4444f : 0.3f;
     sp.gamma = gamma;
     CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-      StudentTSamplePseudoVnisBatch(sp, in[0], in[1], in[2], in[6], in[7], out[0], out[1], out[2],
-                                    n);
+      SampleBatch(sp, Sampler::kVisible, {in[0], in[1], in[2]}, in[6], in[7],
+                  {out[0], out[1], out[2]}, n);
     });
     CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-      StudentTPdfPseudoVnisBatch(sp, in[0], in[1], in[2], in[3], in[4], in[5], out[0], n);
+      EvalBatch(sp, Quantity::kPdfVisible, {in[0], in[1], in[2]}, {in[3], in[4], in[5]}, out[0], n);
     });
   }
 #endif

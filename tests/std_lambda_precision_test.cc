@@ -24,7 +24,7 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <gtest/gtest.h>
 
-#include "brdfbake/batch_beckmann_std.h"
+#include "brdfbake/batch.h"
 #include "brdfbake/std_ndf.h"
 
 namespace brdfbake {
@@ -88,11 +88,11 @@ TEST(StudentTLambdaPrecisionTest, DoubleAndSimdAgainstFortyDigits) {
       as.push_back(static_cast<double>(wz.back()) / static_cast<double>(wx.back()));
       refs.push_back(LambdaRef(double(float(gamma)), as.back()));
     }
-    StudentTBatchParams p;
+    BatchModel p{ModelKind::kStudentT};
     p.alpha_x = p.alpha_y = 1.0f;
     p.gamma = static_cast<float>(gamma);
     std::vector<float> out(wx.size());
-    StudentTLambdaBatch(p, wx.data(), wy.data(), wz.data(), out.data(), out.size());
+    EvalBatch(p, Quantity::kLambda, {wx.data(), wy.data(), wz.data()}, out.data(), out.size());
     for (size_t i = 0; i < out.size(); ++i) {
       // The kernel's stated bound: |err| / max(1, Lambda) <= 1e-6.
       const double err = std::abs(out[i] - refs[i]) / std::max(1.0, refs[i]);

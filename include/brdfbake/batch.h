@@ -1,64 +1,106 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Batch evaluation with SIMD kernels (Highway, dynamic dispatch over the x86
-// targets compiled in). Structure of arrays, float lanes; no Highway type in
-// this interface. Each batch function dispatches once per call.
+// Batch evaluation with the SIMD kernels (Highway, dynamic dispatch over the
+// x86 targets compiled in; targets.h picks one). One model descriptor, one
+// quantity, one entry point per input shape: each call dispatches once, then
+// runs one branch-free loop. Structure of arrays, float lanes, no Highway
+// type here. Directions and normals are unit vectors in the shading frame
+// (n = +z); outputs may not alias inputs. The kernels and their error bounds
+// are in src/simd/*-inl.h (bounds in kernel_bounds.h), the double scalar
+// references in ggx.h, beckmann.h, std_ndf.h, ellipsoid.h and sel.h.
 
 #ifndef BRDFBAKE_BATCH_H_
 #define BRDFBAKE_BATCH_H_
 
 #include <cstddef>
-#include <string>
-#include <vector>
 
 #include "brdfbake/brdf.h"
+#include "brdfbake/fresnel.h"
+#include "brdfbake/model.h"
 
 namespace brdfbake {
 
-// The Fresnel factor of every BRDF batch kernel, evaluated at wo.h for one
-// colour channel: Schlick with F0 (`f0`; F0 = 1 gives F = 1), a dielectric
-// of relative index `eta`, or a conductor of complex index `eta` + i `k`
-// (the twins of Fresnel::Schlick / Dielectric / Conductor in fresnel.h).
+// The Fresnel factor of the BRDF, evaluated at wo.h for one colour channel:
+// Schlick with F0 (`f0`; F0 = 1 gives F = 1), a dielectric of relative
+// index `eta`, or a conductor of complex index `eta` + i `k` (the twins of
+// Fresnel::Schlick / Dielectric / Conductor in fresnel.h).
 enum class BatchFresnel { kSchlick, kDielectric, kConductor };
 
-struct GgxBatchParams {
-  float alpha_x = 0.25f, alpha_y = 0.25f;  // clamped below at 1e-4
-  float f0 = 1.0f;                         // Schlick F0; 1 means F = 1
+// A model as the batch kernels take it. Widths are clamped below at 1e-4;
+// gamma (std) below at 1.5 + 1e-6, and from 1e10 on (and at +inf) std runs
+// the Beckmann kernels. Angles in radians: the ellipsoid's A = S Rx Ry Rz,
+// the sel lobe's frame Q = Rx Ry Rz.
+struct BatchModel {
+  ModelKind kind = ModelKind::kGgx;  // ggx, beckmann, std, ellipsoid or sel
+  float alpha_x = 0.25f, alpha_y = 0.25f;
+  float gamma = 2.0f;
+  float theta_x = 0, theta_y = 0, theta_z = 0;
   Masking masking = Masking::kHeightCorrelated;
   BatchFresnel fresnel = BatchFresnel::kSchlick;
+  float f0 = 1.0f;             // Schlick F0; 1 means F = 1
   float eta = 1.5f, k = 0.0f;  // dielectric eta, or conductor eta + i k
 };
 
-// f(wi, wo) of anisotropic GGX with the Fresnel of `p`, for n pairs of unit
-// directions given as separate x, y, z arrays. Zero when either direction is
-// on or below the horizon.
-void GgxBrdfBatch(const GgxBatchParams& p, const float* wi_x, const float* wi_y,
-                  const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
-                  float* out, size_t n);
-// D(m) for n unit normals (zero for m.z <= 0).
-void GgxDBatch(const GgxBatchParams& p, const float* m_x, const float* m_y, const float* m_z,
-               float* out, size_t n);
-// Lambda(w) for n unit directions (+inf for w.z <= 0).
-void GgxLambdaBatch(const GgxBatchParams& p, const float* w_x, const float* w_y,
-                    const float* w_z, float* out, size_t n);
-// Smith G1(w) = 1 / (1 + Lambda(w)) (0 on and below the horizon), and G2 of
-// the reflection pairs (wi, wo) with p.masking (0 when either direction is on
-// or below the horizon).
-void GgxG1Batch(const GgxBatchParams& p, const float* w_x, const float* w_y, const float* w_z,
-                float* out, size_t n);
-void GgxG2Batch(const GgxBatchParams& p, const float* wi_x, const float* wi_y,
-                const float* wi_z, const float* wo_x, const float* wo_y, const float* wo_z,
-                float* out, size_t n);
+// The descriptor of a model's parameters (in float), with `masking` and
+// channel 0 of `fresnel` (the kernels take one channel: a coloured Fresnel
+// needs one call per channel).
+BatchModel BatchModelOf(const ModelParams& model, Masking masking = Masking::kHeightCorrelated,
+                        const Fresnel& fresnel = Fresnel::One());
 
-// The Highway target the batch functions dispatch to right now (e.g. AVX3).
-std::string BatchTarget();
-// Restricts dynamic dispatch to the named target (AVX3, AVX2, SSE4, ...,
-// or "best" to undo). Throws std::invalid_argument naming the target if it
-// was not compiled in or this CPU lacks it.
-void ForceTarget(const std::string& name);
-// Every target that is compiled in and runs on this CPU, best first.
-std::vector<std::string> AvailableTargets();
+// What a batch call evaluates. The first five take one direction (or
+// normal), the rest a pair.
+enum class Quantity {
+  kD,           // D(m), zero for m.z <= 0
+  kLambda,      // Lambda(w), +inf for w.z <= 0
+  kG1,          // G1(w), zero for w.z <= 0
+  kPdfNdf,      // D(m) max(0, m.z): the density of Sampler::kNdf
+  kK,           // the sel lobe K(w)
+  kG2,          // G2(wi, wo) with the model's masking; zero unless both are above the horizon
+  kBrdf,        // f(wi, wo) with the model's Fresnel at wo.h and its masking
+  kPdfVisible,  // the density of Sampler::kVisible at (wo, m)
+};
+
+// How SampleBatch draws normals m from uniform (u1, u2) in [0, 1]^2.
+enum class Sampler {
+  kNdf,      // density D(m) m.z: phi = 2 pi u1, the radial CDF inverted at u2
+  kVisible,  // visible normals of wo (seed 003 for ggx, exact CDF inversion for
+             // beckmann, seed 000 Version 3 for the ellipsoid, the pseudo-VNIS
+             // of seed 004 Algorithm 1 for std); m = 0 for wo.z <= 0
+};
+
+const char* QuantityName(Quantity q);  // D, Lambda, G1, pdf_ndf, K, G2, brdf, pdf_visible
+bool IsPairQuantity(Quantity q);       // G2, brdf, pdf_visible
+bool BatchSupports(ModelKind kind, Quantity q);
+bool BatchSupports(ModelKind kind, Sampler s);
+
+// n unit vectors as three arrays.
+struct DirArrays {
+  const float* x;
+  const float* y;
+  const float* z;
+};
+struct DirOutArrays {
+  float* x;
+  float* y;
+  float* z;
+};
+
+// out[j] = q(w[j]) for a one-direction quantity, or q(a[j], b[j]) for a
+// pair: (wi, wo) for G2 and brdf, (wo, m) for pdf_visible. A model that
+// does not define q, a model left out of this build, or the wrong shape
+// throws std::invalid_argument before any output is written.
+void EvalBatch(const BatchModel& model, Quantity q, DirArrays w, float* out, size_t n);
+void EvalBatch(const BatchModel& model, Quantity q, DirArrays a, DirArrays b, float* out, size_t n);
+// m[j] drawn by sampler s from (u1[j], u2[j]); wo is read by kVisible only.
+void SampleBatch(const BatchModel& model, Sampler s, DirArrays wo, const float* u1, const float* u2,
+                 DirOutArrays m, size_t n);
+
+// FresnelDielectric(eta, cos_i[j]) for n cosines (clamped to [0, 1]);
+// eta = n_t / n_i in [0.01, 100].
+void FresnelDielectricBatch(float eta, const float* cos_i, float* out, size_t n);
+// FresnelConductor(eta_re, eta_im, cos_i[j]), complex eta = eta_re + i eta_im.
+void FresnelConductorBatch(float eta_re, float eta_im, const float* cos_i, float* out, size_t n);
 
 }  // namespace brdfbake
 

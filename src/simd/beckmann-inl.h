@@ -43,7 +43,7 @@
 //           (the exponent is formed from s = wi + wo: one ulp more).
 // Where exp(-r2) is below FLT_MIN (r2 > 87.3) it is a subnormal, and 0 for
 // r2 > 104; the batch functions flush subnormals to zero, so their D and BRDF
-// are 0 there (src/batch_beckmann_std.cc).
+// are 0 there (src/batch.cc).
 // a is clamped to 1e4 (Lambda is exactly 0 beyond a = 10.2) so that M_i M_o D
 // stays below 1e34.
 

@@ -33,7 +33,7 @@
 // three branches, every target): normals 4.8e-7 (NDF), 3.2e-7 (GGX), 6.4e-7
 // (Beckmann); densities at most 0.62 of their bound.
 // u in [0, 1]^2, except that the NDF branch takes u2 = 1 as 1 - 2^-24 (as
-// StudentTSampleNdfBatch does; the reference takes it as 1 - 2^-53).
+// SampleBatch with Sampler::kNdf does; the reference takes it as 1 - 2^-53).
 
 #if defined(BRDFBAKE_SIMD_STD_SAMPLING_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef BRDFBAKE_SIMD_STD_SAMPLING_INL_H_

@@ -1,0 +1,96 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The Beckmann batch kernels (src/simd/beckmann-inl.h,
+// beckmann_sampling-inl.h) behind batch.h, compiled once per Highway target
+// by foreach_target.h. BeckmannEval also serves std from gamma = 1e10 on.
+
+#include "batch_dispatch.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/batch_beckmann.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/batch_rows-inl.h"
+#include "simd/beckmann-inl.h"
+#include "simd/beckmann_sampling-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
+  const auto lambda = [&](auto d, auto x, auto y, auto z) { return BeckmannLambda(d, c, x, y, z); };
+  switch (q) {
+    case Quantity::kD:
+      return DirRows([&](auto d, auto x, auto y, auto z) { return BeckmannD(d, c, x, y, z); }, in,
+                     out, n);
+    case Quantity::kLambda:
+      return DirRows(lambda, in, out, n);
+    case Quantity::kG1:
+      return G1Rows(lambda, in, out, n);
+    case Quantity::kPdfNdf:
+      return DirRows(
+          [&](auto d, auto x, auto y, auto z) {
+            return hn::Mul(BeckmannD(d, c, x, y, z), hn::Max(z, hn::Zero(d)));
+          },
+          in, out, n);
+    case Quantity::kG2:
+      return G2Rows(p.masking, lambda, in, out, n);
+    case Quantity::kBrdf:
+      return BrdfRows(
+          p,
+          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
+              const auto& fresnel) {
+            return BeckmannBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
+          },
+          in, out, n);
+    case Quantity::kPdfVisible:
+      return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+                          auto mz) { return BeckmannPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
+                      in, out, n);
+    default:
+      return;
+  }
+}
+
+void BeckmannSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                    size_t n) {
+  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
+  if (s == Sampler::kVisible) {
+    return VisibleRows(
+        [&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
+          BeckmannSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+        },
+        in, out, n);
+  }
+  NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
+                    auto* mz) { BeckmannSampleNdf(d, c, u1, u2, mx, my, mz); },
+                in, out, n);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+HWY_EXPORT(BeckmannEval);
+HWY_EXPORT(BeckmannSample);
+
+void BeckmannEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                       size_t n) {
+  HWY_DYNAMIC_DISPATCH(BeckmannEval)(p, q, in, out, n);
+}
+void BeckmannSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                         size_t n) {
+  HWY_DYNAMIC_DISPATCH(BeckmannSample)(p, s, in, out, n);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE

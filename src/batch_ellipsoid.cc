@@ -1,0 +1,88 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The ellipsoid NDF's batch kernels (src/simd/ellipsoid-inl.h, seed 000)
+// behind batch.h, compiled once per Highway target by foreach_target.h.
+
+#include "batch_dispatch.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/batch_ellipsoid.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/batch_rows-inl.h"
+#include "simd/ellipsoid-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+EllipsoidConsts<DF> MakeEllipsoidConsts(const BatchModel& p) {
+  return EllipsoidConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z, p.f0);
+}
+
+void EllipsoidEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
+  const auto lambda = [&](auto d, auto x, auto y, auto z) {
+    return EllipsoidLambda(d, c, x, y, z);
+  };
+  switch (q) {
+    case Quantity::kD:
+      return DirRows([&](auto d, auto x, auto y, auto z) { return EllipsoidD(d, c, x, y, z); }, in,
+                     out, n);
+    case Quantity::kLambda:
+      return DirRows(lambda, in, out, n);
+    case Quantity::kG1:
+      return DirRows([&](auto d, auto x, auto y, auto z) { return EllipsoidG1(d, c, x, y, z); }, in,
+                     out, n);
+    case Quantity::kG2:
+      return G2Rows(p.masking, lambda, in, out, n);
+    case Quantity::kBrdf:
+      return BrdfRows(
+          p,
+          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
+              const auto& fresnel) {
+            return EllipsoidBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
+          },
+          in, out, n);
+    case Quantity::kPdfVisible:
+      return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+                          auto mz) { return EllipsoidPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
+                      in, out, n);
+    default:
+      return;
+  }
+}
+
+void EllipsoidSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                     size_t n) {
+  const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
+  VisibleRows([&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my,
+                  auto* mz) { EllipsoidSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz); },
+              in, out, n);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+HWY_EXPORT(EllipsoidEval);
+HWY_EXPORT(EllipsoidSample);
+
+void EllipsoidEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                        size_t n) {
+  HWY_DYNAMIC_DISPATCH(EllipsoidEval)(p, q, in, out, n);
+}
+void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                          size_t n) {
+  HWY_DYNAMIC_DISPATCH(EllipsoidSample)(p, s, in, out, n);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE

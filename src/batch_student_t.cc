@@ -1,0 +1,111 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The Student's-t (std) batch kernels (src/simd/std-inl.h,
+// std_sampling-inl.h) behind batch.h, compiled once per Highway target by
+// foreach_target.h. From gamma = 1e10 on (kStudentTBeckmannGamma) D,
+// Lambda, G1, G2, the BRDF and NDF sampling are Beckmann's
+// (batch_beckmann.cc); the pseudo-VNIS handles that limit itself.
+
+#include "batch_dispatch.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/batch_student_t.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "simd/batch_rows-inl.h"
+#include "simd/beckmann-inl.h"
+#include "simd/std-inl.h"
+#include "simd/std_sampling-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+// batch_beckmann.cc, the same target.
+void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
+
+void StudentTEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  if (q == Quantity::kPdfVisible) {
+    const StudentTSamplingConsts<DF> s(DF(), p.alpha_x, p.alpha_y, p.gamma);
+    return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+                        auto mz) { return StudentTPdfPseudoVnis(d, s, ox, oy, oz, mx, my, mz); },
+                    in, out, n);
+  }
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+  if (c.beckmann) return BeckmannEval(p, q, in, out, n);
+  const auto lambda = [&](auto d, auto x, auto y, auto z) { return StudentTLambda(d, c, x, y, z); };
+  switch (q) {
+    case Quantity::kD:
+      return DirRows([&](auto d, auto x, auto y, auto z) { return StudentTD(d, c, x, y, z); }, in,
+                     out, n);
+    case Quantity::kLambda:
+      return DirRows(lambda, in, out, n);
+    case Quantity::kG1:
+      return G1Rows(lambda, in, out, n);
+    case Quantity::kPdfNdf:
+      return DirRows(
+          [&](auto d, auto x, auto y, auto z) {
+            return hn::Mul(StudentTD(d, c, x, y, z), hn::Max(z, hn::Zero(d)));
+          },
+          in, out, n);
+    case Quantity::kG2:
+      return G2Rows(p.masking, lambda, in, out, n);
+    case Quantity::kBrdf:
+      return BrdfRows(
+          p,
+          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
+              const auto& fresnel) {
+            return StudentTBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
+          },
+          in, out, n);
+    default:
+      return;
+  }
+}
+
+void StudentTSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                    size_t n) {
+  if (s == Sampler::kVisible) {
+    const StudentTSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
+    return VisibleRows(
+        [&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
+          StudentTSamplePseudoVnis(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+        },
+        in, out, n);
+  }
+  const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
+  if (c.beckmann) {
+    return NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
+                             auto* mz) { BeckmannSampleNdf(d, c.b, u1, u2, mx, my, mz); },
+                         in, out, n);
+  }
+  NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
+                    auto* mz) { StudentTSampleNdf(d, c, u1, u2, mx, my, mz); },
+                in, out, n);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+HWY_EXPORT(StudentTEval);
+HWY_EXPORT(StudentTSample);
+
+void StudentTEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                       size_t n) {
+  HWY_DYNAMIC_DISPATCH(StudentTEval)(p, q, in, out, n);
+}
+void StudentTSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                         size_t n) {
+  HWY_DYNAMIC_DISPATCH(StudentTSample)(p, s, in, out, n);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE

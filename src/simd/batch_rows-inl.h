@@ -1,0 +1,101 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The loops of the batch interface (batch.h), shared by every
+// src/batch_<model>.cc: a model hands in its kernels as generic lambdas
+// (d, x, y, z) or (d, separable, wi..., wo..., fresnel) and these run them
+// over the structure-of-arrays rows, padded to whole vectors
+// (ForEachVector, ForEachVectorOut), with masking and Fresnel resolved
+// once per call.
+
+#if defined(BRDFBAKE_SIMD_BATCH_ROWS_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef BRDFBAKE_SIMD_BATCH_ROWS_INL_H_
+#undef BRDFBAKE_SIMD_BATCH_ROWS_INL_H_
+#else
+#define BRDFBAKE_SIMD_BATCH_ROWS_INL_H_
+#endif
+
+#include <hwy/highway.h>
+
+#include <cstddef>
+
+#include "brdfbake/batch.h"
+#include "simd/foreach-inl.h"
+#include "simd/foreach_out-inl.h"
+#include "simd/fresnel-inl.h"
+#include "simd/ggx-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// out = k(d, x, y, z) of one direction per lane.
+template <class K>
+HWY_INLINE void DirRows(const K& k, const float* const* in, float* out, size_t n) {
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) { return k(d, v[0], v[1], v[2]); });
+}
+
+// out = k(d, ax, ay, az, bx, by, bz) of a pair per lane.
+template <class K>
+HWY_INLINE void PairRows(const K& k, const float* const* in, float* out, size_t n) {
+  ForEachVector<6>(in, 0.5f, out, n,
+                   [&](auto d, const auto* v) { return k(d, v[0], v[1], v[2], v[3], v[4], v[5]); });
+}
+
+// G1 = 1 / (1 + Lambda) from a Lambda kernel lambda(d, x, y, z).
+template <class L>
+HWY_INLINE void G1Rows(const L& lambda, const float* const* in, float* out, size_t n) {
+  ForEachVector<3>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+    const auto l = [&](auto x, auto y, auto z) { return lambda(d, x, y, z); };
+    return G1FromLambda(d, l, v[0], v[1], v[2]);
+  });
+}
+
+// G2 of (wi, wo) pairs with `masking`, from a Lambda kernel.
+template <class L>
+HWY_INLINE void G2Rows(Masking masking, const L& lambda, const float* const* in, float* out,
+                       size_t n) {
+  WithMasking(masking, [&](auto separable) {
+    ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+      const auto l = [&](auto x, auto y, auto z) { return lambda(d, x, y, z); };
+      return G2FromLambda(d, separable, l, v[0], v[1], v[2], v[3], v[4], v[5]);
+    });
+  });
+}
+
+// f(wi, wo) from a BRDF kernel brdf(d, separable, wi..., wo..., fresnel),
+// with the Fresnel functor and masking of p.
+template <class B>
+HWY_INLINE void BrdfRows(const BatchModel& p, const B& brdf, const float* const* in, float* out,
+                         size_t n) {
+  WithFresnel(hn::ScalableTag<float>(), p, [&](const auto& fresnel) {
+    WithMasking(p.masking, [&](auto separable) {
+      ForEachVector<6>(in, 0.5f, out, n, [&](auto d, const auto* v) {
+        return brdf(d, separable, v[0], v[1], v[2], v[3], v[4], v[5], fresnel);
+      });
+    });
+  });
+}
+
+// Normals from a sampler: kVisible calls k(d, wo_x, wo_y, wo_z, u1, u2,
+// &m_x, &m_y, &m_z), kNdf calls k(d, u1, u2, &m_x, &m_y, &m_z).
+template <class K>
+HWY_INLINE void VisibleRows(const K& k, const float* const* in, float* const* out, size_t n) {
+  ForEachVectorOut<5, 3>(in, 0.5f, out, n, [&](auto d, const auto* v, auto* r) {
+    k(d, v[0], v[1], v[2], v[3], v[4], &r[0], &r[1], &r[2]);
+  });
+}
+template <class K>
+HWY_INLINE void NdfSampleRows(const K& k, const float* const* in, float* const* out, size_t n) {
+  const float* u[2] = {in[3], in[4]};
+  ForEachVectorOut<2, 3>(u, 0.5f, out, n, [&](auto d, const auto* v, auto* r) {
+    k(d, v[0], v[1], &r[0], &r[1], &r[2]);
+  });
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#endif  // BRDFBAKE_SIMD_BATCH_ROWS_INL_H_
