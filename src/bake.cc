@@ -26,7 +26,8 @@
 #include "ellipsoid_albedo_rule.h"
 #include "sel_norm.h"
 #include "azimuthal.h"
-#include "integrate.h"
+#include "disk_quadrature.h"
+#include "sampling_integrators.h"
 #include "quadrature_simd.h"
 
 namespace brdfbake {

@@ -19,7 +19,6 @@
 #include "adaptive_rule.h"
 #include "brdfbake/ellipsoid.h"
 #include "ellipsoid_albedo.h"
-#include "integrate.h"
 #include "poly_roots.h"
 
 namespace brdfbake {

@@ -167,27 +167,8 @@ std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const ReportLog& sa
   return rows;
 }
 
-}  // namespace
-
-Report RunReport(const ReportSpec& spec, const ReportLog& log) {
-  ValidateBakeSpec(spec.table);
-  if (spec.repeats < 1 || spec.repeats > 100) {
-    throw std::invalid_argument("--repeats must be in [1, 100]");
-  }
-  auto say = [&](const std::string& s) {
-    if (log) log(s);
-  };
-  Report report;
-  report.spec = spec;
-  if (spec.table.Anisotropic()) {
-    if (spec.table.table != TableKind::kE) {
-      throw std::invalid_argument("report: ggx-aniso reports the collapse study of E (--table E)");
-    }
-    report.collapse = CollapseStudy(spec.table, say);
-    return report;
-  }
-
-  // The converged reference.
+// The converged reference of the report's table.
+Table ReferenceTable(const ReportSpec& spec, const ReportLog& say) {
   BakeSpec ref_spec = spec.table;
   ref_spec.integrator = IntegratorKind::kQuadrature;
   ref_spec.tolerance = spec.reference_tolerance;
@@ -195,10 +176,14 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   ref_spec.error_channel = false;
   ref_spec.complement = false;
   say("reference: quadrature, tolerance " + Num(spec.reference_tolerance));
-  const Table ref = Bake(ref_spec);
-  report.reference_seconds = ref.seconds;
-  report.reference_claimed_error = ref.integration_error;
+  return Bake(ref_spec);
+}
 
+// Each integrator along its ladder of budgets: median time of the repeats,
+// error against the reference, and the error it claims.
+std::vector<ReportRow> BudgetLadders(const ReportSpec& spec, const Table& ref,
+                                     const ReportLog& say) {
+  std::vector<ReportRow> rows;
   struct Ladder {
     IntegratorKind kind;
     const char* budget_name;
@@ -247,14 +232,113 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
       say(row.integrator + " " + row.budget_name + "=" + Num(budget) + ": " +
           Num(row.seconds_median, "%.3g") + " s, max error " + Num(row.max_abs_error, "%.2e") +
           " (claimed " + Num(row.claimed_max_error, "%.2e") + ")");
-      report.rows.push_back(row);
+      rows.push_back(row);
     }
   }
 
-  // Interpolation error of bilinear (or linear, for E_avg) lookup at cell
-  // midpoints, against the converged integrator at those points; with a
-  // gamma axis, of linear lookup between gamma slices.
-  const bool one_d = spec.table.table == TableKind::kEavg;
+  return rows;
+}
+
+// Interpolation error of bilinear (or linear, for E_avg) lookup at cell
+// midpoints of an n-entry table, against the converged integrator at those
+// points; false if the table has no interior cell to probe.
+bool PlaneInterpolation(const BakeSpec& s_in, int n, int interpolation_probes,
+                        InterpolationRow* out) {
+  BakeSpec s = s_in;
+  const bool one_d = s.table == TableKind::kEavg;
+  s.roughness.size = n;
+  if (!one_d) s.mu.size = n;
+  if ((s.roughness.placement == Placement::kEdges && n < 2) || n < 1) return false;
+  const Table t = Bake(s);
+  const int cells_r = n - 1;
+  const int cells_m = one_d ? 1 : n - 1;
+  if (cells_r < 1 || cells_m < 1) return false;
+  const int pr = std::min(cells_r, interpolation_probes);
+  const int pm = one_d ? 1 : std::min(cells_m, interpolation_probes);
+  // Exact values at the probe points, computed in parallel; the reduction
+  // below is serial so the result does not depend on the thread count.
+  struct Probe {
+    int cr, cm;
+    std::vector<double> exact;
+  };
+  std::vector<Probe> probes(static_cast<size_t>(pr) * pm);
+  tbb::parallel_for(0, pr * pm, [&](int k) {
+    const int a = k / pm, b = k % pm;
+    Probe& p = probes[k];
+    p.cr = (a * cells_r) / pr;
+    p.cm = one_d ? 0 : (b * cells_m) / pm;
+    const double r = s.roughness.ValueAt(p.cr + 0.5);
+    if (one_d) {
+      BakeSpec one = s;
+      one.roughness.size = 1;
+      one.roughness.placement = Placement::kCenters;
+      one.roughness.min = one.roughness.max = r;
+      one.roughness.warp = Warp::kLinear;
+      p.exact.push_back(Bake(one).channels[0].values[0]);
+    } else {
+      const TexelEstimate v = IntegrateTexel(s, r, s.mu.ValueAt(p.cm + 0.5));
+      if (s.table == TableKind::kE) {
+        p.exact.push_back(v.e);
+      } else {
+        p.exact.push_back(v.scale);
+        p.exact.push_back(v.bias);
+      }
+    }
+  });
+  double max_err = 0, max_err_inner = 0, sum2 = 0;
+  int count = 0;
+  for (const Probe& p : probes) {
+    for (size_t c = 0; c < p.exact.size(); ++c) {
+      const std::vector<double>& vals = t.channels[c].values;
+      double interp;
+      if (one_d) {
+        interp = 0.5 * (vals[p.cr] + vals[p.cr + 1]);
+      } else {
+        const int w = t.width;
+        interp = 0.25 * (vals[p.cr * w + p.cm] + vals[p.cr * w + p.cm + 1] +
+                         vals[(p.cr + 1) * w + p.cm] + vals[(p.cr + 1) * w + p.cm + 1]);
+      }
+      const double d = std::abs(interp - p.exact[c]);
+      max_err = std::max(max_err, d);
+      if (one_d || p.cm > 0) max_err_inner = std::max(max_err_inner, d);
+      sum2 += d * d;
+      ++count;
+    }
+  }
+  InterpolationRow& row = *out;
+  row.size = n;
+  row.max_abs_error = max_err;
+  row.max_abs_error_inner = max_err_inner;
+  row.rms_error = count ? std::sqrt(sum2 / count) : 0;
+  row.probes = count;
+  row.bake_seconds = t.seconds;
+  return true;
+}
+
+}  // namespace
+
+Report RunReport(const ReportSpec& spec, const ReportLog& log) {
+  ValidateBakeSpec(spec.table);
+  if (spec.repeats < 1 || spec.repeats > 100) {
+    throw std::invalid_argument("--repeats must be in [1, 100]");
+  }
+  const ReportLog say = [&](const std::string& s) {
+    if (log) log(s);
+  };
+  Report report;
+  report.spec = spec;
+  if (spec.table.Anisotropic()) {
+    if (spec.table.table != TableKind::kE) {
+      throw std::invalid_argument("report: ggx-aniso reports the collapse study of E (--table E)");
+    }
+    report.collapse = CollapseStudy(spec.table, say);
+    return report;
+  }
+  const Table ref = ReferenceTable(spec, say);
+  report.reference_seconds = ref.seconds;
+  report.reference_claimed_error = ref.integration_error;
+  report.rows = BudgetLadders(spec, ref, say);
+  // With a gamma axis, the error of linear lookup between gamma slices.
   for (int n : spec.interpolation_sizes) {
     BakeSpec s = spec.table;
     s.integrator = IntegratorKind::kQuadrature;
@@ -262,81 +346,16 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
     s.samples = 0;
     s.error_channel = false;
     s.complement = false;
+    InterpolationRow row;
     if (spec.table.HasGammaAxis()) {
       if (n < 2) continue;
-      const InterpolationRow row = GammaInterpolation(s, n, spec.interpolation_probes);
+      row = GammaInterpolation(s, n, spec.interpolation_probes);
       say("interpolation along gamma, " + std::to_string(n) + " slices: max error " +
           Num(row.max_abs_error, "%.2e"));
-      report.interpolation.push_back(row);
-      continue;
+    } else {
+      if (!PlaneInterpolation(s, n, spec.interpolation_probes, &row)) continue;
+      say("interpolation " + std::to_string(n) + ": max error " + Num(row.max_abs_error, "%.2e"));
     }
-    s.roughness.size = n;
-    if (!one_d) s.mu.size = n;
-    if ((s.roughness.placement == Placement::kEdges && n < 2) || n < 1) continue;
-    const Table t = Bake(s);
-    const int cells_r = s.roughness.placement == Placement::kEdges ? n - 1 : n - 1;
-    const int cells_m = one_d ? 1 : (s.mu.placement == Placement::kEdges ? n - 1 : n - 1);
-    if (cells_r < 1 || cells_m < 1) continue;
-    const int pr = std::min(cells_r, spec.interpolation_probes);
-    const int pm = one_d ? 1 : std::min(cells_m, spec.interpolation_probes);
-    // Exact values at the probe points, computed in parallel; the reduction
-    // below is serial so the result does not depend on the thread count.
-    struct Probe {
-      int cr, cm;
-      std::vector<double> exact;
-    };
-    std::vector<Probe> probes(static_cast<size_t>(pr) * pm);
-    tbb::parallel_for(0, pr * pm, [&](int k) {
-      const int a = k / pm, b = k % pm;
-      Probe& p = probes[k];
-      p.cr = (a * cells_r) / pr;
-      p.cm = one_d ? 0 : (b * cells_m) / pm;
-      const double r = s.roughness.ValueAt(p.cr + 0.5);
-      if (one_d) {
-        BakeSpec one = s;
-        one.roughness.size = 1;
-        one.roughness.placement = Placement::kCenters;
-        one.roughness.min = one.roughness.max = r;
-        one.roughness.warp = Warp::kLinear;
-        p.exact.push_back(Bake(one).channels[0].values[0]);
-      } else {
-        const TexelEstimate v = IntegrateTexel(s, r, s.mu.ValueAt(p.cm + 0.5));
-        if (s.table == TableKind::kE) {
-          p.exact.push_back(v.e);
-        } else {
-          p.exact.push_back(v.scale);
-          p.exact.push_back(v.bias);
-        }
-      }
-    });
-    double max_err = 0, max_err_inner = 0, sum2 = 0;
-    int count = 0;
-    for (const Probe& p : probes) {
-      for (size_t c = 0; c < p.exact.size(); ++c) {
-        const std::vector<double>& vals = t.channels[c].values;
-        double interp;
-        if (one_d) {
-          interp = 0.5 * (vals[p.cr] + vals[p.cr + 1]);
-        } else {
-          const int w = t.width;
-          interp = 0.25 * (vals[p.cr * w + p.cm] + vals[p.cr * w + p.cm + 1] +
-                           vals[(p.cr + 1) * w + p.cm] + vals[(p.cr + 1) * w + p.cm + 1]);
-        }
-        const double d = std::abs(interp - p.exact[c]);
-        max_err = std::max(max_err, d);
-        if (one_d || p.cm > 0) max_err_inner = std::max(max_err_inner, d);
-        sum2 += d * d;
-        ++count;
-      }
-    }
-    InterpolationRow row;
-    row.size = n;
-    row.max_abs_error = max_err;
-    row.max_abs_error_inner = max_err_inner;
-    row.rms_error = count ? std::sqrt(sum2 / count) : 0;
-    row.probes = count;
-    row.bake_seconds = t.seconds;
-    say("interpolation " + std::to_string(n) + ": max error " + Num(max_err, "%.2e"));
     report.interpolation.push_back(row);
   }
   return report;

@@ -3,7 +3,7 @@
 //
 // The one-dimensional rule of Beckmann and the STD (src/azimuthal_slope.h:
 // Lambda per theta_i, the azimuth of D and D Fc numerically) against the
-// two-dimensional rule over the visible-normal disk (integrate.h: a
+// two-dimensional rule over the visible-normal disk (disk_quadrature.h: a
 // different domain, a different parameterisation and different code), and
 // its claims against the converged rule.
 
@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "azimuthal_slope.h"
-#include "integrate.h"
+#include "disk_quadrature.h"
 
 namespace brdfbake {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "azimuthal.h"
 #include "brdfbake/ggx.h"
-#include "integrate.h"
+#include "disk_quadrature.h"
 
 namespace brdfbake {
 namespace {

@@ -37,9 +37,11 @@ constexpr Quantity kQuantities[] = {Quantity::kD,      Quantity::kLambda,    Qua
                                     Quantity::kBrdf,   Quantity::kPdfVisible};
 constexpr Sampler kSamplers[] = {Sampler::kNdf, Sampler::kVisible};
 
-// A model of each kind with parameters off its special cases (anisotropic,
-// rotated, a Fresnel that is not 1).
-inline BatchModel ModelOf(ModelKind kind) {
+// Descriptors of each kind off their special cases (anisotropic, rotated)
+// and through their branches: both maskings, the three Fresnel kinds, and
+// for std the pseudo-VNIS's three branches (gamma 3.3: GGX, 7 with these
+// widths: the NDF, 12: Beckmann), a heavy tail and the Beckmann limit.
+inline std::vector<BatchModel> ModelsOf(ModelKind kind) {
   BatchModel p;
   p.kind = kind;
   p.alpha_x = 0.3f;
@@ -51,7 +53,26 @@ inline BatchModel ModelOf(ModelKind kind) {
   p.masking = Masking::kSeparable;
   p.fresnel = BatchFresnel::kDielectric;
   p.eta = 1.6f;
-  return p;
+  std::vector<BatchModel> out = {p};
+  p.masking = Masking::kHeightCorrelated;
+  p.fresnel = BatchFresnel::kConductor;
+  p.eta = 0.2f;
+  p.k = 3.0f;
+  p.gamma = 1.6f;
+  out.push_back(p);
+  p.fresnel = BatchFresnel::kSchlick;
+  p.f0 = 0.04f;
+  p.gamma = 1e12f;
+  out.push_back(p);
+  if (kind == ModelKind::kStudentT) {
+    for (float gamma : {3.3f, 7.0f, 12.0f}) {
+      p.alpha_x = 0.3f;
+      p.alpha_y = gamma == 7.0f ? 0.3f * 0.4444f : 0.3f;
+      p.gamma = gamma;
+      out.push_back(p);
+    }
+  }
+  return out;
 }
 
 inline std::vector<float> Uniforms(size_t n, uint64_t seed) {
@@ -74,39 +95,50 @@ void CheckEveryModelQuantityAndCount() {
   EXPECT_EQ(BatchTarget(), hwy::TargetName(HWY_TARGET));
   const size_t lanes = hwy::HWY_NAMESPACE::Lanes(hwy::HWY_NAMESPACE::ScalableTag<float>());
   const size_t max_n = 2 * lanes + 3, len = max_n + 8;
-  const test_util::Dirs a = test_util::RandomDirs(len, 41), b = test_util::RandomDirs(len, 42);
+  const test::Dirs a = test::RandomDirs(len, 41), b = test::RandomDirs(len, 42);
   const std::vector<float> u1 = batch_test::Uniforms(len, 43), u2 = batch_test::Uniforms(len, 44);
   const float* in[8] = {a.x.data(), a.y.data(), a.z.data(), b.x.data(),
                         b.y.data(), b.z.data(), u1.data(),  u2.data()};
   int cases = 0;
   for (ModelKind kind : batch_test::kKinds) {
     if (kind == ModelKind::kGgxAniso || !ModelBuilt(kind)) continue;
-    const BatchModel p = batch_test::ModelOf(kind);
-    for (Quantity q : batch_test::kQuantities) {
-      if (!BatchSupports(kind, q)) continue;
-      SCOPED_TRACE(std::string(ModelName(kind)) + " " + QuantityName(q));
-      test_util::CheckCountsAndSentinels(
-          in, len, max_n, 1, [&](const float* const* v, float* const* out, size_t n) {
-            if (IsPairQuantity(q)) {
-              EvalBatch(p, q, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, out[0], n);
-            } else {
-              EvalBatch(p, q, {v[0], v[1], v[2]}, out[0], n);
-            }
-          });
-      ++cases;
-    }
-    for (Sampler s : batch_test::kSamplers) {
-      if (!BatchSupports(kind, s)) continue;
-      SCOPED_TRACE(std::string(ModelName(kind)) + (s == Sampler::kNdf ? " ndf" : " visible"));
-      test_util::CheckCountsAndSentinels(
-          in, len, max_n, 3, [&](const float* const* v, float* const* out, size_t n) {
-            SampleBatch(p, s, {v[3], v[4], v[5]}, v[6], v[7], {out[0], out[1], out[2]}, n);
-          });
-      ++cases;
+    for (const BatchModel& p : batch_test::ModelsOf(kind)) {
+      for (Quantity q : batch_test::kQuantities) {
+        if (!BatchSupports(kind, q)) continue;
+        SCOPED_TRACE(std::string(ModelName(kind)) + " " + QuantityName(q) + " gamma " +
+                     std::to_string(p.gamma));
+        test::CheckCountsAndSentinels(
+            in, len, max_n, 1, [&](const float* const* v, float* const* out, size_t n) {
+              if (IsPairQuantity(q)) {
+                EvalBatch(p, q, {v[0], v[1], v[2]}, {v[3], v[4], v[5]}, out[0], n);
+              } else {
+                EvalBatch(p, q, {v[0], v[1], v[2]}, out[0], n);
+              }
+            });
+        ++cases;
+      }
+      for (Sampler s : batch_test::kSamplers) {
+        if (!BatchSupports(kind, s)) continue;
+        SCOPED_TRACE(std::string(ModelName(kind)) + (s == Sampler::kNdf ? " ndf" : " visible"));
+        test::CheckCountsAndSentinels(
+            in, len, max_n, 3, [&](const float* const* v, float* const* out, size_t n) {
+              SampleBatch(p, s, {v[3], v[4], v[5]}, v[6], v[7], {out[0], out[1], out[2]}, n);
+            });
+        ++cases;
+      }
     }
   }
+  // The Fresnel reflectances alone.
+  test::CheckCountsAndSentinels(in, len, max_n, 1,
+                                     [](const float* const* v, float* const* out, size_t n) {
+                                       FresnelDielectricBatch(1.5f, v[2], out[0], n);
+                                     });
+  test::CheckCountsAndSentinels(in, len, max_n, 1,
+                                     [](const float* const* v, float* const* out, size_t n) {
+                                       FresnelConductorBatch(0.2f, 3.0f, v[5], out[0], n);
+                                     });
   std::printf("%s: %d (model, quantity or sampler) cases\n", hwy::TargetName(HWY_TARGET), cases);
-  EXPECT_GE(cases, 8);  // ggx alone has 7 quantities and 2 samplers
+  EXPECT_GE(cases, 27);  // ggx alone: 3 descriptors x (7 quantities + 2 samplers)
 }
 
 }  // namespace HWY_NAMESPACE
@@ -137,7 +169,7 @@ TEST(BatchInterfaceTest, UndefinedCombinationsThrowOneLineBeforeWriting) {
   const float kSentinel = -7.0f;
   int undefined = 0;
   for (ModelKind kind : batch_test::kKinds) {
-    const BatchModel p = batch_test::ModelOf(kind);
+    const BatchModel p = batch_test::ModelsOf(kind)[0];
     const bool built = kind != ModelKind::kGgxAniso && ModelBuilt(kind);
     for (Quantity q : batch_test::kQuantities) {
       float out[4] = {kSentinel, kSentinel, kSentinel, kSentinel};

@@ -12,7 +12,7 @@
 #include <limits>
 
 namespace brdfbake {
-namespace test_util {
+namespace test {
 
 struct Ref {
   double hi, lo;
@@ -32,7 +32,7 @@ inline double AbsErr(double got, const Ref& ref) {
   return std::abs((got - ref.hi) - ref.lo);
 }
 
-}  // namespace test_util
+}  // namespace test
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_TESTS_REF_UTIL_H_

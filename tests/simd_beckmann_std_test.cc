@@ -42,7 +42,7 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 namespace {  // internal linkage: other test files define their own helpers
 
-using test_util::Dirs;
+using test::Dirs;
 
 // Documented bounds (src/simd/math-inl.h, beckmann-inl.h, std-inl.h).
 constexpr double kErfcRel = 3.5e-7;     // Erfc where erfc(x) >= FLT_MIN
@@ -424,80 +424,6 @@ void CheckSamplersMatchScalar() {
               hwy::TargetName(HWY_TARGET), worst_b, worst_s, kSampleAbs);
 }
 
-// Every count from 0 to 2N + 3 at several misalignments: results equal the
-// full-array results and the sentinels around the outputs are untouched.
-// `run(o, n, dst)` evaluates n elements starting at input offset o into dst
-// (for samplers: three outputs at dst, dst + stride, dst + 2 stride).
-void CheckCounts(size_t outputs, const std::function<void(size_t, size_t, float*, size_t)>& run) {
-  const size_t lanes = hn::Lanes(hn::ScalableTag<float>());
-  const size_t max_n = 2 * lanes + 3;
-  const size_t full_n = max_n + 8;
-  std::vector<float> full(outputs * full_n);
-  run(0, full_n, full.data(), full_n);
-  const float kSentinel = -12345.0f;
-  for (size_t misalign = 0; misalign < 4; ++misalign) {
-    for (size_t n = 0; n <= max_n; ++n) {
-      const size_t stride = n + 8;
-      std::vector<float> out(outputs * stride, kSentinel);
-      const size_t lead = 1 + misalign % 2;
-      run(misalign, n, out.data() + lead, stride);
-      for (size_t k = 0; k < outputs; ++k) {
-        const float* blk = out.data() + k * stride;
-        for (size_t i = 0; i < n; ++i) {
-          ASSERT_EQ(blk[lead + i], full[k * full_n + misalign + i]) << n << " " << i;
-        }
-        for (size_t j = 0; j < lead; ++j) ASSERT_EQ(blk[j], kSentinel);
-        for (size_t j = lead + n; j < stride; ++j) ASSERT_EQ(blk[j], kSentinel) << n;
-      }
-    }
-  }
-}
-
-void CheckCountsAndSentinels() {
-  const Dirs wi = TestDirs(40, 4), wo = TestDirs(40, 5);
-  std::vector<float> u1, u2;
-  SampleUs(40, &u1, &u2);
-  BatchModel bp{ModelKind::kBeckmann};
-  bp.alpha_x = 0.3f;
-  bp.alpha_y = 0.1f;
-#if BRDFBAKE_WITH_STD
-  BatchModel sp{ModelKind::kStudentT};
-  sp.gamma = 2.7f;
-  const size_t o3 = wi.size() - 64;  // directions from the a-sweep mix both STD forms
-#endif
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(bp, Quantity::kBrdf, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o},
-              {wo.x.data() + o, wo.y.data() + o, wo.z.data() + o}, dst, n);
-  });
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(bp, Quantity::kD, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
-  });
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(bp, Quantity::kLambda, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
-  });
-  CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
-    SampleBatch(bp, Sampler::kNdf, {}, u1.data() + o, u2.data() + o,
-                {dst, dst + stride, dst + 2 * stride}, n);
-  });
-#if BRDFBAKE_WITH_STD
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(sp, Quantity::kBrdf, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o},
-              {wo.x.data() + o, wo.y.data() + o, wo.z.data() + o}, dst, n);
-  });
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(sp, Quantity::kD, {wi.x.data() + o, wi.y.data() + o, wi.z.data() + o}, dst, n);
-  });
-  CheckCounts(1, [&](size_t o, size_t n, float* dst, size_t) {
-    EvalBatch(sp, Quantity::kLambda,
-              {wi.x.data() + o3 + o, wi.y.data() + o3 + o, wi.z.data() + o3 + o}, dst, n);
-  });
-  CheckCounts(3, [&](size_t o, size_t n, float* dst, size_t stride) {
-    SampleBatch(sp, Sampler::kNdf, {}, u1.data() + o, u2.data() + o,
-                {dst, dst + stride, dst + 2 * stride}, n);
-  });
-#endif
-}
-
 }  // namespace
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
@@ -510,7 +436,6 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckMath);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannDAndLambda);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannBrdf);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckSamplersMatchScalar);
-HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckCountsAndSentinels);
 
 #if BRDFBAKE_WITH_STD
 HWY_BEFORE_TEST(SimdStudentTTest);

@@ -41,9 +41,9 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace {
 
-using test_util::Dirs;
-using test_util::RandomDirs;
-using test_util::RelErr;
+using test::Dirs;
+using test::RandomDirs;
+using test::RelErr;
 
 // Documented bounds (src/simd/fresnel-inl.h, ggx_sampling-inl.h,
 // ellipsoid-inl.h), against the double reference at the same float inputs.
@@ -493,71 +493,6 @@ void CheckEllipsoidSampleVisible() {
 }
 #endif  // BRDFBAKE_WITH_ELLIPSOID
 
-// ------------------------------------------------------ counts, sentinels
-
-namespace {
-
-// Every count from 0 to 2N + 3 at several misalignments: results equal the
-// full-array results and the sentinels around every output are untouched.
-// `call(in, out, n)` reads kIn of the 8 input arrays and writes kOut arrays.
-using test_util::BatchCall;
-
-void CheckCounts(int n_out, const BatchCall& call) {
-  const size_t lanes = hwy::HWY_NAMESPACE::Lanes(hwy::HWY_NAMESPACE::ScalableTag<float>());
-  const size_t max_n = 2 * lanes + 3, len = max_n + 8;
-  const Dirs wi = RandomDirs(len, 31), wo = RandomDirs(len, 32);
-  const std::vector<float> u1 = RandomUniforms(len, 33), u2 = RandomUniforms(len, 34);
-  const float* in[8] = {wi.x.data(), wi.y.data(), wi.z.data(), wo.x.data(),
-                        wo.y.data(), wo.z.data(), u1.data(),   u2.data()};
-  test_util::CheckCountsAndSentinels(in, len, max_n, n_out, call);
-}
-
-}  // namespace
-
-void CheckExtraCountsAndSentinels() {
-  EXPECT_EQ(BatchTarget(), hwy::TargetName(HWY_TARGET));
-  CheckCounts(1, [](const float* const* in, float* const* out, size_t n) {
-    FresnelDielectricBatch(1.5f, in[2], out[0], n);
-  });
-  CheckCounts(1, [](const float* const* in, float* const* out, size_t n) {
-    FresnelConductorBatch(0.2f, 3.0f, in[5], out[0], n);
-  });
-  BatchModel gp{ModelKind::kGgx};
-  gp.alpha_x = 0.3f;
-  gp.alpha_y = 0.05f;
-  CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    SampleBatch(gp, Sampler::kVisible, {in[3], in[4], in[5]}, in[6], in[7],
-                {out[0], out[1], out[2]}, n);
-  });
-  CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    SampleBatch(gp, Sampler::kNdf, {}, in[6], in[7], {out[0], out[1], out[2]}, n);
-  });
-  CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EvalBatch(gp, Quantity::kPdfVisible, {in[3], in[4], in[5]}, {in[0], in[1], in[2]}, out[0], n);
-  });
-#if BRDFBAKE_WITH_ELLIPSOID
-  const BatchModel ep = ToParams({0.2f, 0.5f, 30, 20, 10});
-  CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EvalBatch(ep, Quantity::kBrdf, {in[0], in[1], in[2]}, {in[3], in[4], in[5]}, out[0], n);
-  });
-  CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EvalBatch(ep, Quantity::kG1, {in[0], in[1], in[2]}, out[0], n);
-  });
-  CheckCounts(3, [&](const float* const* in, float* const* out, size_t n) {
-    SampleBatch(ep, Sampler::kVisible, {in[3], in[4], in[5]}, in[6], in[7],
-                {out[0], out[1], out[2]}, n);
-  });
-#endif
-#if BRDFBAKE_WITH_SEL
-  BatchModel sp{ModelKind::kSel};
-  sp.alpha_x = 0.1f;
-  sp.theta_y = 0.5f;
-  CheckCounts(1, [&](const float* const* in, float* const* out, size_t n) {
-    EvalBatch(sp, Quantity::kK, {in[0], in[1], in[2]}, out[0], n);
-  });
-#endif
-}
-
 // SEL K against the double SelLobe::K at the same float inputs: 2e-6
 // relative plus the change of the exact K when v = Q w moves by the float
 // rounding of the rotation (see src/simd/sel-inl.h).
@@ -619,7 +554,6 @@ namespace brdfbake {
 HWY_BEFORE_TEST(SimdFresnelTest);
 HWY_EXPORT_AND_TEST_P(SimdFresnelTest, CheckFresnelDielectric);
 HWY_EXPORT_AND_TEST_P(SimdFresnelTest, CheckFresnelConductor);
-HWY_EXPORT_AND_TEST_P(SimdFresnelTest, CheckExtraCountsAndSentinels);
 
 HWY_BEFORE_TEST(SimdGgxSamplingTest);
 HWY_EXPORT_AND_TEST_P(SimdGgxSamplingTest, CheckSinCos2Pi);

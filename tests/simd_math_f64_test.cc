@@ -38,9 +38,9 @@ namespace simd_math_f64_test {
 
 using Big = boost::multiprecision::cpp_bin_float_50;
 
-using test_util::AbsErr;
-using test_util::Ref;
-using test_util::ToRef;
+using test::AbsErr;
+using test::Ref;
+using test::ToRef;
 
 // exp(-x^2) in 50 digits (exact input x).
 inline Ref ExpNegSquareRef(double x) {

@@ -58,9 +58,9 @@ inline const std::vector<double>& Gammas() {
   return g;
 }
 
-using test_util::AbsErr;
-using test_util::Ref;
-using test_util::ToRef;
+using test::AbsErr;
+using test::Ref;
+using test::ToRef;
 
 // kt = Gamma(gamma - 1/2) / (sqrt(pi) Gamma(gamma - 1) sqrt(gamma - 1)).
 inline Big KtBig(const Big& g) {

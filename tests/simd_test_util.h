@@ -21,7 +21,7 @@
 #include "brdfbake/vec3.h"
 
 namespace brdfbake {
-namespace test_util {
+namespace test {
 
 // Unit directions as separate float arrays (the batch API's layout); At()
 // returns the float-rounded direction in double, the reference's input.
@@ -91,7 +91,7 @@ inline void CheckCountsAndSentinels(const float* const* in, size_t len, size_t m
   }
 }
 
-}  // namespace test_util
+}  // namespace test
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_TESTS_SIMD_TEST_UTIL_H_

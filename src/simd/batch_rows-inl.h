@@ -23,7 +23,7 @@
 #include "simd/foreach-inl.h"
 #include "simd/foreach_out-inl.h"
 #include "simd/fresnel-inl.h"
-#include "simd/ggx-inl.h"
+#include "simd/common-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {

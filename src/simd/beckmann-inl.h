@@ -59,7 +59,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
-#include "simd/ggx-inl.h"
+#include "simd/common-inl.h"
 #include "simd/math-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -86,7 +86,7 @@ struct BeckmannConsts {
   }
 };
 
-// RsqrtNewton, CosAtHalf and SchlickFresnel come from simd/ggx-inl.h.
+// RsqrtNewton, CosAtHalf and SchlickFresnel come from simd/common-inl.h.
 
 template <class D, class V>
 HWY_INLINE V BeckmannD(D d, const BeckmannConsts<D>& c, V mx, V my, V mz) {
@@ -154,12 +154,6 @@ HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix,
                              hn::And(hn::Gt(len2, hn::Set(d, 1e-30f)),
                                      hn::Lt(r2, hn::Set(d, 104.0f))));
   return hn::IfThenElseZero(valid, val);
-}
-
-// With Schlick's Fresnel at the constants' F0.
-template <class D, class V>
-HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
-  return BeckmannBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 // cos(2 pi u), sin(2 pi u) for any float u. u is reduced exactly, in turns,

@@ -81,7 +81,7 @@
 #include <hwy/contrib/math/math-inl.h>
 
 #include "simd/beckmann-inl.h"
-#include "simd/ggx-inl.h"
+#include "simd/common-inl.h"
 #include "simd/math-inl.h"
 
 HWY_BEFORE_NAMESPACE();

@@ -77,7 +77,7 @@
 #include <hwy/highway.h>
 
 #include "brdfbake/vec3.h"
-#include "simd/ggx-inl.h"
+#include "simd/common-inl.h"
 #include "simd/ggx_sampling-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -277,12 +277,6 @@ HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V i
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
-}
-
-// With Schlick's Fresnel at the constants' F0.
-template <class D, class V>
-HWY_INLINE V EllipsoidBrdf(D d, const EllipsoidConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
-  return EllipsoidBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 // Seed eq. 30: D(m) (u.m) / A_l(u, n); zero unless u.z, m.z, u.m > 0.

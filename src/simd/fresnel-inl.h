@@ -53,7 +53,7 @@
 #include <hwy/highway.h>
 
 #include "brdfbake/batch.h"
-#include "simd/ggx-inl.h"
+#include "simd/common-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {

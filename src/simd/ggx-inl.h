@@ -25,9 +25,9 @@
 #define BRDFBAKE_SIMD_GGX_INL_H_
 #endif
 
-#include <type_traits>
-
 #include <hwy/highway.h>
+
+#include "simd/common-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -49,74 +49,6 @@ struct GgxConsts {
     f0 = hn::Set(d, f0_);
   }
 };
-
-// 1 / sqrt(x) from the hardware estimate and one Newton step.
-// The portable fallbacks (SCALAR, EMU128) only have a coarse estimate, so
-// they use the exact square root instead.
-template <class D, class V>
-HWY_INLINE V RsqrtNewton(D d, V x) {
-#if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
-  return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));
-#else
-  const V y = hn::ApproximateReciprocalSqrt(x);
-  const V half_x = hn::Mul(x, hn::Set(d, 0.5f));
-  return hn::Mul(y, hn::NegMulAdd(hn::Mul(half_x, y), y, hn::Set(d, 1.5f)));
-#endif
-}
-
-// wo.h with h = s / |s|, len2 = |s|^2, clamped to [0, 1] (shared by every
-// model's BRDF kernel).
-template <class D, class V>
-HWY_INLINE V CosAtHalf(D d, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
-  const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
-  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  return hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
-}
-
-// Schlick's Fresnel F0 + (1 - F0)(1 - c)^5 of a cosine: the default
-// Fresnel of the BRDF kernels, which take any functor F(d, cos) (the
-// dielectric and conductor ones are in simd/fresnel-inl.h).
-template <class D>
-struct SchlickFresnel {
-  hn::Vec<D> f0;
-  template <class V>
-  HWY_INLINE V operator()(D d, V cos_d) const {
-    const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
-    const V m2 = hn::Mul(m, m);
-    return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
-  }
-};
-
-// Calls f(separable) with separable a std::true_type or std::false_type, so
-// that a kernel's `if (separable)` is resolved at compile time and the loop
-// around it has no branch (GCC does not unswitch these loops by itself once
-// the Fresnel functor is a template argument: 15% of the GGX BRDF on AVX3).
-template <class F>
-HWY_INLINE void WithMasking(Masking masking, const F& f) {
-  if (masking == Masking::kSeparable) {
-    f(std::true_type());
-  } else {
-    f(std::false_type());
-  }
-}
-
-// Smith masking from a Lambda kernel `lambda(w_x, w_y, w_z)` (+inf on and
-// below the horizon): G1 = 1 / (1 + Lambda), and for a reflection pair G2 =
-// 1 / (1 + Lambda_i + Lambda_o) (height-correlated) or G1(wi) G1(wo)
-// (separable); wi.h = wo.h = |wi + wo| / 2 >= 0 for every pair, and wi = -wo
-// puts both on the horizon, where Lambda = +inf makes G2 = 0.
-template <class D, class V, class L>
-HWY_INLINE V G1FromLambda(D d, const L& lambda, V wx, V wy, V wz) {
-  return hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Set(d, 1.0f), lambda(wx, wy, wz)));
-}
-template <class D, class V, class L>
-HWY_INLINE V G2FromLambda(D d, bool separable, const L& lambda, V ix, V iy, V iz, V ox, V oy,
-                          V oz) {
-  const V one = hn::Set(d, 1.0f);
-  const V li = lambda(ix, iy, iz), lo = lambda(ox, oy, oz);
-  if (separable) return hn::Div(one, hn::Mul(hn::Add(one, li), hn::Add(one, lo)));
-  return hn::Div(one, hn::Add(one, hn::Add(li, lo)));
-}
 
 template <class D, class V>
 HWY_INLINE V GgxD(D d, const GgxConsts<D>& c, V mx, V my, V mz) {
@@ -160,12 +92,6 @@ HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V i
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
                              hn::Gt(len2, hn::Set(d, 1e-30f)));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
-}
-
-// With Schlick's Fresnel at the constants' F0.
-template <class D, class V>
-HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy, V oz) {
-  return GgxBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.f0});
 }
 
 }  // namespace HWY_NAMESPACE

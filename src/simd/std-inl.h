@@ -230,13 +230,6 @@ HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix,
   return hn::IfThenElseZero(valid, val);
 }
 
-// With Schlick's Fresnel at the constants' F0.
-template <class D, class V>
-HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix, V iy, V iz, V ox,
-                          V oy, V oz) {
-  return StudentTBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, SchlickFresnel<D>{c.b.f0});
-}
-
 // NDF sampling (slope_ndf.h SampleNdf with StudentTNdf::UnitSampleR2): the
 // inverse radial CDF r^2 = (gamma - 1) expm1(-log1p(-u2) / (gamma - 1))
 // (seed 004 eq. 42, sigma = 1), then the stretch of beckmann-inl.h.

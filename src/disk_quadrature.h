@@ -1,25 +1,13 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Per-texel integrators of the albedo E(mu) and the split-sum DFG terms of
-// a microfacet BRDF with F = 1, generic over the distribution type.
-//
-// All integrators write the albedo as an integral over the unit square of
-// the model's microfacet-normal sampler: with m = S(u1, u2) of density
-// p(m) and wi = reflect(wo, m),
-//   E = int f(wi, wo) cos(theta_i) dwi
-//     = int_[0,1]^2 f cos_i 4 (wo.m) / p(m) du1 du2,
-// whose integrand is G2 / G1(wo) in [0, 1] for exact visible-normal
-// sampling (seed 003 eq. 19) and is zero where wi falls below the horizon.
-// The DFG terms weight it with 1 - Fc and Fc, Fc = (1 - wo.m)^5.
-// The QMC, MC and engine integrators use each model's own sampler; the
-// deterministic quadrature uses the GGX visible-normal sampler with the
-// model's alpha_x, alpha_y for GGX, Beckmann and STD alike (LineFamily),
-// whose square is periodic in u2 and smooth in u1, with the weight
-// f cos_i / pdf_ggx(wi) = D G2 (wo.m) / (wo.z PdfVisible_ggx(wo, m)).
+// The deterministic quadrature of the texel integral (texel_integrand.h)
+// over the square of the GGX visible-normal sampler: lines u2 = const,
+// each integrated in t up to its horizon crossings, refined along a ladder
+// of node counts.
 
-#ifndef BRDFBAKE_SRC_INTEGRATE_H_
-#define BRDFBAKE_SRC_INTEGRATE_H_
+#ifndef BRDFBAKE_SRC_DISK_QUADRATURE_H_
+#define BRDFBAKE_SRC_DISK_QUADRATURE_H_
 
 #include <algorithm>
 #include <cmath>
@@ -35,66 +23,9 @@
 #include "brdfbake/ggx.h"
 #include "brdfbake/std_ndf.h"
 #include "quadrature.h"
+#include "texel_integrand.h"
 
 namespace brdfbake {
-
-
-// Sampler and integrand weight per distribution type.
-template <class Ndf>
-struct VisibleSampler {
-  static Vec3<double> Sample(const Ndf& ndf, const Vec3<double>& wo, double u1, double u2) {
-    return ndf.SampleVisible(wo, u1, u2);
-  }
-  // f cos_i / pdf(wi) for F = 1; exact VNDF sampling makes it G2 / G1(wo).
-  static double Weight(const Ndf& ndf, const Vec3<double>& wo, const Vec3<double>& m,
-                       const Vec3<double>& wi, double g1_wo, Masking masking) {
-    return G2(ndf, wi, wo, m, masking) / g1_wo;
-  }
-};
-
-template <>
-struct VisibleSampler<StudentTNdf<double>> {
-  using Ndf = StudentTNdf<double>;
-  static Vec3<double> Sample(const Ndf& ndf, const Vec3<double>& wo, double u1, double u2) {
-    return ndf.SamplePseudoVnis(wo, u1, u2);
-  }
-  static double Weight(const Ndf& ndf, const Vec3<double>& wo, const Vec3<double>& m,
-                       const Vec3<double>& wi, double, Masking masking) {
-    const double pdf = ndf.PdfPseudoVnis(wo, m);
-    if (!(pdf > 0)) return 0.0;
-    const double g2 = G2(ndf, wi, wo, m, masking);
-    // f cos_i / (pdf / (4 wo.m)) = D G2 (wo.m) / (wo.z pdf).
-    return ndf.D(m) * g2 * Dot(wo, m) / (wo.z * pdf);
-  }
-};
-
-// Accumulates (w, w Fc) for a sample of the unit square of the model's own
-// visible-normal sampler (the sampling integrators).
-template <class Ndf>
-struct Integrand {
-  const Ndf& ndf;
-  Vec3<double> wo;
-  Masking masking;
-  double g1_wo;
-
-  Integrand(const Ndf& n, const Vec3<double>& w, Masking mk)
-      : ndf(n), wo(w), masking(mk), g1_wo(n.G1(w)) {}
-
-  // Returns false when wi is below the horizon (zero contribution).
-  bool Eval(double u1, double u2, double* w, double* w_fc) const {
-    const Vec3<double> m = VisibleSampler<Ndf>::Sample(ndf, wo, u1, u2);
-    const Vec3<double> wi = Reflect(wo, m);
-    if (!(wi.z > 0)) {
-      *w = *w_fc = 0;
-      return false;
-    }
-    const double v = VisibleSampler<Ndf>::Weight(ndf, wo, m, wi, g1_wo, masking);
-    const double fc = SchlickWeight(Dot(wo, m));
-    *w = v;
-    *w_fc = v * fc;
-    return true;
-  }
-};
 
 // Deterministic quadrature. The square is mapped by u1 = sin^2(pi t / 2). For the GGX sampler
 // sqrt(u1) is the radius rho of the visible-normal disk and the lift onto
@@ -108,9 +39,6 @@ struct Integrand {
 // where wi crosses the horizon (G2 vanishes linearly there): its zeros in t
 // are bracketed on a probe grid, refined by a bracketing secant iteration,
 // and the rule is applied on each sub-interval where wi is above the horizon.
-struct QuadratureResult {
-  double e = 0, fc = 0;
-};
 
 inline double U1(double t) {
   const double s = std::sin(1.5707963267948966 * t);
@@ -491,34 +419,6 @@ inline const GaussLegendre& CachedRule(int n) {
   return *cache[n];
 }
 
-inline TexelEstimate FromTwo(const QuadratureResult& fine, const QuadratureResult& coarse) {
-  TexelEstimate v;
-  v.e = fine.e;
-  v.bias = fine.fc;
-  v.scale = fine.e - fine.fc;
-  v.err_e = std::abs(fine.e - coarse.e);
-  v.err_bias = std::abs(fine.fc - coarse.fc);
-  v.err_scale = std::abs((fine.e - fine.fc) - (coarse.e - coarse.fc));
-  // Floor at a few ulps of the stored magnitude.
-  v.err_e = std::max(v.err_e, 4e-16);
-  v.err_bias = std::max(v.err_bias, 4e-16);
-  v.err_scale = std::max(v.err_scale, 4e-16);
-  return v;
-}
-
-// The grazing limit mu -> 0 is evaluated at mu = kMuMin (docs/format.md: mu = 0 is the
-// grazing limit; E is continuous there).
-inline constexpr double kMuMin = 1e-7;
-
-// Mirror (alpha below the clamp): h = n, E = 1, Fc = (1 - mu)^5.
-inline TexelEstimate MirrorTexel(double mu) {
-  TexelEstimate v;
-  v.e = 1;
-  v.bias = SchlickWeight(mu);
-  v.scale = 1 - v.bias;
-  return v;
-}
-
 // Quadrature refined along a ladder of node counts, doubling, until two
 // successive rules agree to `tol` (or `max_nodes` is reached); the value is
 // the finer rule and its error estimate the difference between the last two.
@@ -574,80 +474,7 @@ TexelEstimate QuadratureTexel(const Ndf& ndf, double mu, Masking masking, int ma
   return v;
 }
 
-// Randomized QMC: `replicas` Cranley-Patterson rotations of an
-// n-point Hammersley set; the estimate is their mean and the error 4 times
-// the standard error of the mean.
-template <class Ndf>
-TexelEstimate QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uint64_t seed,
-                    bool plain_mc) {
-  const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
-  const Integrand<Ndf> f(ndf, wo, masking);
-  const int replicas = 8;
-  const int n = std::max(1, samples / replicas);
-  Rng rng(seed);
-  double sum_e = 0, sum_e2 = 0, sum_b = 0, sum_b2 = 0, sum_s = 0, sum_s2 = 0;
-  for (int r = 0; r < replicas; ++r) {
-    const double shift1 = rng.Uniform(), shift2 = rng.Uniform();
-    double acc = 0, acc_fc = 0;
-    for (int i = 0; i < n; ++i) {
-      double u1, u2;
-      if (plain_mc) {
-        u1 = rng.Uniform();
-        u2 = rng.Uniform();
-      } else {
-        u1 = (i + 0.5) / n + shift1;
-        u2 = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
-        u1 -= std::floor(u1);
-        u2 -= std::floor(u2);
-      }
-      double w, wfc;
-      f.Eval(u1, u2, &w, &wfc);
-      acc += w;
-      acc_fc += wfc;
-    }
-    const double e = acc / n, b = acc_fc / n, s = e - b;
-    sum_e += e; sum_e2 += e * e;
-    sum_b += b; sum_b2 += b * b;
-    sum_s += s; sum_s2 += s * s;
-  }
-  auto err = [&](double sum, double sum2) {
-    const double mean = sum / replicas;
-    const double var = std::max(0.0, (sum2 - replicas * mean * mean) / (replicas - 1));
-    return 4.0 * std::sqrt(var / replicas);
-  };
-  TexelEstimate v;
-  v.e = sum_e / replicas;
-  v.bias = sum_b / replicas;
-  v.scale = sum_s / replicas;
-  v.err_e = err(sum_e, sum_e2);
-  v.err_bias = err(sum_b, sum_b2);
-  v.err_scale = err(sum_s, sum_s2);
-  return v;
-}
-
-// The engine setting: an N-point Hammersley set (no randomization) driving
-// NDF sampling of the half vector, pdf(wi) = D(h) h.z / (4 wo.h), so the
-// weight is G2 (wo.h) / (wo.z h.z).
-template <class Ndf>
-QuadratureResult EngineRule(const Ndf& ndf, double mu, Masking masking, int samples) {
-  const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
-  QuadratureResult r;
-  for (int i = 0; i < samples; ++i) {
-    const double u1 = static_cast<double>(i) / samples;
-    const double u2 = RadicalInverse2(static_cast<uint32_t>(i));
-    const Vec3<double> h = ndf.SampleNdf(u1, u2);
-    const Vec3<double> wi = Reflect(wo, h);
-    const double wo_h = Dot(wo, h);
-    if (!(wi.z > 0) || !(wo_h > 0) || !(h.z > 0)) continue;
-    const double w = G2(ndf, wi, wo, h, masking) * wo_h / (wo.z * h.z);
-    r.e += w;
-    r.fc += w * SchlickWeight(wo_h);
-  }
-  r.e /= samples;
-  r.fc /= samples;
-  return r;
-}
 
 }  // namespace brdfbake
 
-#endif  // BRDFBAKE_SRC_INTEGRATE_H_
+#endif  // BRDFBAKE_SRC_DISK_QUADRATURE_H_
