@@ -184,11 +184,10 @@ struct GgxDiskLines {
     lambda_wo = f.ndf.Lambda(wo);
     lambda_ggx_wo = GgxLambda(wo);
   }
-  // GGX Lambda = (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))), 1/a^2 = (ax^2 x^2 + ay^2 y^2) / z^2.
+  // GGX Lambda with 1/a^2 = (ax^2 x^2 + ay^2 y^2) / z^2.
   double GgxLambda(const Vec3<double>& w) const {
     const double px = ax * w.x, py = ay * w.y;
-    const double inv_a2 = (px * px + py * py) / (w.z * w.z);
-    return inv_a2 / (2 * (1 + std::sqrt(1 + inv_a2)));
+    return GgxLambdaOfInvA2((px * px + py * py) / (w.z * w.z));
   }
   double Lambda(const Vec3<double>& w) const {
     if constexpr (kIsGgx) {

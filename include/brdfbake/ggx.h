@@ -13,6 +13,15 @@
 
 namespace brdfbake {
 
+// GGX Lambda from 1/a^2 = alpha^2 tan^2(theta) (the stretched frame's):
+// (sqrt(1 + 1/a^2) - 1) / 2, written as (1/a^2) / (2 (1 + sqrt(1 + 1/a^2)))
+// to avoid cancellation when a >> 1. (azimuthal.h uses the form in mu and
+// sin(theta), which has no division on the horizon.)
+template <typename T>
+T GgxLambdaOfInvA2(T inv_a2) {
+  return inv_a2 / (T(2) * (T(1) + std::sqrt(T(1) + inv_a2)));
+}
+
 template <typename T>
 class GgxNdf : public SlopeNdf<T, GgxNdf<T>> {
   using Base = SlopeNdf<T, GgxNdf<T>>;
@@ -26,12 +35,8 @@ class GgxNdf : public SlopeNdf<T, GgxNdf<T>> {
     const T q = T(1) + r2;
     return kInvPi<T> / (q * q);
   }
-  // Lambda = (sqrt(1 + 1/a^2) - 1) / 2 (seed 004 Table 1, gamma = 2), written
-  // as (1/a^2) / (2 (1 + sqrt(1 + 1/a^2))) to avoid cancellation when a >> 1.
-  T UnitLambda(T a) const {
-    const T inv_a2 = T(1) / (a * a);
-    return inv_a2 / (T(2) * (T(1) + std::sqrt(T(1) + inv_a2)));
-  }
+  // Lambda = (sqrt(1 + 1/a^2) - 1) / 2 (seed 004 Table 1, gamma = 2).
+  T UnitLambda(T a) const { return GgxLambdaOfInvA2(T(1) / (a * a)); }
   // D = 1 / (pi ax ay z2^2 (1 + s2/z2)^2) = 1 / (pi ax ay (z2 + s2)^2): no
   // division by z2, no overflow of (1 + r^2)^2 at grazing normals.
   T DFromStretched(T s2, T z2) const {

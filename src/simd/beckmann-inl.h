@@ -28,19 +28,16 @@
 // Operation count per lane (AVX2): 4 div, 3 rsqrt + Newton, 3 exp (Highway
 // Exp, ~12 FMA each), 2 degree-12 Horner, ~45 other mul/add/FMA.
 //
-// Error against the double reference at the same float inputs (asserted on
-// every target by tests/simd_beckmann_std_test.cc; measured maxima in
-// brackets, the same on AVX3, AVX2, SSE4, SSSE3 and SCALAR to 2 digits):
-//   D:      relative 1e-6 + 3e-7 r2 [3e-7 at r2 <= 1, 1.8e-5 at r2 <= 87]
-//           (the exponent r2 is rounded like any float expression of the
-//           inputs, 5 ulp at most, and exp multiplies that relative error
-//           by r2);
-//   Lambda: |err| <= 1e-6 max(1, Lambda) + 3e-7 a^2 Lambda [4.4e-7 relative
-//           to max(1, Lambda)] (the a^2 term is the same amplification of
-//           the rounding of a);
-//   BRDF:   relative 2e-6 + 3.6e-7 r2 [9e-7 at r2 <= 1, 2.4e-5 at r2 <= 87;
-//           2.18e-5 at r2 = 65.5 in `brdfbake stability`'s lobe samples]
-//           (the exponent is formed from s = wi + wo: one ulp more).
+// Error against the double reference at the same float inputs (the bounds
+// of kernel_bounds.h, asserted on every target by
+// tests/simd_beckmann_std_test.cc, which prints the observed maxima):
+//   D:      relative 1e-6 + 3e-7 r2 (the exponent r2 is rounded like any
+//           float expression of the inputs, 5 ulp at most, and exp
+//           multiplies that relative error by r2);
+//   Lambda: |err| <= 1e-6 max(1, Lambda) + 3e-7 a^2 Lambda (the a^2 term is
+//           the same amplification of the rounding of a);
+//   BRDF:   relative 2e-6 + 3.6e-7 r2 (the exponent is formed from
+//           s = wi + wo: one ulp more).
 // Where exp(-r2) is below FLT_MIN (r2 > 87.3) it is a subnormal, and 0 for
 // r2 > 104; the batch functions flush subnormals to zero, so their D and BRDF
 // are 0 there (src/batch.cc).

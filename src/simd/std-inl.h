@@ -43,15 +43,12 @@
 // Error against the double reference at the same float inputs (asserted on
 // every target by tests/simd_beckmann_std_test.cc for gamma in {1.5 (clamped),
 // 1.501, 1.6, 2, 3, 7.5, 30, 1e4, 1e6, 1e9, inf}, alpha from 1e-4 to 1, anisotropy 1000:1,
-// mu down to 1e-7 and a from 1e-7 to 1e8; measured maxima in brackets, the
-// same on AVX3, AVX2, SSE4, SSSE3 and SCALAR to 2 digits):
+// mu down to 1e-7 and a from 1e-7 to 1e8, which prints the observed
+// maxima; the bounds are those of kernel_bounds.h):
 //   D:      relative 1e-6 + 4.5e-7 E, E = gamma log1p(r2/(gamma-1)) the
-//           exponent [4e-7 at E <= 1; at E <= 87 8.6e-6 for gamma = 1.5,
-//           2.4e-5 for gamma = 1e6];
-//   Lambda: |err| <= 1e-6 max(1, Lambda) + 3e-7 a^2 Lambda [5.2e-7 relative
-//           to max(1, Lambda), any gamma];
-//   BRDF:   relative 2e-6 + 4.5e-7 E [1e-6 at E <= 1; at E <= 87 8.9e-6 for
-//           gamma = 1.5, 3e-5 for gamma = 1e4].
+//           exponent;
+//   Lambda: |err| <= 1e-6 max(1, Lambda) + 3e-7 a^2 Lambda;
+//   BRDF:   relative 2e-6 + 4.5e-7 E.
 // Where exp(-E) is below FLT_MIN (E > 87.3) it is a subnormal, flushed to 0
 // by the batch functions (see beckmann-inl.h).
 //
