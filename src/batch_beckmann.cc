@@ -80,17 +80,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace brdfbake {
 
-HWY_EXPORT(BeckmannEval);
-HWY_EXPORT(BeckmannSample);
-
-void BeckmannEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                       size_t n) {
-  HWY_DYNAMIC_DISPATCH(BeckmannEval)(p, q, in, out, n);
-}
-void BeckmannSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                         size_t n) {
-  HWY_DYNAMIC_DISPATCH(BeckmannSample)(p, s, in, out, n);
-}
+BRDFBAKE_BATCH_EVAL_DISPATCH(Beckmann)
+BRDFBAKE_BATCH_SAMPLE_DISPATCH(Beckmann)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

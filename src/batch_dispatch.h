@@ -38,6 +38,21 @@ void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in
                           size_t n);
 void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
 
+// In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
+// Model##Eval (and Model##Sample) and defines the dispatchers above.
+#define BRDFBAKE_BATCH_EVAL_DISPATCH(Model)                                                   \
+  HWY_EXPORT(Model##Eval);                                                                    \
+  void Model##EvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, \
+                        size_t n) {                                                           \
+    HWY_DYNAMIC_DISPATCH(Model##Eval)(p, q, in, out, n);                                      \
+  }
+#define BRDFBAKE_BATCH_SAMPLE_DISPATCH(Model)                                                 \
+  HWY_EXPORT(Model##Sample);                                                                  \
+  void Model##SampleBatch(const BatchModel& p, Sampler s, const float* const* in,             \
+                          float* const* out, size_t n) {                                      \
+    HWY_DYNAMIC_DISPATCH(Model##Sample)(p, s, in, out, n);                                    \
+  }
+
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_SRC_BATCH_DISPATCH_H_

@@ -72,17 +72,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace brdfbake {
 
-HWY_EXPORT(EllipsoidEval);
-HWY_EXPORT(EllipsoidSample);
-
-void EllipsoidEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                        size_t n) {
-  HWY_DYNAMIC_DISPATCH(EllipsoidEval)(p, q, in, out, n);
-}
-void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                          size_t n) {
-  HWY_DYNAMIC_DISPATCH(EllipsoidSample)(p, s, in, out, n);
-}
+BRDFBAKE_BATCH_EVAL_DISPATCH(Ellipsoid)
+BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ellipsoid)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -77,16 +77,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace brdfbake {
 
-HWY_EXPORT(GgxEval);
-HWY_EXPORT(GgxSample);
-
-void GgxEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(GgxEval)(p, q, in, out, n);
-}
-void GgxSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                    size_t n) {
-  HWY_DYNAMIC_DISPATCH(GgxSample)(p, s, in, out, n);
-}
+BRDFBAKE_BATCH_EVAL_DISPATCH(Ggx)
+BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ggx)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

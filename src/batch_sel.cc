@@ -33,11 +33,7 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace brdfbake {
 
-HWY_EXPORT(SelEval);
-
-void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
-  HWY_DYNAMIC_DISPATCH(SelEval)(p, q, in, out, n);
-}
+BRDFBAKE_BATCH_EVAL_DISPATCH(Sel)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

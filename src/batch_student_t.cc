@@ -95,17 +95,8 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace brdfbake {
 
-HWY_EXPORT(StudentTEval);
-HWY_EXPORT(StudentTSample);
-
-void StudentTEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                       size_t n) {
-  HWY_DYNAMIC_DISPATCH(StudentTEval)(p, q, in, out, n);
-}
-void StudentTSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                         size_t n) {
-  HWY_DYNAMIC_DISPATCH(StudentTSample)(p, s, in, out, n);
-}
+BRDFBAKE_BATCH_EVAL_DISPATCH(StudentT)
+BRDFBAKE_BATCH_SAMPLE_DISPATCH(StudentT)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -44,24 +44,8 @@ constexpr double kGgxSampleAbs = 2e-6;        // unit-roughness normal, max comp
 constexpr double kGgxPdfRel = 2e-6;           // plus 2e-7 / (w.m) from the dot product
 constexpr double kGgxPdfDot = 2e-7;
 
-// Uniform floats in [0, 1) with the edges 0, 1 - 2^-24, 0.25, 0.5, 0.75 and
-// values within 1e-6 of 1 mixed in.
-std::vector<float> RandomUniforms(size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
-  const float edges[] = {0.0f, 1.0f - 0x1p-24f, 0.25f, 0.5f, 0.75f};
-  std::vector<float> u(n);
-  for (size_t i = 0; i < n; ++i) {
-    u[i] = uni(rng);
-    if (i % 53 == 0) u[i] = edges[(i / 53) % 5];
-    if (i % 59 == 0) u[i] = 1.0f - 1e-6f * uni(rng);
-  }
-  return u;
-}
-
-double MaxAbsDiff(const Vec3<double>& a, const Vec3<double>& b) {
-  return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
-}
+using test::MaxAbsDiff;
+using test::RandomUniforms;
 
 const char* Target() { return hwy::TargetName(HWY_TARGET); }
 

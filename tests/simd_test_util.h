@@ -53,6 +53,25 @@ inline Dirs RandomDirs(size_t n, uint64_t seed, size_t below_every = 0) {
 }
 
 // |got - ref| / max(|ref|, 1e-30); an infinite reference must be matched.
+// Uniform floats in [0, 1) with the edges 0, 1 - 2^-24, 0.25, 0.5, 0.75 and
+// values within 1e-6 of 1 mixed in.
+inline std::vector<float> RandomUniforms(size_t n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+  const float edges[] = {0.0f, 1.0f - 0x1p-24f, 0.25f, 0.5f, 0.75f};
+  std::vector<float> u(n);
+  for (size_t i = 0; i < n; ++i) {
+    u[i] = uni(rng);
+    if (i % 53 == 0) u[i] = edges[(i / 53) % 5];
+    if (i % 59 == 0) u[i] = 1.0f - 1e-6f * uni(rng);
+  }
+  return u;
+}
+
+inline double MaxAbsDiff(const Vec3<double>& a, const Vec3<double>& b) {
+  return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)});
+}
+
 inline double RelErr(double got, double ref) {
   if (std::isinf(ref)) return std::isinf(got) ? 0.0 : 1.0;
   return std::abs(got - ref) / std::max(std::abs(ref), 1e-30);
