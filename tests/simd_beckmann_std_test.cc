@@ -6,8 +6,7 @@
 // target (one gtest case per target): dense sweeps including alpha 1e-4,
 // anisotropy 1000:1, grazing directions down to mu = 1e-6, a dense sweep of
 // the Lambda argument a from 1e-7 to 1e8, gamma from 1.501 to 1e6 and +inf;
-// the NDF samplers against the scalar SampleNdf for the same (u1, u2); counts
-// 0..2N+3 with misaligned pointers and sentinels around the outputs. Each
+// the NDF samplers against the scalar SampleNdf for the same (u1, u2). Each
 // check asserts the bound documented beside the kernel and prints the
 // observed maximum.
 

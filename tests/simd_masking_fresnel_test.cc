@@ -5,8 +5,7 @@
 // model, the NDF sampling densities of Beckmann and STD, and every model's
 // BRDF with the dielectric and conductor Fresnel, against the double scalar
 // reference at the same float inputs, each sample within its documented
-// bound (include/brdfbake/kernel_bounds.h); counts 0..2N+3 at misaligned
-// pointers with sentinels around the output.
+// bound (include/brdfbake/kernel_bounds.h).
 
 #include <algorithm>
 #include <cmath>

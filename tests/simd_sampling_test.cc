@@ -10,8 +10,7 @@
 // from the ends), gamma from 1.5 to 1e6 and +inf; the normal must be a unit
 // vector facing the view; the densities at the sampled normals against the
 // reference densities. Also erf^-1 (beckmann_sampling-inl.h) on a dense
-// sweep of [0, 1], and counts 0..2N+3 with misaligned pointers and sentinels
-// around every output. Each check prints the observed maximum.
+// sweep of [0, 1]. Each check prints the observed maximum.
 
 #include <algorithm>
 #include <cfloat>

@@ -39,7 +39,7 @@
 //    double reference, and u = n gives the reference's fallback basis.
 //
 // Error against the double reference at the same float inputs (tests/
-// simd_extra_test.cc, alpha 1e-4 .. 1, anisotropy 1000:1, tilts up to 80
+// simd_ellipsoid_test.cc, alpha 1e-4 .. 1, anisotropy 1000:1, tilts up to 80
 // degrees, mu down to 1e-6), on every target. For a tilted, thin ellipsoid
 // the float products A u and A^-T m themselves cancel, so the bounds scale
 // with the componentwise condition number kappa(M, v) = | |M| |v| | / |M v|

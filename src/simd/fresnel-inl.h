@@ -32,7 +32,7 @@
 // in CosSqPlus below to a few ulp relative to its own (small) value.
 //
 // Error against the double reference at the same float inputs, measured on
-// every target by tests/simd_extra_test.cc over dense cos sweeps down to
+// every target by tests/simd_fresnel_test.cc over dense cos sweeps down to
 // 1e-6 and eta in [1/3, 3], n in [0.05, 4], k in [0, 10]:
 //   dielectric: |F - F_ref| <= 2e-6 F_ref (relative; measured 7.6e-7),
 //               valid for eta in [0.01, 100]; eta = 1 gives exactly 0 (1 at

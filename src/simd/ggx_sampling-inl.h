@@ -11,7 +11,7 @@
 // float), so 2 pi u = q pi/2 + r pi/2 with |r pi/2| <= pi/4; Taylor
 // polynomials of degree 9 (sin) and 10 (cos) in r, truncation error below
 // 2e-9, and the quadrant q mod 4 swaps the pair and sets the signs. Error
-// <= 2.5e-7 absolute (tests/simd_extra_test.cc asserts it on 2^20 + 1
+// <= 2.5e-7 absolute (tests/simd_ggx_sampling_test.cc asserts it on 2^20 + 1
 // points of [0, 1] on every target; measured 8.7e-8). The reduction is
 // exact for any float u, and sin(2 pi u) near u = 0, 1/2, 1 keeps its
 // relative precision (r is exact there).

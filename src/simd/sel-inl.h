@@ -8,7 +8,7 @@
 // U -+ v_z taken as (U^2 - v_z^2) / (the larger): one square root and two
 // divisions per lane, no branch (a select on the sign of v_z).
 // Error against the double reference at the same float inputs
-// (tests/simd_extra_test.cc, CheckSelK, every target): relative 2e-6 plus
+// (tests/simd_sel_test.cc, CheckSelK, every target): relative 2e-6 plus
 // the change of the exact K when v moves by the float rounding of the
 // rotation Q w (3 ulp of |Q| |w| per component): near the lobe axis of a
 // thin, rotated lobe the tangential part of v is tiny and that rounding is
