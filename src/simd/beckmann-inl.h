@@ -30,7 +30,7 @@
 //
 // Error against the double reference at the same float inputs (the bounds
 // of kernel_bounds.h, asserted on every target by
-// tests/simd_beckmann_std_test.cc, which prints the observed maxima):
+// tests/simd_beckmann_test.cc, which prints the observed maxima):
 //   D:      relative 1e-6 + 3e-7 r2 (the exponent r2 is rounded like any
 //           float expression of the inputs, 5 ulp at most, and exp
 //           multiplies that relative error by r2);

@@ -53,7 +53,7 @@
 // the normal does not depend on alpha (nh = normalize(m.x / ax, m.y / ay,
 // m.z), as for GGX in ggx_sampling-inl.h): |nh - nh_ref| <= 2e-6 (max
 // component) against the double reference at the same float inputs, for
-// any u1, u2 in [0, 1]: no range is excluded (tests/simd_sampling_test.cc,
+// any u1, u2 in [0, 1]: no range is excluded (tests/simd_beckmann_test.cc,
 // alpha 1e-4 to 1 and 1000:1, mu down to 1e-4, 1 - u1 down to 2^-24 and u1
 // down to 2^-40; measured max 9e-7 on AVX3, AVX2, SSE4, SSSE3 and SCALAR;
 // 3 Newton steps would give 6e-6), u1 = 1 included (the reference solves on
@@ -99,8 +99,8 @@ namespace hn = hwy::HWY_NAMESPACE;
 // w - 2.5 (degree 9, fit error 6e-9 relative) and on [5, 35.36] in
 // sqrt(w) - 4 (degree 12, 3e-8), the split and the variables of Giles,
 // "Approximating the erfinv function" (GPU Computing Gems, 2011).
-// Error: 3e-7 relative for any u in [0, 1] (tests/simd_sampling_test.cc,
-// SimdBeckmannSamplingTest.CheckErfInv: measured max 2.1e-7 with FMA (AVX2,
+// Error: 3e-7 relative for any u in [0, 1] (tests/simd_beckmann_test.cc,
+// SimdBeckmannTest.CheckErfInv: measured max 2.1e-7 with FMA (AVX2,
 // AVX3), 2.7e-7 without (SSE4, SSSE3, SCALAR)).
 template <class D, class V>
 HWY_INLINE V ErfInvCentered(D d, V u) {

@@ -6,7 +6,7 @@
 // function erfcx, erfc, and the scaled first repeated integral of erfc that
 // Beckmann's Smith Lambda is made of. Each function states its range and the
 // error measured against the double references by
-// tests/simd_beckmann_std_test.cc (SimdBeckmannTest.CheckMath, every target).
+// tests/simd_beckmann_test.cc (SimdBeckmannTest.CheckMath, every target).
 //
 // The polynomials were fitted here (mpmath chebyfit, 30 digits) in the
 // variable s = (2 - x) / (2 + x), which maps [0, +inf) onto (-1, 1]:

@@ -41,7 +41,7 @@
 //      nothing relative to 1 + Lambda.
 // (1 + u)^(3/2 - gamma) = exp(-(gamma - 3/2) log1p(u)).
 // Error against the double reference at the same float inputs (asserted on
-// every target by tests/simd_beckmann_std_test.cc for gamma in {1.5 (clamped),
+// every target by tests/simd_student_t_test.cc for gamma in {1.5 (clamped),
 // 1.501, 1.6, 2, 3, 7.5, 30, 1e4, 1e6, 1e9, inf}, alpha from 1e-4 to 1, anisotropy 1000:1,
 // mu down to 1e-7 and a from 1e-7 to 1e8, which prints the observed
 // maxima; the bounds are those of kernel_bounds.h):

@@ -28,7 +28,7 @@
 // within 2e-6 absolute for branch 0; densities within 2e-6 + 4.5e-7 E
 // (branch 0: StudentTD's exponent E; branch 2: 3e-7 r2 instead) plus 2e-7 / (w.m)
 // for the visible-normal densities, relative, and 0 where the batch call
-// flushes exp(-E) below FLT_MIN. Measured (tests/simd_sampling_test.cc,
+// flushes exp(-E) below FLT_MIN. Measured (tests/simd_student_t_test.cc,
 // gamma from 1.5 to 1e6, 2e10 and +inf, sigma from 1e-4 to 1 and 1000:1, all
 // three branches, every target): normals 4.8e-7 (NDF), 3.2e-7 (GGX), 6.4e-7
 // (Beckmann); densities at most 0.62 of their bound.
