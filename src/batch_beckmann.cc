@@ -3,7 +3,7 @@
 //
 // The Beckmann batch kernels (src/simd/beckmann-inl.h,
 // beckmann_sampling-inl.h) behind batch.h, compiled once per Highway target
-// by foreach_target.h. BeckmannEval also serves std from gamma = 1e10 on.
+// by foreach_target.h.
 
 #include "batch_dispatch.h"
 
@@ -24,38 +24,11 @@ using DF = hn::ScalableTag<float>;
 
 void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
   const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  const auto lambda = [&](auto d, auto x, auto y, auto z) { return BeckmannLambda(d, c, x, y, z); };
-  switch (q) {
-    case Quantity::kD:
-      return DirRows([&](auto d, auto x, auto y, auto z) { return BeckmannD(d, c, x, y, z); }, in,
-                     out, n);
-    case Quantity::kLambda:
-      return DirRows(lambda, in, out, n);
-    case Quantity::kG1:
-      return G1Rows(lambda, in, out, n);
-    case Quantity::kPdfNdf:
-      return DirRows(
-          [&](auto d, auto x, auto y, auto z) {
-            return hn::Mul(BeckmannD(d, c, x, y, z), hn::Max(z, hn::Zero(d)));
-          },
-          in, out, n);
-    case Quantity::kG2:
-      return G2Rows(p.masking, lambda, in, out, n);
-    case Quantity::kBrdf:
-      return BrdfRows(
-          p,
-          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
-              const auto& fresnel) {
-            return BeckmannBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
-          },
-          in, out, n);
-    case Quantity::kPdfVisible:
-      return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
-                          auto mz) { return BeckmannPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
-                      in, out, n);
-    default:
-      return;
-  }
+  if (MicrofacetRows(BeckmannKernels<DF>{c}, p, q, in, out, n)) return;
+  if (q != Quantity::kPdfVisible) return;
+  PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+               auto mz) { return BeckmannPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
+           in, out, n);
 }
 
 void BeckmannSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,

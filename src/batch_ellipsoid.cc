@@ -26,35 +26,11 @@ EllipsoidConsts<DF> MakeEllipsoidConsts(const BatchModel& p) {
 
 void EllipsoidEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
   const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
-  const auto lambda = [&](auto d, auto x, auto y, auto z) {
-    return EllipsoidLambda(d, c, x, y, z);
-  };
-  switch (q) {
-    case Quantity::kD:
-      return DirRows([&](auto d, auto x, auto y, auto z) { return EllipsoidD(d, c, x, y, z); }, in,
-                     out, n);
-    case Quantity::kLambda:
-      return DirRows(lambda, in, out, n);
-    case Quantity::kG1:
-      return DirRows([&](auto d, auto x, auto y, auto z) { return EllipsoidG1(d, c, x, y, z); }, in,
-                     out, n);
-    case Quantity::kG2:
-      return G2Rows(p.masking, lambda, in, out, n);
-    case Quantity::kBrdf:
-      return BrdfRows(
-          p,
-          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
-              const auto& fresnel) {
-            return EllipsoidBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
-          },
-          in, out, n);
-    case Quantity::kPdfVisible:
-      return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
-                          auto mz) { return EllipsoidPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
-                      in, out, n);
-    default:
-      return;
-  }
+  if (MicrofacetRows(EllipsoidKernels<DF>{c}, p, q, in, out, n)) return;
+  if (q != Quantity::kPdfVisible) return;
+  PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+               auto mz) { return EllipsoidPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
+           in, out, n);
 }
 
 void EllipsoidSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,

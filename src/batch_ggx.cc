@@ -33,28 +33,7 @@ void GgxEval(const BatchModel& p, Quantity q, const float* const* in, float* out
                     in, out, n);
   }
   const GgxConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  const auto lambda = [&](auto d, auto x, auto y, auto z) { return GgxLambda(d, c, x, y, z); };
-  switch (q) {
-    case Quantity::kD:
-      return DirRows([&](auto d, auto x, auto y, auto z) { return GgxD(d, c, x, y, z); }, in, out,
-                     n);
-    case Quantity::kLambda:
-      return DirRows(lambda, in, out, n);
-    case Quantity::kG1:
-      return G1Rows(lambda, in, out, n);
-    case Quantity::kG2:
-      return G2Rows(p.masking, lambda, in, out, n);
-    case Quantity::kBrdf:
-      return BrdfRows(
-          p,
-          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
-              const auto& fresnel) {
-            return GgxBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
-          },
-          in, out, n);
-    default:
-      return;
-  }
+  MicrofacetRows(GgxKernels<DF>{c}, p, q, in, out, n);
 }
 
 void GgxSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,

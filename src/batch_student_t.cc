@@ -4,8 +4,8 @@
 // The Student's-t (std) batch kernels (src/simd/std-inl.h,
 // std_sampling-inl.h) behind batch.h, compiled once per Highway target by
 // foreach_target.h. From gamma = 1e10 on (kStudentTBeckmannGamma) D,
-// Lambda, G1, G2, the BRDF and NDF sampling are Beckmann's
-// (batch_beckmann.cc); the pseudo-VNIS handles that limit itself.
+// Lambda, G1, G2, the BRDF and NDF sampling are Beckmann's kernels; the
+// pseudo-VNIS handles that limit itself.
 
 #include "batch_dispatch.h"
 
@@ -36,34 +36,10 @@ void StudentTEval(const BatchModel& p, Quantity q, const float* const* in, float
                     in, out, n);
   }
   const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
-  if (c.beckmann) return BeckmannEval(p, q, in, out, n);
-  const auto lambda = [&](auto d, auto x, auto y, auto z) { return StudentTLambda(d, c, x, y, z); };
-  switch (q) {
-    case Quantity::kD:
-      return DirRows([&](auto d, auto x, auto y, auto z) { return StudentTD(d, c, x, y, z); }, in,
-                     out, n);
-    case Quantity::kLambda:
-      return DirRows(lambda, in, out, n);
-    case Quantity::kG1:
-      return G1Rows(lambda, in, out, n);
-    case Quantity::kPdfNdf:
-      return DirRows(
-          [&](auto d, auto x, auto y, auto z) {
-            return hn::Mul(StudentTD(d, c, x, y, z), hn::Max(z, hn::Zero(d)));
-          },
-          in, out, n);
-    case Quantity::kG2:
-      return G2Rows(p.masking, lambda, in, out, n);
-    case Quantity::kBrdf:
-      return BrdfRows(
-          p,
-          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
-              const auto& fresnel) {
-            return StudentTBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fresnel);
-          },
-          in, out, n);
-    default:
-      return;
+  if (c.beckmann) {
+    MicrofacetRows(BeckmannKernels<DF>{c.b}, p, q, in, out, n);
+  } else {
+    MicrofacetRows(StudentTKernels<DF>{c}, p, q, in, out, n);
   }
 }
 

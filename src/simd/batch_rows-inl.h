@@ -20,10 +20,10 @@
 #include <cstddef>
 
 #include "brdfbake/batch.h"
+#include "simd/common-inl.h"
 #include "simd/foreach-inl.h"
 #include "simd/foreach_out-inl.h"
 #include "simd/fresnel-inl.h"
-#include "simd/common-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -76,6 +76,54 @@ HWY_INLINE void BrdfRows(const BatchModel& p, const B& brdf, const float* const*
       });
     });
   });
+}
+
+// The quantities every microfacet model's kernels K provide (the
+// <Model>Kernels of each model's -inl.h): D, Lambda, G1 (K::G1 if
+// K::kOwnG1, else 1 / (1 + Lambda)), G2 and the BRDF, and the NDF density
+// D(m) max(0, m.z) if K::kPdfNdfFromD. Returns false for the others, which
+// the model's batch file runs itself.
+template <class K>
+HWY_INLINE bool MicrofacetRows(const K& k, const BatchModel& p, Quantity q, const float* const* in,
+                               float* out, size_t n) {
+  const auto lambda = [&](auto d, auto x, auto y, auto z) { return k.Lambda(d, x, y, z); };
+  switch (q) {
+    case Quantity::kD:
+      DirRows([&](auto d, auto x, auto y, auto z) { return k.Ndf(d, x, y, z); }, in, out, n);
+      return true;
+    case Quantity::kLambda:
+      DirRows(lambda, in, out, n);
+      return true;
+    case Quantity::kG1:
+      if constexpr (K::kOwnG1) {
+        DirRows([&](auto d, auto x, auto y, auto z) { return k.G1(d, x, y, z); }, in, out, n);
+      } else {
+        G1Rows(lambda, in, out, n);
+      }
+      return true;
+    case Quantity::kPdfNdf:
+      if constexpr (K::kPdfNdfFromD) {
+        DirRows([&](auto d, auto x, auto y,
+                    auto z) { return hn::Mul(k.Ndf(d, x, y, z), hn::Max(z, hn::Zero(d))); },
+                in, out, n);
+        return true;
+      }
+      return false;
+    case Quantity::kG2:
+      G2Rows(p.masking, lambda, in, out, n);
+      return true;
+    case Quantity::kBrdf:
+      BrdfRows(
+          p,
+          [&](auto d, auto separable, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz,
+              const auto& fresnel) {
+            return k.Brdf(d, separable, ix, iy, iz, ox, oy, oz, fresnel);
+          },
+          in, out, n);
+      return true;
+    default:
+      return false;
+  }
 }
 
 // Normals from a sampler: kVisible calls k(d, wo_x, wo_y, wo_z, u1, u2,

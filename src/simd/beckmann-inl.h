@@ -206,6 +206,28 @@ HWY_INLINE void BeckmannSampleNdf(D d, const BeckmannConsts<D>& c, V u1, V u2, V
   SampleSlopeNormal(d, c.ax, c.ay, r2, u1, mx, my, mz);
 }
 
+// The Beckmann kernels as the batch loops take them (simd/batch_rows-inl.h,
+// MicrofacetRows): D, Lambda and the BRDF over its constants (G1 = 1 / (1 +
+// Lambda), the NDF density D(m) m.z).
+template <class D>
+struct BeckmannKernels {
+  static constexpr bool kOwnG1 = false;
+  static constexpr bool kPdfNdfFromD = true;
+  const BeckmannConsts<D>& c;
+  template <class V>
+  HWY_INLINE V Ndf(D d, V x, V y, V z) const {
+    return BeckmannD(d, c, x, y, z);
+  }
+  template <class V>
+  HWY_INLINE V Lambda(D d, V x, V y, V z) const {
+    return BeckmannLambda(d, c, x, y, z);
+  }
+  template <class V, class Fr>
+  HWY_INLINE V Brdf(D d, bool separable, V ix, V iy, V iz, V ox, V oy, V oz, const Fr& fr) const {
+    return BeckmannBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fr);
+  }
+};
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();

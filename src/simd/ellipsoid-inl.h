@@ -348,6 +348,32 @@ HWY_INLINE void EllipsoidSampleVisible(D d, const EllipsoidConsts<D>& c, V ux, V
   *mz = hn::IfThenElseZero(valid, hn::Mul(qz, inv_q));
 }
 
+// The Ellipsoid kernels as the batch loops take them (simd/batch_rows-inl.h,
+// MicrofacetRows): D, Lambda and the BRDF over its constants (its own G1; no
+// NDF density).
+template <class D>
+struct EllipsoidKernels {
+  static constexpr bool kOwnG1 = true;
+  static constexpr bool kPdfNdfFromD = false;
+  const EllipsoidConsts<D>& c;
+  template <class V>
+  HWY_INLINE V Ndf(D d, V x, V y, V z) const {
+    return EllipsoidD(d, c, x, y, z);
+  }
+  template <class V>
+  HWY_INLINE V Lambda(D d, V x, V y, V z) const {
+    return EllipsoidLambda(d, c, x, y, z);
+  }
+  template <class V>
+  HWY_INLINE V G1(D d, V x, V y, V z) const {
+    return EllipsoidG1(d, c, x, y, z);
+  }
+  template <class V, class Fr>
+  HWY_INLINE V Brdf(D d, bool separable, V ix, V iy, V iz, V ox, V oy, V oz, const Fr& fr) const {
+    return EllipsoidBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fr);
+  }
+};
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();

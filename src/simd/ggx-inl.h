@@ -94,6 +94,28 @@ HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V i
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
 }
 
+// The Ggx kernels as the batch loops take them (simd/batch_rows-inl.h,
+// MicrofacetRows): D, Lambda and the BRDF over its constants (G1 = 1 / (1 +
+// Lambda); the NDF density comes from ggx_sampling-inl.h).
+template <class D>
+struct GgxKernels {
+  static constexpr bool kOwnG1 = false;
+  static constexpr bool kPdfNdfFromD = false;
+  const GgxConsts<D>& c;
+  template <class V>
+  HWY_INLINE V Ndf(D d, V x, V y, V z) const {
+    return GgxD(d, c, x, y, z);
+  }
+  template <class V>
+  HWY_INLINE V Lambda(D d, V x, V y, V z) const {
+    return GgxLambda(d, c, x, y, z);
+  }
+  template <class V, class Fr>
+  HWY_INLINE V Brdf(D d, bool separable, V ix, V iy, V iz, V ox, V oy, V oz, const Fr& fr) const {
+    return GgxBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fr);
+  }
+};
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();

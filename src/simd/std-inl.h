@@ -241,6 +241,29 @@ HWY_INLINE void StudentTSampleNdf(D d, const StudentTConsts<D>& c, V u1, V u2, V
   SampleSlopeNormal(d, c.b.ax, c.b.ay, r2, u1, mx, my, mz);
 }
 
+// The STD kernels as the batch loops take them (simd/batch_rows-inl.h,
+// MicrofacetRows): D, Lambda and the BRDF over its constants (G1 = 1 / (1 +
+// Lambda), the NDF density D(m) m.z; below the Beckmann limit only: from gamma
+// = 1e10 on the batch runs BeckmannKernels over c.b).
+template <class D>
+struct StudentTKernels {
+  static constexpr bool kOwnG1 = false;
+  static constexpr bool kPdfNdfFromD = true;
+  const StudentTConsts<D>& c;
+  template <class V>
+  HWY_INLINE V Ndf(D d, V x, V y, V z) const {
+    return StudentTD(d, c, x, y, z);
+  }
+  template <class V>
+  HWY_INLINE V Lambda(D d, V x, V y, V z) const {
+    return StudentTLambda(d, c, x, y, z);
+  }
+  template <class V, class Fr>
+  HWY_INLINE V Brdf(D d, bool separable, V ix, V iy, V iz, V ox, V oy, V oz, const Fr& fr) const {
+    return StudentTBrdf(d, c, separable, ix, iy, iz, ox, oy, oz, fr);
+  }
+};
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
