@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// SIMD helpers every model's kernels share (float lanes): the refined
+// SIMD helpers every model's kernels share (float or double lanes): the refined
 // reciprocal square root, wo.h from the unnormalized half vector, Schlick's
 // Fresnel functor, the compile-time masking switch and Smith G1 / G2 from
 // a Lambda kernel.
@@ -24,18 +24,25 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// 1 / sqrt(x) from the hardware estimate and one Newton step.
-// The portable fallbacks (SCALAR, EMU128) only have a coarse estimate, so
-// they use the exact square root instead.
+// 1 / sqrt(x). Float lanes: the hardware estimate and one Newton step
+// (2 ulp); the portable fallbacks (SCALAR, EMU128) only have a coarse
+// estimate, so they use the exact square root instead. Double lanes: the
+// exact square root and a division (an estimate would need three Newton
+// steps).
 template <class D, class V>
 HWY_INLINE V RsqrtNewton(D d, V x) {
+  using T = hn::TFromD<D>;
+  if constexpr (sizeof(T) == 8) {
+    return hn::Div(hn::Set(d, T(1)), hn::Sqrt(x));
+  } else {
 #if HWY_TARGET == HWY_SCALAR || HWY_TARGET == HWY_EMU128
-  return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));
+    return hn::Div(hn::Set(d, 1.0f), hn::Sqrt(x));
 #else
-  const V y = hn::ApproximateReciprocalSqrt(x);
-  const V half_x = hn::Mul(x, hn::Set(d, 0.5f));
-  return hn::Mul(y, hn::NegMulAdd(hn::Mul(half_x, y), y, hn::Set(d, 1.5f)));
+    const V y = hn::ApproximateReciprocalSqrt(x);
+    const V half_x = hn::Mul(x, hn::Set(d, 0.5f));
+    return hn::Mul(y, hn::NegMulAdd(hn::Mul(half_x, y), y, hn::Set(d, 1.5f)));
 #endif
+  }
 }
 
 // wo.h with h = s / |s|, len2 = |s|^2, clamped to [0, 1] (shared by every
@@ -43,8 +50,9 @@ HWY_INLINE V RsqrtNewton(D d, V x) {
 template <class D, class V>
 HWY_INLINE V CosAtHalf(D d, V ox, V oy, V oz, V sx, V sy, V sz, V len2) {
   const V wo_s = hn::MulAdd(ox, sx, hn::MulAdd(oy, sy, hn::Mul(oz, sz)));
-  const V safe_len2 = hn::Max(len2, hn::Set(d, 1e-30f));
-  return hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, 1.0f));
+  using T = hn::TFromD<D>;
+  const V safe_len2 = hn::Max(len2, hn::Set(d, T(1e-30)));
+  return hn::Min(hn::Mul(wo_s, RsqrtNewton(d, safe_len2)), hn::Set(d, T(1)));
 }
 
 // Schlick's Fresnel F0 + (1 - F0)(1 - c)^5 of a cosine: the default
@@ -55,9 +63,10 @@ struct SchlickFresnel {
   hn::Vec<D> f0;
   template <class V>
   HWY_INLINE V operator()(D d, V cos_d) const {
-    const V m = hn::Max(hn::Sub(hn::Set(d, 1.0f), cos_d), hn::Zero(d));
+    using T = hn::TFromD<D>;
+    const V m = hn::Max(hn::Sub(hn::Set(d, T(1)), cos_d), hn::Zero(d));
     const V m2 = hn::Mul(m, m);
-    return hn::MulAdd(hn::Sub(hn::Set(d, 1.0f), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
+    return hn::MulAdd(hn::Sub(hn::Set(d, T(1)), f0), hn::Mul(hn::Mul(m2, m2), m), f0);
   }
 };
 
@@ -81,12 +90,13 @@ HWY_INLINE void WithMasking(Masking masking, const F& f) {
 // puts both on the horizon, where Lambda = +inf makes G2 = 0.
 template <class D, class V, class L>
 HWY_INLINE V G1FromLambda(D d, const L& lambda, V wx, V wy, V wz) {
-  return hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Set(d, 1.0f), lambda(wx, wy, wz)));
+  using T = hn::TFromD<D>;
+  return hn::Div(hn::Set(d, T(1)), hn::Add(hn::Set(d, T(1)), lambda(wx, wy, wz)));
 }
 template <class D, class V, class L>
 HWY_INLINE V G2FromLambda(D d, bool separable, const L& lambda, V ix, V iy, V iz, V ox, V oy,
                           V oz) {
-  const V one = hn::Set(d, 1.0f);
+  const V one = hn::Set(d, hn::TFromD<D>(1));
   const V li = lambda(ix, iy, iz), lo = lambda(ox, oy, oz);
   if (separable) return hn::Div(one, hn::Mul(hn::Add(one, li), hn::Add(one, lo)));
   return hn::Div(one, hn::Add(one, hn::Add(li, lo)));

@@ -25,6 +25,8 @@
 #define BRDFBAKE_SIMD_GGX_INL_H_
 #endif
 
+#include <limits>
+
 #include <hwy/highway.h>
 
 #include "simd/common-inl.h"
@@ -34,18 +36,20 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// Per-call constants of the GGX kernels.
+// Per-call constants of the GGX kernels, in the lanes' type (float or
+// double: the kernels below are generic over the descriptor D).
 template <class D>
 struct GgxConsts {
+  using T = hn::TFromD<D>;
   hn::Vec<D> ax2, ay2, inv_ax2, inv_ay2, inv_pi_axay, f0;
-  GgxConsts(D d, float ax, float ay, float f0_) {
-    ax = ax < 1e-4f ? 1e-4f : ax;
-    ay = ay < 1e-4f ? 1e-4f : ay;
+  GgxConsts(D d, T ax, T ay, T f0_) {
+    ax = ax < T(1e-4) ? T(1e-4) : ax;
+    ay = ay < T(1e-4) ? T(1e-4) : ay;
     ax2 = hn::Set(d, ax * ax);
     ay2 = hn::Set(d, ay * ay);
-    inv_ax2 = hn::Set(d, 1.0f / (ax * ax));
-    inv_ay2 = hn::Set(d, 1.0f / (ay * ay));
-    inv_pi_axay = hn::Set(d, static_cast<float>(0.31830988618379067 / (double(ax) * ay)));
+    inv_ax2 = hn::Set(d, T(1) / (ax * ax));
+    inv_ay2 = hn::Set(d, T(1) / (ay * ay));
+    inv_pi_axay = hn::Set(d, static_cast<T>(0.31830988618379067 / (double(ax) * ay)));
     f0 = hn::Set(d, f0_);
   }
 };
@@ -65,8 +69,10 @@ HWY_INLINE V GgxLambda(D d, const GgxConsts<D>& c, V wx, V wy, V wz) {
   const V p = hn::MulAdd(hn::Mul(wx, wx), c.ax2, hn::Mul(hn::Mul(wy, wy), c.ay2));
   const V wz2 = hn::Mul(wz, wz);
   const V r = hn::Sqrt(hn::Add(wz2, p));
-  const V lambda = hn::Div(p, hn::Mul(hn::Set(d, 2.0f), hn::MulAdd(wz, r, wz2)));
-  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), lambda, hn::Set(d, HUGE_VALF));
+  using T = hn::TFromD<D>;
+  const V lambda = hn::Div(p, hn::Mul(hn::Set(d, T(2)), hn::MulAdd(wz, r, wz2)));
+  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), lambda,
+                        hn::Set(d, std::numeric_limits<T>::infinity()));
 }
 
 template <class D, class V, class Fr>
@@ -84,13 +90,13 @@ HWY_INLINE V GgxBrdf(D d, const GgxConsts<D>& c, bool separable, V ix, V iy, V i
   if (separable) {
     vis_den = hn::Mul(hn::Add(iz, ri), hn::Add(oz, ro));
   } else {
-    vis_den = hn::Mul(hn::Set(d, 2.0f), hn::MulAdd(oz, ri, hn::Mul(iz, ro)));
+    vis_den = hn::Mul(hn::Set(d, hn::TFromD<D>(2)), hn::MulAdd(oz, ri, hn::Mul(iz, ro)));
   }
   const V num = hn::Mul(hn::Mul(len2, len2), c.inv_pi_axay);
   const V dv = hn::Div(num, hn::Mul(hn::Mul(q, q), vis_den));
   const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
-                             hn::Gt(len2, hn::Set(d, 1e-30f)));
+                             hn::Gt(len2, hn::Set(d, hn::TFromD<D>(1e-30))));
   return hn::IfThenElseZero(valid, hn::Mul(f, dv));
 }
 
