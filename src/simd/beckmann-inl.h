@@ -52,12 +52,14 @@
 #endif
 
 #include <cmath>
+#include <limits>
 
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
 #include "simd/common-inl.h"
 #include "simd/math-inl.h"
+#include "simd/math_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -65,37 +67,49 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // Per-call constants of the Beckmann kernels (alpha clamped at 1e-4 as in
-// slope_ndf.h).
+// slope_ndf.h), in the lanes' type: the kernels below are generic over the
+// descriptor D (float or double lanes).
 template <class D>
 struct BeckmannConsts {
+  using T = hn::TFromD<D>;
   hn::Vec<D> ax, ay, ax2, ay2, inv_ax2, inv_ay2, inv_pi_axay, f0;
-  BeckmannConsts(D d, float ax_, float ay_, float f0_) {
-    ax_ = ax_ < 1e-4f ? 1e-4f : ax_;
-    ay_ = ay_ < 1e-4f ? 1e-4f : ay_;
+  BeckmannConsts(D d, T ax_, T ay_, T f0_) {
+    ax_ = ax_ < T(1e-4) ? T(1e-4) : ax_;
+    ay_ = ay_ < T(1e-4) ? T(1e-4) : ay_;
     ax = hn::Set(d, ax_);
     ay = hn::Set(d, ay_);
     ax2 = hn::Set(d, ax_ * ax_);
     ay2 = hn::Set(d, ay_ * ay_);
-    inv_ax2 = hn::Set(d, static_cast<float>(1.0 / (double(ax_) * ax_)));
-    inv_ay2 = hn::Set(d, static_cast<float>(1.0 / (double(ay_) * ay_)));
-    inv_pi_axay = hn::Set(d, static_cast<float>(0.31830988618379067 / (double(ax_) * ay_)));
+    inv_ax2 = hn::Set(d, static_cast<T>(1.0 / (double(ax_) * ax_)));
+    inv_ay2 = hn::Set(d, static_cast<T>(1.0 / (double(ay_) * ay_)));
+    inv_pi_axay = hn::Set(d, static_cast<T>(0.31830988618379067 / (double(ax_) * ay_)));
     f0 = hn::Set(d, f0_);
   }
 };
+
+// Where exp(-r2) leaves the lanes' range: D and the BRDF are 0 beyond. Float:
+// exp(-r2) is flushed to zero for r2 > 104 (and 0 * inf must not leak);
+// double: hn::Exp's range ends at -708, and exp(-706) is below the smallest
+// normal double.
+template <class T>
+constexpr T BeckmannMaxR2() {
+  return sizeof(T) == 8 ? T(706) : T(104);
+}
 
 // RsqrtNewton, CosAtHalf and SchlickFresnel come from simd/common-inl.h.
 
 template <class D, class V>
 HWY_INLINE V BeckmannD(D d, const BeckmannConsts<D>& c, V mx, V my, V mz) {
   const V z2 = hn::Mul(mz, mz);
-  const V iz2 = hn::Div(hn::Set(d, 1.0f), z2);
+  using T = hn::TFromD<D>;
+  const V iz2 = hn::Div(hn::Set(d, T(1)), z2);
   const V q = hn::MulAdd(hn::Mul(mx, mx), c.inv_ax2, hn::Mul(hn::Mul(my, my), c.inv_ay2));
   const V r2 = hn::Mul(q, iz2);
   const V e = hn::Exp(d, hn::Neg(r2));
   // The exponential last: when it is subnormal nothing else rounds on its scale.
   const V dv = hn::Mul(hn::Mul(hn::Mul(c.inv_pi_axay, iz2), iz2), e);
-  // r2 < 104: exp(-r2) is flushed to zero beyond, and 0 * inf must not leak.
-  const auto valid = hn::And(hn::Gt(mz, hn::Zero(d)), hn::Lt(r2, hn::Set(d, 104.0f)));
+  const auto valid =
+      hn::And(hn::Gt(mz, hn::Zero(d)), hn::Lt(r2, hn::Set(d, BeckmannMaxR2<T>())));
   return hn::IfThenElseZero(valid, dv);
 }
 
@@ -104,28 +118,37 @@ HWY_INLINE V BeckmannD(D d, const BeckmannConsts<D>& c, V mx, V my, V mz) {
 template <class D, class V>
 HWY_INLINE void BeckmannLambdaParts(D d, const BeckmannConsts<D>& c, V wx, V wy, V wz, V* num,
                                     V* den) {
+  using T = hn::TFromD<D>;
   const V p = hn::MulAdd(hn::Mul(wx, wx), c.ax2, hn::Mul(hn::Mul(wy, wy), c.ay2));
-  const V a = hn::Min(hn::Mul(wz, RsqrtNewton(d, hn::Max(p, hn::Set(d, 1e-36f)))),
-                      hn::Set(d, 1e4f));
-  V q, one_2a2;
-  IerfcScaled(d, a, &q, &one_2a2);
-  *num = hn::Mul(hn::Exp(d, hn::Neg(hn::Mul(a, a))), q);
-  *den = hn::Mul(hn::Mul(hn::Set(d, 3.5449077018110318f), a), one_2a2);  // 2 sqrt(pi)
+  const V a = hn::Min(hn::Mul(wz, RsqrtNewton(d, hn::Max(p, hn::Set(d, T(1e-36))))),
+                      hn::Set(d, T(1e4)));
+  if constexpr (sizeof(T) == 8) {
+    // Double lanes: Lambda itself (math_f64-inl.h, 2e-15 of max(1, Lambda)).
+    *num = BeckmannLambdaF64(d, a);
+    *den = hn::Set(d, T(1));
+  } else {
+    V q, one_2a2;
+    IerfcScaled(d, a, &q, &one_2a2);
+    *num = hn::Mul(hn::Exp(d, hn::Neg(hn::Mul(a, a))), q);
+    *den = hn::Mul(hn::Mul(hn::Set(d, 3.5449077018110318f), a), one_2a2);  // 2 sqrt(pi)
+  }
 }
 
 template <class D, class V>
 HWY_INLINE V BeckmannLambda(D d, const BeckmannConsts<D>& c, V wx, V wy, V wz) {
   V num, den;
   BeckmannLambdaParts(d, c, wx, wy, wz, &num, &den);
-  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), hn::Div(num, den), hn::Set(d, HUGE_VALF));
+  return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), hn::Div(num, den),
+                        hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()));
 }
 
 template <class D, class V, class Fr>
 HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix, V iy, V iz, V ox, V oy,
                           V oz, const Fr& fresnel) {
+  using T = hn::TFromD<D>;
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
-  const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(sz, sz));
+  const V iz2 = hn::Div(hn::Set(d, T(1)), hn::Mul(sz, sz));
   const V q = hn::MulAdd(hn::Mul(sx, sx), c.inv_ax2, hn::Mul(hn::Mul(sy, sy), c.inv_ay2));
   const V r2 = hn::Mul(q, iz2);
   const V l_iz2 = hn::Mul(len2, iz2);
@@ -144,12 +167,12 @@ HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix,
     g_den = hn::MulAdd(ni, mo, hn::MulAdd(no, mi, mm));
   }
   const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
-  const V four_zz = hn::Mul(hn::Set(d, 4.0f), hn::Mul(iz, oz));
+  const V four_zz = hn::Mul(hn::Set(d, T(4)), hn::Mul(iz, oz));
   // The exponential multiplies last (see BeckmannD).
   const V val = hn::Mul(hn::Mul(hn::Div(hn::Mul(f, mm), hn::Mul(g_den, four_zz)), d_rest), e);
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
-                             hn::And(hn::Gt(len2, hn::Set(d, 1e-30f)),
-                                     hn::Lt(r2, hn::Set(d, 104.0f))));
+                             hn::And(hn::Gt(len2, hn::Set(d, T(1e-30))),
+                                     hn::Lt(r2, hn::Set(d, BeckmannMaxR2<T>()))));
   return hn::IfThenElseZero(valid, val);
 }
 
