@@ -71,12 +71,15 @@
 #endif
 
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
 #include "brdfbake/std_ndf.h"
 #include "simd/beckmann-inl.h"
+#include "simd/std_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
@@ -103,30 +106,36 @@ constexpr double kLaguerre16[kStudentTLaguerrePoints][2] = {
     {28.578729742882139, 2.1270790332241028e-12}, {34.583398702286622, 6.2979670025178679e-15},
     {41.940452647688332, 5.0504737000355127e-18}, {51.701160339543321, 4.1614623703728552e-22}};
 
-// Per-call constants of the STD kernels.
+// Per-call constants of the STD kernels, in the lanes' type (the kernels
+// below are generic over the descriptor D). Float lanes take Lambda from the
+// series and Gauss-Laguerre forms below; double lanes from StudentTLambdaF64
+// (std_f64-inl.h), whose constants `f64` holds.
 template <class D>
 struct StudentTConsts {
+  using T = hn::TFromD<D>;
+  struct NoF64 {};
   BeckmannConsts<D> b;  // alphas, F0; the whole model when beckmann is true
   bool beckmann;
   hn::Vec<D> gamma, gm1, inv_gm1, gm32, kt, half_kt, c1, c2, cy;
   float series[kStudentTSeriesTerms];        // c_n, highest degree first
   float lag_e[kStudentTLaguerrePoints];      // E_k
   float lag_w[kStudentTLaguerrePoints];      // W_k
-  StudentTConsts(D d, float ax, float ay, float f0, float gamma_f) : b(d, ax, ay, f0) {
+  std::conditional_t<sizeof(T) == 8, StudentTLambdaF64Consts, NoF64> f64;
+  StudentTConsts(D d, T ax, T ay, T f0, T gamma_f) : b(d, ax, ay, f0), f64(MakeF64(gamma_f)) {
     double g = gamma_f;
     if (!(g >= kMinStudentTGamma<double>)) g = kMinStudentTGamma<double>;
     beckmann = g >= kStudentTBeckmannGamma;
     if (beckmann) g = 3.0;  // placeholder values, unused
     const double k = student_t_detail::StudentTKt(g);
-    gamma = hn::Set(d, static_cast<float>(g));
-    gm1 = hn::Set(d, static_cast<float>(g - 1));
-    inv_gm1 = hn::Set(d, static_cast<float>(1 / (g - 1)));
-    gm32 = hn::Set(d, static_cast<float>(g - 1.5));
-    kt = hn::Set(d, static_cast<float>(k));
-    half_kt = hn::Set(d, static_cast<float>(k / 2));
-    c1 = hn::Set(d, static_cast<float>(1 / (2 * g - 3)));
-    c2 = hn::Set(d, static_cast<float>((g - 1) / (2 * g)));
-    cy = hn::Set(d, static_cast<float>((g - 1) / (2 * g - 3)));
+    gamma = hn::Set(d, static_cast<T>(g));
+    gm1 = hn::Set(d, static_cast<T>(g - 1));
+    inv_gm1 = hn::Set(d, static_cast<T>(1 / (g - 1)));
+    gm32 = hn::Set(d, static_cast<T>(g - 1.5));
+    kt = hn::Set(d, static_cast<T>(k));
+    half_kt = hn::Set(d, static_cast<T>(k / 2));
+    c1 = hn::Set(d, static_cast<T>(1 / (2 * g - 3)));
+    c2 = hn::Set(d, static_cast<T>((g - 1) / (2 * g)));
+    cy = hn::Set(d, static_cast<T>((g - 1) / (2 * g - 3)));
     double cn = 1;
     for (int n = 0; n < kStudentTSeriesTerms; ++n) {
       series[kStudentTSeriesTerms - 1 - n] = static_cast<float>(cn);
@@ -137,18 +146,29 @@ struct StudentTConsts {
       lag_w[i] = static_cast<float>(kLaguerre16[i][1]);
     }
   }
+
+ private:
+  static auto MakeF64(double gamma) {
+    if constexpr (sizeof(T) == 8) {
+      const double g = gamma >= kStudentTBeckmannGamma ? 3.0 : gamma;  // unused at the limit
+      return StudentTLambdaF64Consts(g);
+    } else {
+      return NoF64{};
+    }
+  }
 };
 
 // exp(-gamma log1p(r2 / (gamma - 1))), the standard slope density times pi.
 template <class D, class V>
 HWY_INLINE V StudentTP22Pi(D d, const StudentTConsts<D>& c, V r2) {
-  const V x = hn::Min(hn::Mul(r2, c.inv_gm1), hn::Set(d, 1e37f));
+  using T = hn::TFromD<D>;
+  const V x = hn::Min(hn::Mul(r2, c.inv_gm1), hn::Set(d, T(sizeof(T) == 8 ? 1e300 : 1e37)));
   return hn::Exp(d, hn::Neg(hn::Mul(c.gamma, hn::Log1p(d, x))));
 }
 
 template <class D, class V>
 HWY_INLINE V StudentTD(D d, const StudentTConsts<D>& c, V mx, V my, V mz) {
-  const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(mz, mz));
+  const V iz2 = hn::Div(hn::Set(d, hn::TFromD<D>(1)), hn::Mul(mz, mz));
   const V q = hn::MulAdd(hn::Mul(mx, mx), c.b.inv_ax2, hn::Mul(hn::Mul(my, my), c.b.inv_ay2));
   const V p = StudentTP22Pi(d, c, hn::Mul(q, iz2));
   // p first: p / m.z^4 stays finite for grazing m at small gamma, where
@@ -160,52 +180,59 @@ HWY_INLINE V StudentTD(D d, const StudentTConsts<D>& c, V mx, V my, V mz) {
 // Lambda for w.z > 0 (the caller selects +inf below the horizon).
 template <class D, class V>
 HWY_INLINE V StudentTLambdaAbove(D d, const StudentTConsts<D>& c, V wx, V wy, V wz) {
+  using T = hn::TFromD<D>;
   const V p2 = hn::MulAdd(hn::Mul(wx, wx), c.b.ax2, hn::Mul(hn::Mul(wy, wy), c.b.ay2));
   const V proj = hn::Sqrt(p2);
-  const V rinv = hn::Div(hn::Set(d, 1.0f), hn::Mul(wz, proj));
+  const V rinv = hn::Div(hn::Set(d, T(1)), hn::Mul(wz, proj));
   const V a = hn::Mul(hn::Mul(wz, wz), rinv);   // w.z / proj
-  const V ia = hn::Mul(p2, rinv);               // proj / w.z
-  const V a2 = hn::Min(hn::Mul(a, a), hn::Set(d, 1e36f));
-  const V u = hn::Mul(a2, c.inv_gm1);
-  const V e = hn::Exp(d, hn::Neg(hn::Mul(c.gm32, hn::Log1p(d, u))));
-  const auto use_y = hn::And(hn::Lt(a, hn::Set(d, kStudentTSeriesMaxAf)),
-                             hn::Lt(u, hn::Set(d, 1.0f)));
-  V lam_y = hn::Zero(d), lam_l = hn::Zero(d);
-  if (!hn::AllFalse(d, use_y)) {
-    const V w = hn::Div(a2, hn::Add(hn::Set(d, 1.0f), u));
-    V s = hn::Set(d, c.series[0]);
-    for (int n = 1; n < kStudentTSeriesTerms; ++n) s = hn::MulAdd(s, w, hn::Set(d, c.series[n]));
-    const V br = hn::MulAdd(w, s, c.cy);
-    lam_y = hn::Max(hn::MulSub(hn::Mul(hn::Mul(c.kt, ia), e), br, hn::Set(d, 0.5f)),
-                    hn::Zero(d));
-  }
-  if (!hn::AllTrue(d, use_y)) {
-    const V ia2 = hn::Mul(ia, ia);
-    const V one = hn::Set(d, 1.0f);
-    V g = hn::Zero(d);
-    for (int k = 0; k < kStudentTLaguerrePoints; ++k) {
-      const V r = RsqrtNewton(d, hn::MulAdd(hn::Set(d, c.lag_e[k]), ia2, one));
-      g = hn::MulAdd(hn::Set(d, c.lag_w[k]), hn::Mul(hn::Mul(r, r), r), g);
+  if constexpr (sizeof(T) == 8) {
+    // Double lanes: StudentTLambdaF64 (std_f64-inl.h), 8e-15 of max(1, Lambda).
+    return hn::IfThenElseZero(hn::Gt(p2, hn::Zero(d)), StudentTLambdaF64(d, c.f64, a));
+  } else {
+    const V ia = hn::Mul(p2, rinv);               // proj / w.z
+    const V a2 = hn::Min(hn::Mul(a, a), hn::Set(d, 1e36f));
+    const V u = hn::Mul(a2, c.inv_gm1);
+    const V e = hn::Exp(d, hn::Neg(hn::Mul(c.gm32, hn::Log1p(d, u))));
+    const auto use_y = hn::And(hn::Lt(a, hn::Set(d, kStudentTSeriesMaxAf)),
+                               hn::Lt(u, hn::Set(d, 1.0f)));
+    V lam_y = hn::Zero(d), lam_l = hn::Zero(d);
+    if (!hn::AllFalse(d, use_y)) {
+      const V w = hn::Div(a2, hn::Add(hn::Set(d, 1.0f), u));
+      V s = hn::Set(d, c.series[0]);
+      for (int n = 1; n < kStudentTSeriesTerms; ++n) s = hn::MulAdd(s, w, hn::Set(d, c.series[n]));
+      const V br = hn::MulAdd(w, s, c.cy);
+      lam_y = hn::Max(hn::MulSub(hn::Mul(hn::Mul(c.kt, ia), e), br, hn::Set(d, 0.5f)),
+                      hn::Zero(d));
     }
-    const V br = hn::MulAdd(hn::Mul(g, c.c2), ia2, c.c1);
-    lam_l = hn::Mul(hn::Mul(hn::Mul(c.half_kt, e), ia), br);
+    if (!hn::AllTrue(d, use_y)) {
+      const V ia2 = hn::Mul(ia, ia);
+      const V one = hn::Set(d, 1.0f);
+      V g = hn::Zero(d);
+      for (int k = 0; k < kStudentTLaguerrePoints; ++k) {
+        const V r = RsqrtNewton(d, hn::MulAdd(hn::Set(d, c.lag_e[k]), ia2, one));
+        g = hn::MulAdd(hn::Set(d, c.lag_w[k]), hn::Mul(hn::Mul(r, r), r), g);
+      }
+      const V br = hn::MulAdd(hn::Mul(g, c.c2), ia2, c.c1);
+      lam_l = hn::Mul(hn::Mul(hn::Mul(c.half_kt, e), ia), br);
+    }
+    const V lam = hn::IfThenElse(use_y, lam_y, lam_l);
+    return hn::IfThenElseZero(hn::Gt(p2, hn::Zero(d)), lam);
   }
-  const V lam = hn::IfThenElse(use_y, lam_y, lam_l);
-  return hn::IfThenElseZero(hn::Gt(p2, hn::Zero(d)), lam);
 }
 
 template <class D, class V>
 HWY_INLINE V StudentTLambda(D d, const StudentTConsts<D>& c, V wx, V wy, V wz) {
   return hn::IfThenElse(hn::Gt(wz, hn::Zero(d)), StudentTLambdaAbove(d, c, wx, wy, wz),
-                        hn::Set(d, HUGE_VALF));
+                        hn::Set(d, std::numeric_limits<hn::TFromD<D>>::infinity()));
 }
 
 template <class D, class V, class Fr>
 HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix, V iy, V iz, V ox,
                           V oy, V oz, const Fr& fresnel) {
+  using T = hn::TFromD<D>;
   const V sx = hn::Add(ix, ox), sy = hn::Add(iy, oy), sz = hn::Add(iz, oz);
   const V len2 = hn::MulAdd(sx, sx, hn::MulAdd(sy, sy, hn::Mul(sz, sz)));
-  const V iz2 = hn::Div(hn::Set(d, 1.0f), hn::Mul(sz, sz));
+  const V iz2 = hn::Div(hn::Set(d, T(1)), hn::Mul(sz, sz));
   const V q = hn::MulAdd(hn::Mul(sx, sx), c.b.inv_ax2, hn::Mul(hn::Mul(sy, sy), c.b.inv_ay2));
   const V l_iz2 = hn::Mul(len2, iz2);
   // D(h) = P22(r2) (L / s.z^2)^2 / (ax ay), r2 = q / s.z^2.
@@ -216,14 +243,14 @@ HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix,
                         c.b.inv_pi_axay);
   const V li = StudentTLambdaAbove(d, c, ix, iy, iz);
   const V lo = StudentTLambdaAbove(d, c, ox, oy, oz);
-  const V one = hn::Set(d, 1.0f);
+  const V one = hn::Set(d, T(1));
   const V g_den = separable ? hn::Mul(hn::Add(one, li), hn::Add(one, lo))
                             : hn::Add(one, hn::Add(li, lo));
   const V f = fresnel(d, CosAtHalf(d, ox, oy, oz, sx, sy, sz, len2));
-  const V four_zz = hn::Mul(hn::Set(d, 4.0f), hn::Mul(iz, oz));
+  const V four_zz = hn::Mul(hn::Set(d, T(4)), hn::Mul(iz, oz));
   const V val = hn::Mul(d_h, hn::Div(f, hn::Mul(g_den, four_zz)));
   const auto valid = hn::And(hn::And(hn::Gt(iz, hn::Zero(d)), hn::Gt(oz, hn::Zero(d))),
-                             hn::Gt(len2, hn::Set(d, 1e-30f)));
+                             hn::Gt(len2, hn::Set(d, T(1e-30))));
   return hn::IfThenElseZero(valid, val);
 }
 
