@@ -54,6 +54,17 @@ ModelDispatch DispatchOf(ModelKind kind) {
   }
 }
 
+// Runs f, under the subnormal flush if `flush`.
+template <class F>
+void MaybeFlushed(bool flush, const F& f) {
+  if (flush) {
+    const FlushSubnormals ftz;
+    f();
+  } else {
+    f();
+  }
+}
+
 [[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
 
 // The dispatch of a built model, or a one-line error.
@@ -79,12 +90,7 @@ void Eval(const BatchModel& model, Quantity q, bool pair, const float* const* in
         (IsPairQuantity(q) ? "a pair of directions" : "one direction"));
   }
   if (n == 0) return;
-  if (m.flush_subnormals) {
-    const FlushSubnormals ftz;
-    m.eval(model, q, in, out, n);
-  } else {
-    m.eval(model, q, in, out, n);
-  }
+  MaybeFlushed(m.flush_subnormals, [&] { m.eval(model, q, in, out, n); });
 }
 
 }  // namespace
@@ -197,12 +203,7 @@ void SampleBatch(const BatchModel& model, Sampler s, DirArrays wo, const float* 
   if (n == 0) return;
   const float* in[5] = {wo.x, wo.y, wo.z, u1, u2};
   float* out[3] = {m.x, m.y, m.z};
-  if (d.flush_subnormals) {
-    const FlushSubnormals ftz;
-    d.sample(model, s, in, out, n);
-  } else {
-    d.sample(model, s, in, out, n);
-  }
+  MaybeFlushed(d.flush_subnormals, [&] { d.sample(model, s, in, out, n); });
 }
 
 }  // namespace brdfbake

@@ -138,18 +138,18 @@ std::string ModelParams::ToJson() const {
 
 const std::vector<ModelInfo>& Models() {
   static const std::vector<ModelInfo> kModels = {
-      {ModelKind::kGgx, "ggx", "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from seed 003"},
+      {ModelKind::kGgx, "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from seed 003"},
 #if BRDFBAKE_WITH_BECKMANN
-      {ModelKind::kBeckmann, "beckmann", "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
+      {ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
 #endif
 #if BRDFBAKE_WITH_STD
-      {ModelKind::kStudentT, "std", "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, seed 004; gamma=2 is ggx, inf is beckmann"},
+      {ModelKind::kStudentT, "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, seed 004; gamma=2 is ggx, inf is beckmann"},
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID
-      {ModelKind::kEllipsoid, "ellipsoid", "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, seed 000; A = S Rx Ry Rz"},
+      {ModelKind::kEllipsoid, "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, seed 000; A = S Rx Ry Rz"},
 #endif
 #if BRDFBAKE_WITH_SEL
-      {ModelKind::kSel, "sel", "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), seed 002"},
+      {ModelKind::kSel, "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), seed 002"},
 #endif
   };
   return kModels;
@@ -162,7 +162,7 @@ constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, Mod
 
 std::string BuiltModels() {
   std::string built;
-  for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(m.name);
+  for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(ModelName(m.kind));
   return built;
 }
 

@@ -38,7 +38,7 @@ bool IsConfigured(const std::string& m) {
 
 TEST(BuildTest, OnlyTheConfiguredFamiliesAreRegistered) {
   std::vector<std::string> registered;
-  for (const ModelInfo& m : Models()) registered.push_back(m.name);
+  for (const ModelInfo& m : Models()) registered.push_back(ModelName(m.kind));
   std::vector<std::string> expected;
   for (const char* m : {"ggx", "beckmann", "std", "ellipsoid", "sel"}) {
     if (IsConfigured(m)) expected.push_back(m);

@@ -234,7 +234,7 @@ std::string VersionText() {
 std::string ModelsHelp() {
   std::string s = "Models:\n";
   for (const brdfbake::ModelInfo& m : brdfbake::Models()) {
-    s += std::string("  ") + m.name + ": " + m.parameters + "\n      " + m.source + "\n";
+    s += std::string("  ") + brdfbake::ModelName(m.kind) + ": " + m.parameters + "\n      " + m.source + "\n";
   }
   s += "Quantities (--quantity, comma-separated):\n"
        "  D, pdf      swept direction is the microfacet normal m (pdf: density of the\n"

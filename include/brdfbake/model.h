@@ -47,8 +47,7 @@ struct ModelParams {
 
 // Every model name, with a one-line description of its parameters.
 struct ModelInfo {
-  ModelKind kind;
-  const char* name;
+  ModelKind kind;  // its name is ModelName(kind)
   const char* parameters;
   const char* source;
 };
