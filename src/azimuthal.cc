@@ -67,6 +67,9 @@ const AzimuthLadder& AzimuthLadder::Get(int ratio) {
     r.levels = levels;
     r.ring.resize(levels + 1);
     r.core.resize(levels + 1);
+    r.d.resize(levels + 1);
+    r.d[0] = kPi / 2;
+    for (int j = 1; j <= levels; ++j) r.d[j] = r.d[j - 1] / ratio;
     auto fill = [&](double a, double b, Piece* p) {
       const double mid = 0.5 * (a + b);
       p->half_width = 0.5 * (b - a);

@@ -88,6 +88,17 @@ class AzimuthalFrame {
   }
   double theta_o() const { return theta_o_; }
 
+  // pi/2 in two parts (kHalfPiHi + kHalfPiLo to 1e-32).
+  static constexpr double kHalfPiHi = 1.5707963267948966;
+  static constexpr double kHalfPiLo = 6.123233995736766e-17;  // pi/2 - kHalfPiHi
+
+  // What AnglesAt reads, for its SIMD twin (quadrature_simd.cc).
+  struct FrameConsts {
+    double theta_o, eps_o, s_o, scale;
+    bool grazing_o;
+  };
+  FrameConsts frame_consts() const { return {theta_o_, eps_o_, s_o_, scale_, grazing_o_}; }
+
  protected:
   // sin and cos of A and T, cos and sin of theta_i.
   struct Angles {
@@ -117,8 +128,6 @@ class AzimuthalFrame {
   double s_o_ = 0, scale_ = 0.25;  // scale: 1 / (4 mu_o)
 
  private:
-  static constexpr double kHalfPiHi = 1.5707963267948966;
-  static constexpr double kHalfPiLo = 6.123233995736766e-17;  // pi/2 - kHalfPiHi
   bool grazing_o_ = false;  // theta_o > pi/4
   double theta_o_ = 0, eps_o_ = 1.5707963267948966;
 };
@@ -134,6 +143,13 @@ class GgxAzimuthalE : public AzimuthalFrame {
   }
 
   double lambda_o() const { return lambda_o_; }
+
+  // What EvalDfg reads besides the frame, for its SIMD twin.
+  struct DfgConsts {
+    double a2, b, lambda_o;
+    bool separable;
+  };
+  DfgConsts dfg_consts() const { return {a2_, b_, lambda_o_, separable_}; }
 
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
@@ -284,10 +300,12 @@ struct AzimuthLadder {
   static constexpr int kMaxPieces = 66;
   // Ratio 3 (40 levels, d_40 = 1.3e-19) or 2 (62 levels, d_62 = 3.4e-19).
   static const AzimuthLadder& Get(int ratio);
+  // d_j for j = 0..levels, by repeated division (Select's thresholds).
+  std::vector<double> d;
   // The pieces for a feature of scale `start` at psi = 0; returns their count.
   int Select(double start, const Piece** used) const {
     int level = 0;
-    for (double d = 1.5707963267948966; d > start && level < levels; d /= ratio) ++level;
+    while (level < levels && d[level] > start) ++level;
     int n = 0;
     used[n++] = &core[level];
     for (int j = level; j >= 1; --j) used[n++] = &ring[j];

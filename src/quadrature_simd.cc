@@ -37,10 +37,13 @@ using DF64 = hn::ScalableTag<double>;
 
 // The remainder of the Schlick-weighted azimuthal integral (azimuthal.h,
 // ScalarRemainderNodes) with each piece's 16 nodes (15 and one of weight 0)
-// in lanes.
+// in lanes. Returns the Kronrod value over all n pieces (the per-piece sums
+// times their half widths, accumulated in lanes: one horizontal sum) and
+// the error estimate, the sum of |K15 - G7| (one horizontal sum per piece,
+// of the nodes times the weight differences).
 struct SimdRemainderNodes {
   void operator()(const OddRemainder& rem, const AzimuthLadder::Piece* const* pieces, int n,
-                  double* k, double* g) const {
+                  double* rem_k, double* rem_err) const {
     using V = hn::Vec<DF64>;
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -48,20 +51,26 @@ struct SimdRemainderNodes {
     V t[8];
     for (int m = 0; m < 8; ++m) t[m] = hn::Set(d, rem.t[m]);
     const V a = hn::Set(d, rem.a), vmin = hn::Set(d, rem.vmin), two_b = hn::Set(d, rem.two_b);
+    V total = hn::Zero(d);
+    double err = 0;
     for (int p = 0; p < n; ++p) {
-      V ks = hn::Zero(d), gs = hn::Zero(d);
+      V ks = hn::Zero(d), ds = hn::Zero(d);
       for (size_t i = 0; i < 16; i += N) {
         const V b = hn::Sqrt(hn::MulAdd(two_b, hn::LoadU(d, pieces[p]->s2 + i), vmin));
         V acc = t[7];
         for (int m = 6; m >= 0; --m) acc = hn::MulAdd(acc, b, t[m]);
         const V ab = hn::Add(a, b);
         const V f = hn::Div(acc, hn::Mul(ab, ab));
-        ks = hn::MulAdd(hn::LoadU(d, rule.wk + i), f, ks);
-        gs = hn::MulAdd(hn::LoadU(d, rule.wg + i), f, gs);
+        const V wk = hn::LoadU(d, rule.wk + i);
+        ks = hn::MulAdd(wk, f, ks);
+        ds = hn::MulAdd(hn::Sub(wk, hn::LoadU(d, rule.wg + i)), f, ds);
       }
-      k[p] = hn::GetLane(hn::SumOfLanes(d, ks));
-      g[p] = hn::GetLane(hn::SumOfLanes(d, gs));
+      const double h = pieces[p]->half_width;
+      total = hn::MulAdd(hn::Set(d, h), ks, total);
+      err += std::abs(hn::GetLane(hn::SumOfLanes(d, ds))) * h;
     }
+    *rem_k = hn::GetLane(hn::SumOfLanes(d, total));
+    *rem_err = err;
   }
 };
 
@@ -360,9 +369,127 @@ AzimuthalResult AnisoAlbedoTexel(double alpha_x, double alpha_y, double mu, doub
                             SimdAnisoNodes{});
 }
 
+// sin and cos of t in [0, pi/2] from the smaller of t and its complement c
+// (SinCosWithComplement of azimuthal.h); hn::Sin and hn::Cos are within 3
+// ulp on [-39000, 39000] (Highway 1.0.3).
+template <class V>
+HWY_INLINE void SinCosWithComplement(DF64 d, V t, V c, V* sin_t, V* cos_t) {
+  const auto t_le_c = hn::Le(t, c);
+  const V x = hn::Min(t, c);
+  const V sx = hn::Sin(d, x), cx = hn::Cos(d, x);
+  *sin_t = hn::IfThenElse(t_le_c, sx, cx);
+  *cos_t = hn::IfThenElse(t_le_c, cx, sx);
+}
+
+// GgxAzimuthalE::EvalDfg at the 15 nodes of one theta_i piece, with
+// everything but the remainder's azimuthal nodes in lanes: the angles
+// (AnglesAt), Phi, G2 and the closed-form moments, the same operations in
+// the same order as the scalar reference, then the remainder node by node
+// (SimdRemainderNodes). The 16th lane repeats the first node.
+struct SimdGgxDfgNodes {
+  AzimuthalFrame::FrameConsts fc;
+  GgxAzimuthalE::DfgConsts gc;
+
+  void operator()(const double* theta, AzimuthalValues* out) const {
+    using V = hn::Vec<DF64>;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    constexpr double kTwoPi = 6.283185307179586;
+    HWY_ALIGN double th[16];
+    for (int i = 0; i < 15; ++i) th[i] = theta[i];
+    th[15] = theta[0];
+    // Per node: E's integrand, the weight w norm of the bias, the closed
+    // part, and the remainder's a = sqrt(kappa), vmin, 2 B and start 2 cos A.
+    HWY_ALIGN double e[16], wn[16], closed[16], sk[16], vmin[16], two_bb[16], start[16];
+    const V half = hn::Set(d, 0.5), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
+            four = hn::Set(d, 4.0), zero = hn::Zero(d), two_pi = hn::Set(d, kTwoPi);
+    const V theta_o = hn::Set(d, fc.theta_o), eps_o = hn::Set(d, fc.eps_o);
+    const V a2 = hn::Set(d, gc.a2), b = hn::Set(d, gc.b);
+    const V lambda_o1 = hn::Set(d, 1 + gc.lambda_o), scale = hn::Set(d, fc.scale);
+    const V s_o = hn::Set(d, fc.s_o), norm = hn::Set(d, gc.a2 / 3.141592653589793);
+    for (size_t i = 0; i < 16; i += N) {
+      const V t = hn::Load(d, th + i);
+      const V eps_i = hn::Add(hn::Sub(hn::Set(d, AzimuthalFrame::kHalfPiHi), t),
+                              hn::Set(d, AzimuthalFrame::kHalfPiLo));
+      const V ht = fc.grazing_o ? hn::Mul(half, hn::Sub(eps_o, eps_i))
+                                : hn::Mul(half, hn::Sub(t, theta_o));
+      V sa, ca, s_i, mu_i;
+      SinCosWithComplement(d, hn::Mul(half, hn::Add(t, theta_o)),
+                           hn::Mul(half, hn::Add(eps_i, eps_o)), &sa, &ca);
+      SinCosWithComplement(d, t, eps_i, &s_i, &mu_i);
+      const V st = hn::Sin(d, ht), ct = hn::Cos(d, ht);
+      mu_i = hn::Max(zero, mu_i);
+      // PhiAt.
+      const V x = hn::MulAdd(hn::Mul(a2, ct), ct, hn::Mul(st, st));
+      const V y = hn::MulAdd(hn::Mul(a2, ca), ca, hn::Mul(sa, sa));
+      const V xy = hn::Mul(x, y);
+      const V ca2 = hn::Mul(ca, ca), ct2 = hn::Mul(ct, ct);
+      const V q = hn::Div(hn::Mul(hn::Mul(b, ca), ct), hn::Sqrt(xy));
+      const V inner =
+          hn::Div(hn::Mul(b, hn::MulAdd(ca2, x, hn::Mul(ct2, y))), hn::Mul(two, xy));
+      const V phi = hn::Mul(hn::Mul(two, a2), hn::MulAdd(q, hn::Add(two, inner), one));
+      // G2.
+      const V a2s2 = hn::Mul(hn::Mul(a2, s_i), s_i);
+      const V n = hn::Mul(hn::Mul(two, mu_i), hn::Add(mu_i, hn::Sqrt(hn::MulAdd(mu_i, mu_i, a2s2))));
+      const V g2 = gc.separable ? hn::Div(n, hn::Mul(hn::Add(n, a2s2), lambda_o1))
+                                : hn::Div(n, hn::MulAdd(n, lambda_o1, a2s2));
+      const V w = hn::Mul(hn::Mul(scale, g2), s_i);
+      hn::Store(hn::Mul(w, phi), d, e + i);
+      // The closed-form moments.
+      const V r = hn::Mul(hn::Mul(hn::Mul(four, ca), ct), hn::Sqrt(xy));
+      const auto valid = hn::And(hn::Gt(r, zero), hn::Gt(w, zero));
+      const V rs = hn::IfThenElse(valid, r, one);
+      const V cmb = hn::Mul(hn::Mul(four, ca2), x), cpb = hn::Mul(hn::Mul(four, ct2), y);
+      const V c = hn::Mul(half, hn::Add(cmb, cpb));
+      const V bb = hn::Mul(hn::Mul(two, s_i), s_o);
+      const V i_m2 = hn::Div(hn::Mul(two_pi, c), hn::Mul(hn::Mul(rs, rs), rs));
+      const V i_m1 = hn::Div(two_pi, rs);
+      const V i_1 = hn::Mul(two_pi, c);
+      const V i_2 = hn::Mul(two_pi, hn::MulAdd(hn::Mul(half, bb), bb, hn::Mul(c, c)));
+      const V kappa = hn::Mul(hn::Mul(hn::Mul(b, four), ca2), ct2);
+      const V skv = hn::Sqrt(kappa);
+      const V f = hn::NegMulAdd(half, skv, one), f2 = hn::Mul(f, f), f4 = hn::Mul(f2, f2);
+      const V g_k = hn::Mul(hn::Mul(hn::Mul(kappa, kappa), f4), f);
+      const V gp_k =
+          hn::Mul(hn::Mul(kappa, f4), hn::NegMulAdd(hn::Set(d, 1.25), skv, hn::Mul(two, f)));
+      const V c2 = hn::MulAdd(kappa, hn::MulAdd(kappa, hn::Set(d, 1.875), hn::Set(d, 7.5)), one);
+      const V c3 = hn::MulAdd(hn::Set(d, 1.25), kappa, hn::Set(d, 2.5));
+      V cl = hn::Mul(g_k, i_m2);
+      cl = hn::MulAdd(gp_k, i_m1, cl);
+      cl = hn::MulAdd(c2, two_pi, cl);
+      cl = hn::MulAdd(c3, i_1, cl);
+      cl = hn::MulAdd(hn::Set(d, 0.3125), i_2, cl);
+      hn::Store(hn::IfThenElseZero(valid, hn::Mul(w, norm)), d, wn + i);
+      hn::Store(cl, d, closed + i);
+      hn::Store(skv, d, sk + i);
+      hn::Store(hn::Mul(four, ca2), d, vmin + i);
+      hn::Store(hn::Mul(two, bb), d, two_bb + i);
+      hn::Store(hn::Mul(two, ca), d, start + i);
+    }
+    const AzimuthLadder& ladder = AzimuthLadder::Get(3);
+    const SimdRemainderNodes nodes;
+    for (int i = 0; i < 15; ++i) {
+      AzimuthalValues& v = out[i];
+      v = AzimuthalValues();
+      v.e = e[i];
+      if (!(wn[i] > 0)) continue;
+      const OddRemainder rem(sk[i], vmin[i], two_bb[i]);
+      const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+      const int pieces = ladder.Select(start[i], used);
+      double rem_k, rem_err;
+      nodes(rem, used, pieces, &rem_k, &rem_err);
+      v.bias = wn[i] * (closed[i] - 2 * rem_k);
+      v.bias_error = wn[i] * 2 * rem_err;
+    }
+  }
+};
+
 AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double tol,
                                int max_pieces) {
-  return GgxAzimuthalDfgWith(alpha, mu, masking, tol, max_pieces, SimdRemainderNodes());
+  const GgxAzimuthalE f(alpha, mu, masking);
+  const SimdGgxDfgNodes nodes{f.frame_consts(), f.dfg_consts()};
+  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha), nodes, tol,
+                               max_pieces);
 }
 
 }  // namespace HWY_NAMESPACE
