@@ -37,26 +37,6 @@ const KronrodRule& Kronrod15() {
   return rule;
 }
 
-namespace {
-
-struct Piece {
-  double a, b, k, err;
-};
-
-template <class F>
-Piece KronrodPiece(const F& f, double a, double b) {
-  const KronrodRule& r = Kronrod15();
-  const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-  double k = 0, g = 0;
-  for (int i = 0; i < 15; ++i) {
-    const double v = f(c + h * r.x[i]);
-    k += r.wk[i] * v;
-    g += r.wg[i] * v;
-  }
-  return {a, b, k * h, std::abs(k - g) * h};
-}
-
-}  // namespace
 
 const AzimuthLadder& AzimuthLadder::Get(int ratio) {
   auto make = [](int ratio, int levels) {
@@ -119,35 +99,10 @@ std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha)
 
 AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                    int max_pieces) {
-  const GgxAzimuthalE f(alpha, mu, masking);
-  const std::vector<double> pts = AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha);
-  std::vector<Piece> pieces;
-  pieces.reserve(pts.size() + 64);
-  double err = 0;
-  for (size_t i = 0; i + 1 < pts.size(); ++i) {
-    pieces.push_back(KronrodPiece(f, pts[i], pts[i + 1]));
-    err += pieces.back().err;
-  }
-  // Bisect the worst piece until the claim meets the tolerance.
-  while (err > tol && static_cast<int>(pieces.size()) < max_pieces) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    if (!(m > p.a && m < p.b)) break;  // down to adjacent doubles
-    pieces[worst] = KronrodPiece(f, p.a, m);
-    pieces.push_back(KronrodPiece(f, m, p.b));
-    err = 0;
-    for (const Piece& q : pieces) err += q.err;
-  }
-  AzimuthalResult r;
-  for (const Piece& q : pieces) r.value += q.k;
-  // Plus the rounding of the sum (a few ulps of the value).
-  r.error = err + 4e-16 * std::abs(r.value);
-  r.pieces = static_cast<int>(pieces.size());
-  return r;
+  return GgxAzimuthalAlbedoWith(alpha, mu, masking, tol, max_pieces,
+                                [](const GgxAzimuthalE& f, const double* theta, double* out) {
+                                  for (int i = 0; i < 15; ++i) out[i] = f(theta[i]);
+                                });
 }
 
 }  // namespace brdfbake

@@ -210,6 +210,63 @@ struct AzimuthalResult {
 AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                    int max_pieces);
 
+// The breakpoints of the theta_i rule (see the header): the specular peak
+// at theta_o graded from 2 alpha, the horizon from alpha / (2 (1 + Lambda(wo))).
+std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha);
+
+// GgxAzimuthalAlbedo's rule with the integrand at a piece's 15 nodes from
+// `eval(f, theta, out)` (f's operator() node by node for the scalar
+// reference; quadrature_simd.h's lanes).
+template <class Eval>
+AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces, const Eval& eval) {
+  struct Piece {
+    double a, b, k, err;
+  };
+  const GgxAzimuthalE f(alpha, mu, masking);
+  const KronrodRule& rule = Kronrod15();
+  auto kronrod = [&](double a, double b) {
+    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+    double theta[15], v[15];
+    for (int i = 0; i < 15; ++i) theta[i] = c + h * rule.x[i];
+    eval(f, theta, v);
+    double k = 0, g = 0;
+    for (int i = 0; i < 15; ++i) {
+      k += rule.wk[i] * v[i];
+      g += rule.wg[i] * v[i];
+    }
+    return Piece{a, b, k * h, std::abs(k - g) * h};
+  };
+  const std::vector<double> pts = AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha);
+  std::vector<Piece> pieces;
+  pieces.reserve(pts.size() + 64);
+  double err = 0;
+  for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    pieces.push_back(kronrod(pts[i], pts[i + 1]));
+    err += pieces.back().err;
+  }
+  // Bisect the worst piece until the claim meets the tolerance.
+  while (err > tol && static_cast<int>(pieces.size()) < max_pieces) {
+    size_t worst = 0;
+    for (size_t i = 1; i < pieces.size(); ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    if (!(m > p.a && m < p.b)) break;  // down to adjacent doubles
+    pieces[worst] = kronrod(p.a, m);
+    pieces.push_back(kronrod(m, p.b));
+    err = 0;
+    for (const Piece& q : pieces) err += q.err;
+  }
+  AzimuthalResult r;
+  for (const Piece& q : pieces) r.value += q.k;
+  // Plus the rounding of the sum (a few ulps of the value).
+  r.error = err + 4e-16 * std::abs(r.value);
+  r.pieces = static_cast<int>(pieces.size());
+  return r;
+}
+
 // The Schlick-weighted azimuthal integral. With v = |wi + wo|^2 = 2 + 2 wi.wo
 // and u = v + k (azimuthal.h: D = (alpha^2 / pi) v^2 / u^2, k = (alpha^2 - 1)
 // s^2 = -kappa), wo.h = sqrt(v) / 2, so over the azimuth both D and
@@ -333,10 +390,6 @@ struct ScalarRemainderNodes {
     }
   }
 };
-
-// The breakpoints of the theta_i rule (see the header): the specular peak
-// at theta_o graded from 2 alpha, the horizon from alpha / (2 (1 + Lambda(wo))).
-std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha);
 
 template <class Nodes>
 AzimuthalValues GgxAzimuthalE::EvalDfg(double theta_i, const Nodes& nodes) const {

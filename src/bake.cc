@@ -266,7 +266,9 @@ TexelEstimate QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int
       return texel(spec.simd ? SimdGgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes)
                              : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes));
     }
-    const AzimuthalResult r = GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes);
+    const AzimuthalResult r = spec.simd
+                                  ? SimdGgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
+                                  : GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes);
     TexelEstimate v;
     v.e = r.value;
     v.err_e = r.error;

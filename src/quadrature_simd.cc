@@ -381,16 +381,54 @@ HWY_INLINE void SinCosWithComplement(DF64 d, V t, V c, V* sin_t, V* cos_t) {
   *cos_t = hn::IfThenElse(t_le_c, cx, sx);
 }
 
-// GgxAzimuthalE::EvalDfg at the 15 nodes of one theta_i piece, with
+// GgxAzimuthalE at the 15 nodes of one theta_i piece in lanes: its
+// operator() (E's integrand, Albedo) and EvalDfg (operator()), with
 // everything but the remainder's azimuthal nodes in lanes: the angles
-// (AnglesAt), Phi, G2 and the closed-form moments, the same operations in
-// the same order as the scalar reference, then the remainder node by node
+// (AnglesAt), Phi, G2 and the closed-form moments, the same operations as
+// the scalar reference, then the remainder node by node
 // (SimdRemainderNodes). The 16th lane repeats the first node.
 struct SimdGgxDfgNodes {
   AzimuthalFrame::FrameConsts fc;
   GgxAzimuthalE::DfgConsts gc;
 
+  // Per node: E's integrand, and for dfg the weight w norm of the bias, the
+  // closed part, and the remainder's a = sqrt(kappa), vmin, 2 B and start
+  // 2 cos A.
+  struct Terms {
+    HWY_ALIGN double e[16], wn[16], closed[16], sk[16], vmin[16], two_bb[16], start[16];
+  };
+
+  void Albedo(const double* theta, double* out) const {
+    Terms terms;
+    Front<false>(theta, &terms);
+    for (int i = 0; i < 15; ++i) out[i] = terms.e[i];
+  }
+
   void operator()(const double* theta, AzimuthalValues* out) const {
+    Terms terms;
+    Front<true>(theta, &terms);
+    const double *e = terms.e, *wn = terms.wn, *closed = terms.closed, *sk = terms.sk,
+                 *vmin = terms.vmin, *two_bb = terms.two_bb, *start = terms.start;
+    const AzimuthLadder& ladder = AzimuthLadder::Get(3);
+    const SimdRemainderNodes nodes;
+    for (int i = 0; i < 15; ++i) {
+      AzimuthalValues& v = out[i];
+      v = AzimuthalValues();
+      v.e = e[i];
+      if (!(wn[i] > 0)) continue;
+      const OddRemainder rem(sk[i], vmin[i], two_bb[i]);
+      const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+      const int pieces = ladder.Select(start[i], used);
+      double rem_k, rem_err;
+      nodes(rem, used, pieces, &rem_k, &rem_err);
+      v.bias = wn[i] * (closed[i] - 2 * rem_k);
+      v.bias_error = wn[i] * 2 * rem_err;
+    }
+  }
+
+ private:
+  template <bool kDfg>
+  void Front(const double* theta, Terms* terms) const {
     using V = hn::Vec<DF64>;
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -398,9 +436,8 @@ struct SimdGgxDfgNodes {
     HWY_ALIGN double th[16];
     for (int i = 0; i < 15; ++i) th[i] = theta[i];
     th[15] = theta[0];
-    // Per node: E's integrand, the weight w norm of the bias, the closed
-    // part, and the remainder's a = sqrt(kappa), vmin, 2 B and start 2 cos A.
-    HWY_ALIGN double e[16], wn[16], closed[16], sk[16], vmin[16], two_bb[16], start[16];
+    double *e = terms->e, *wn = terms->wn, *closed = terms->closed, *sk = terms->sk,
+           *vmin = terms->vmin, *two_bb = terms->two_bb, *start = terms->start;
     const V half = hn::Set(d, 0.5), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
             four = hn::Set(d, 4.0), zero = hn::Zero(d), two_pi = hn::Set(d, kTwoPi);
     const V theta_o = hn::Set(d, fc.theta_o), eps_o = hn::Set(d, fc.eps_o);
@@ -411,8 +448,8 @@ struct SimdGgxDfgNodes {
       const V t = hn::Load(d, th + i);
       const V eps_i = hn::Add(hn::Sub(hn::Set(d, AzimuthalFrame::kHalfPiHi), t),
                               hn::Set(d, AzimuthalFrame::kHalfPiLo));
-      const V ht = fc.grazing_o ? hn::Mul(half, hn::Sub(eps_o, eps_i))
-                                : hn::Mul(half, hn::Sub(t, theta_o));
+      const V ht =
+          fc.grazing_o ? hn::Mul(half, hn::Sub(eps_o, eps_i)) : hn::Mul(half, hn::Sub(t, theta_o));
       V sa, ca, s_i, mu_i;
       SinCosWithComplement(d, hn::Mul(half, hn::Add(t, theta_o)),
                            hn::Mul(half, hn::Add(eps_i, eps_o)), &sa, &ca);
@@ -425,14 +462,19 @@ struct SimdGgxDfgNodes {
       const V xy = hn::Mul(x, y);
       const V ca2 = hn::Mul(ca, ca), ct2 = hn::Mul(ct, ct);
       const V q = hn::Div(hn::Mul(hn::Mul(b, ca), ct), hn::Sqrt(xy));
-      const V inner =
-          hn::Div(hn::Mul(b, hn::MulAdd(ca2, x, hn::Mul(ct2, y))), hn::Mul(two, xy));
+      const V inner = hn::Div(hn::Mul(b, hn::MulAdd(ca2, x, hn::Mul(ct2, y))), hn::Mul(two, xy));
       const V phi = hn::Mul(hn::Mul(two, a2), hn::MulAdd(q, hn::Add(two, inner), one));
       // G2.
       const V a2s2 = hn::Mul(hn::Mul(a2, s_i), s_i);
-      const V n = hn::Mul(hn::Mul(two, mu_i), hn::Add(mu_i, hn::Sqrt(hn::MulAdd(mu_i, mu_i, a2s2))));
+      const V n =
+          hn::Mul(hn::Mul(two, mu_i), hn::Add(mu_i, hn::Sqrt(hn::MulAdd(mu_i, mu_i, a2s2))));
       const V g2 = gc.separable ? hn::Div(n, hn::Mul(hn::Add(n, a2s2), lambda_o1))
                                 : hn::Div(n, hn::MulAdd(n, lambda_o1, a2s2));
+      if constexpr (!kDfg) {
+        // operator(): scale G2 Phi sin(theta_i), in that order.
+        hn::Store(hn::Mul(hn::Mul(hn::Mul(scale, g2), phi), s_i), d, e + i);
+        continue;
+      }
       const V w = hn::Mul(hn::Mul(scale, g2), s_i);
       hn::Store(hn::Mul(w, phi), d, e + i);
       // The closed-form moments.
@@ -466,23 +508,17 @@ struct SimdGgxDfgNodes {
       hn::Store(hn::Mul(two, bb), d, two_bb + i);
       hn::Store(hn::Mul(two, ca), d, start + i);
     }
-    const AzimuthLadder& ladder = AzimuthLadder::Get(3);
-    const SimdRemainderNodes nodes;
-    for (int i = 0; i < 15; ++i) {
-      AzimuthalValues& v = out[i];
-      v = AzimuthalValues();
-      v.e = e[i];
-      if (!(wn[i] > 0)) continue;
-      const OddRemainder rem(sk[i], vmin[i], two_bb[i]);
-      const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
-      const int pieces = ladder.Select(start[i], used);
-      double rem_k, rem_err;
-      nodes(rem, used, pieces, &rem_k, &rem_err);
-      v.bias = wn[i] * (closed[i] - 2 * rem_k);
-      v.bias_error = wn[i] * 2 * rem_err;
-    }
   }
 };
+
+AzimuthalResult GgxAlbedoTexel(double alpha, double mu, Masking masking, double tol,
+                               int max_pieces) {
+  return GgxAzimuthalAlbedoWith(
+      alpha, mu, masking, tol, max_pieces,
+      [](const GgxAzimuthalE& f, const double* theta, double* out) {
+        SimdGgxDfgNodes{f.frame_consts(), f.dfg_consts()}.Albedo(theta, out);
+      });
+}
 
 AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double tol,
                                int max_pieces) {
@@ -512,6 +548,12 @@ AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, do
                                    Masking masking, double tol, int max_pieces) {
   return HWY_DYNAMIC_DISPATCH(AnisoAlbedoTexel)(alpha_x, alpha_y, mu, phi, masking, tol,
                                                 max_pieces);
+}
+
+HWY_EXPORT(GgxAlbedoTexel);
+AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces) {
+  return HWY_DYNAMIC_DISPATCH(GgxAlbedoTexel)(alpha, mu, masking, tol, max_pieces);
 }
 
 HWY_EXPORT(GgxDfgTexel);

@@ -29,6 +29,10 @@ AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta
                                     double theta_y, double theta_z, double mu, double phi,
                                     Masking masking, double tol, int max_pieces);
 
+// GgxAzimuthalAlbedo with each theta_i piece's 15 nodes in lanes.
+AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces);
+
 // GgxAzimuthalDfg with each theta_i piece's 15 nodes in lanes (angles, Phi,
 // G2, the closed-form moments) and then, node by node, the azimuthal
 // remainder's nodes in lanes.
