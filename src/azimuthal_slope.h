@@ -100,6 +100,14 @@ struct ScalarSlopeNodes {
   }
 };
 
+// What SlopeAzimuthalE::EvalPiece reads besides the frame, for its SIMD
+// twin (quadrature_simd.cc).
+struct SlopeConsts {
+  double alpha, lambda_o;
+  bool separable;
+  int ladder_ratio;
+};
+
 // The integrands over theta_i of E and dfg.bias for an isotropic
 // slope-space model (BeckmannNdf, StudentTNdf: UnitLambda and UnitP22).
 template <class Ndf>
@@ -113,6 +121,10 @@ class SlopeAzimuthalE : public AzimuthalFrame {
 
   double lambda_o() const { return lambda_o_; }
   double alpha() const { return alpha_; }
+
+  SlopeConsts slope_consts() const {
+    return {alpha_, lambda_o_, separable_, LadderRatio(*ndf_)};
+  }
 
   // The AzimuthalValues at the 15 nodes of a piece of the theta_i rule:
   // Lambda(wi) of all 15 at once (nodes.Lambda), then each node's azimuth.

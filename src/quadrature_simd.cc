@@ -74,6 +74,37 @@ struct SimdRemainderNodes {
   }
 };
 
+// sin and cos of t in [0, pi/2] from the smaller of t and its complement c
+// (SinCosWithComplement of azimuthal.h); hn::Sin and hn::Cos are within 3
+// ulp on [-39000, 39000] (Highway 1.0.3).
+template <class V>
+HWY_INLINE void SinCosWithComplement(DF64 d, V t, V c, V* sin_t, V* cos_t) {
+  const auto t_le_c = hn::Le(t, c);
+  const V x = hn::Min(t, c);
+  const V sx = hn::Sin(d, x), cx = hn::Cos(d, x);
+  *sin_t = hn::IfThenElse(t_le_c, sx, cx);
+  *cos_t = hn::IfThenElse(t_le_c, cx, sx);
+}
+
+// AzimuthalFrame::AnglesAt in lanes: sin and cos of A and T, sin and cos
+// of theta_i (cos clamped at 0), for the theta_i nodes t.
+template <class V>
+HWY_INLINE void FrameAngles(DF64 d, const AzimuthalFrame::FrameConsts& fc, V t, V* sa, V* ca, V* st,
+                            V* ct, V* s_i, V* mu_i) {
+  const V half = hn::Set(d, 0.5);
+  const V theta_o = hn::Set(d, fc.theta_o), eps_o = hn::Set(d, fc.eps_o);
+  const V eps_i = hn::Add(hn::Sub(hn::Set(d, AzimuthalFrame::kHalfPiHi), t),
+                          hn::Set(d, AzimuthalFrame::kHalfPiLo));
+  const V ht =
+      fc.grazing_o ? hn::Mul(half, hn::Sub(eps_o, eps_i)) : hn::Mul(half, hn::Sub(t, theta_o));
+  SinCosWithComplement(d, hn::Mul(half, hn::Add(t, theta_o)), hn::Mul(half, hn::Add(eps_i, eps_o)),
+                       sa, ca);
+  SinCosWithComplement(d, t, eps_i, s_i, mu_i);
+  *st = hn::Sin(d, ht);
+  *ct = hn::Cos(d, ht);
+  *mu_i = hn::Max(hn::Zero(d), *mu_i);
+}
+
 // The azimuthal integrals of a slope-space model (azimuthal_slope.h,
 // ScalarSlopeNodes) with each piece's 16 nodes in lanes: P22 from the
 // model's lane function (BeckmannOverGgx's exponential, StudentTOverGgx's
@@ -83,17 +114,6 @@ struct SimdSlopeNodes {
   static constexpr double kNegligibleR2 = P22::kNegligibleR2;
   P22 p22;
   LambdaF lambda;
-  void Lambda(const double* a, int n, double* out) const {
-    const DF64 d;
-    const int N = static_cast<int>(hn::Lanes(d));
-    HWY_ALIGN double x[HWY_MAX_BYTES / sizeof(double)];
-    HWY_ALIGN double y[HWY_MAX_BYTES / sizeof(double)];
-    for (int i = 0; i < n; i += N) {
-      for (int j = 0; j < N; ++j) x[j] = i + j < n ? a[i + j] : 1.0;
-      hn::Store(lambda(d, hn::Load(d, x)), d, y);
-      for (int j = 0; j < N && i + j < n; ++j) out[i + j] = y[j];
-    }
-  }
   void operator()(const SlopeAzimuth& az, const AzimuthLadder::Piece* const* pieces, int n,
                   double* ke, double* ge, double* kb, double* gb) const {
     using V = hn::Vec<DF64>;
@@ -128,6 +148,105 @@ struct SimdSlopeNodes {
   }
 };
 
+// SlopeAzimuthalE::EvalPiece in lanes: the angles (AnglesAt), Lambda(wi),
+// G2 and the azimuth's parameters of the 15 nodes of a theta_i piece
+// together, then each node's azimuthal pieces (SimdSlopeNodes), the same
+// operations as the scalar reference. The 16th lane repeats the first node.
+template <class P22, class LambdaF>
+struct SimdSlopeEval {
+  SimdSlopeNodes<P22, LambdaF> nodes;
+  AzimuthalFrame::FrameConsts fc;
+  SlopeConsts sc;
+  bool with_bias;
+
+  void operator()(const double* theta, AzimuthalValues* out) const {
+    using V = hn::Vec<DF64>;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double th[16], w[16], cav[16], r2_0[16], r2_t[16], v_min[16], two_b[16];
+    HWY_ALIGN double start[16], norm[16];
+    for (int i = 0; i < 15; ++i) th[i] = theta[i];
+    th[15] = theta[0];
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), four = hn::Set(d, 4.0);
+    const V alpha = hn::Set(d, sc.alpha), a2 = hn::Set(d, sc.alpha * sc.alpha);
+    const V lambda_o = hn::Set(d, sc.lambda_o), scale = hn::Set(d, fc.scale);
+    const V s_o = hn::Set(d, fc.s_o);
+    for (size_t i = 0; i < 16; i += N) {
+      V sa, ca, st, ct, s_i, mu_i;
+      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
+      // a = cot(theta_i) / alpha: 0 (Lambda = inf) on the horizon.
+      const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
+      const V lambda_i = nodes.lambda(d, a);
+      const V g2 = sc.separable
+                       ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
+                       : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
+      hn::Store(hn::Mul(hn::Mul(scale, g2), s_i), d, w + i);
+      hn::Store(ca, d, cav + i);
+      const V cc = hn::Mul(ca, ct);
+      const V tb = hn::Mul(hn::Mul(four, s_i), s_o);
+      hn::Store(hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct)), d, r2_0 + i);
+      hn::Store(hn::Div(one, hn::Mul(hn::Mul(hn::Mul(four, a2), cc), cc)), d, r2_t + i);
+      hn::Store(hn::Mul(hn::Mul(four, ca), ca), d, v_min + i);
+      hn::Store(tb, d, two_b + i);
+      // The ladder's start: the lobe's half width (and 2 cos A for Fc).
+      const V b = hn::Mul(hn::Set(d, 0.5), tb);
+      const V bs = hn::IfThenElse(hn::Gt(b, zero), b, one);
+      V st_v = hn::IfThenElse(hn::Gt(b, zero),
+                              hn::Mul(hn::Mul(alpha, cc), hn::Sqrt(hn::Div(hn::Set(d, 8.0), bs))),
+                              hn::Inf(d));
+      if (with_bias) st_v = hn::Min(st_v, hn::Mul(hn::Set(d, 2.0), ca));
+      hn::Store(st_v, d, start + i);
+      const V cc2 = hn::Mul(cc, cc);
+      hn::Store(hn::Div(hn::Set(d, 2.0), hn::Mul(hn::Mul(hn::Mul(a2, hn::Set(d, 16.0)), cc2), cc2)),
+                d, norm + i);
+    }
+    const AzimuthLadder& ladder = AzimuthLadder::Get(sc.ladder_ratio);
+    for (int k = 0; k < 15; ++k) {
+      AzimuthalValues& v = out[k];
+      v = AzimuthalValues();
+      if (!(w[k] > 0) || !(cav[k] > 0)) continue;
+      SlopeAzimuth az;
+      az.r2_0 = r2_0[k];
+      az.r2_t = r2_t[k];
+      az.v_min = v_min[k];
+      az.two_b = two_b[k];
+      az.with_bias = with_bias;
+      const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+      int pieces = ladder.Select(start[k], used);
+      while (pieces > 1 &&
+             az.r2_0 + az.r2_t * (az.two_b * used[pieces - 1]->s2_start) >= nodes.kNegligibleR2) {
+        --pieces;
+      }
+      double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
+      double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
+      nodes(az, used, pieces, ke, ge, kb, gb);
+      double phi_e = 0, err_e = 0, phi_b = 0, err_b = 0;
+      for (int p = 0; p < pieces; ++p) {
+        const double h = used[p]->half_width;
+        phi_e += ke[p] * h;
+        err_e += std::abs(ke[p] - ge[p]) * h;
+        phi_b += kb[p] * h;
+        err_b += std::abs(kb[p] - gb[p]) * h;
+      }
+      v.e = w[k] * norm[k] * phi_e;
+      v.e_error = w[k] * norm[k] * err_e;
+      v.bias = w[k] * norm[k] * phi_b;
+      v.bias_error = w[k] * norm[k] * err_b;
+    }
+  }
+};
+
+// The slope-space rule with SimdSlopeEval's nodes.
+template <class Ndf, class P22, class LambdaF>
+AzimuthalDfgResult SimdSlopeTexel(const Ndf& ndf, double mu, Masking masking, bool with_bias,
+                                  double tol, int max_pieces,
+                                  const SimdSlopeNodes<P22, LambdaF>& nodes) {
+  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking);
+  const SimdSlopeEval<P22, LambdaF> eval{nodes, f.frame_consts(), f.slope_consts(), with_bias};
+  return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()), eval, tol,
+                               max_pieces);
+}
+
 #if BRDFBAKE_WITH_BECKMANN
 // Lambda (simd/math_f64-inl.h) and P22 = exp(-r2) / pi (0 beyond r2 = 706,
 // below the smallest normal double).
@@ -150,8 +269,8 @@ struct BeckmannP22 {
 AzimuthalDfgResult BeckmannAzimuthalTexel(const BeckmannNdf<double>& ndf, double mu,
                                           Masking masking, bool with_bias, double tol,
                                           int max_pieces) {
-  return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
-                               SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
+  return SimdSlopeTexel(ndf, mu, masking, with_bias, tol, max_pieces,
+                        SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
 }
 #endif
 
@@ -182,13 +301,12 @@ AzimuthalDfgResult StudentTAzimuthalTexel(const StudentTNdf<double>& ndf, double
                                           int max_pieces) {
   const double g = ndf.gamma();
   if (std::isinf(g)) {
-    return SlopeAzimuthalDfgWith(ndf, mu, masking, with_bias, tol, max_pieces,
-                                 SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
+    return SimdSlopeTexel(ndf, mu, masking, with_bias, tol, max_pieces,
+                          SimdSlopeNodes<BeckmannP22, BeckmannLambda>{});
   }
-  return SlopeAzimuthalDfgWith(
-      ndf, mu, masking, with_bias, tol, max_pieces,
-      SimdSlopeNodes<StudentTP22, StudentTLambda>{{g, 1 / (g - 1)},
-                                                 StudentTLambda{StudentTLambdaF64Consts(g)}});
+  return SimdSlopeTexel(ndf, mu, masking, with_bias, tol, max_pieces,
+                        SimdSlopeNodes<StudentTP22, StudentTLambda>{
+                            {g, 1 / (g - 1)}, StudentTLambda{StudentTLambdaF64Consts(g)}});
 }
 #endif
 
@@ -369,18 +487,6 @@ AzimuthalResult AnisoAlbedoTexel(double alpha_x, double alpha_y, double mu, doub
                             SimdAnisoNodes{});
 }
 
-// sin and cos of t in [0, pi/2] from the smaller of t and its complement c
-// (SinCosWithComplement of azimuthal.h); hn::Sin and hn::Cos are within 3
-// ulp on [-39000, 39000] (Highway 1.0.3).
-template <class V>
-HWY_INLINE void SinCosWithComplement(DF64 d, V t, V c, V* sin_t, V* cos_t) {
-  const auto t_le_c = hn::Le(t, c);
-  const V x = hn::Min(t, c);
-  const V sx = hn::Sin(d, x), cx = hn::Cos(d, x);
-  *sin_t = hn::IfThenElse(t_le_c, sx, cx);
-  *cos_t = hn::IfThenElse(t_le_c, cx, sx);
-}
-
 // GgxAzimuthalE at the 15 nodes of one theta_i piece in lanes: its
 // operator() (E's integrand, Albedo) and EvalDfg (operator()), with
 // everything but the remainder's azimuthal nodes in lanes: the angles
@@ -440,22 +546,12 @@ struct SimdGgxDfgNodes {
            *vmin = terms->vmin, *two_bb = terms->two_bb, *start = terms->start;
     const V half = hn::Set(d, 0.5), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
             four = hn::Set(d, 4.0), zero = hn::Zero(d), two_pi = hn::Set(d, kTwoPi);
-    const V theta_o = hn::Set(d, fc.theta_o), eps_o = hn::Set(d, fc.eps_o);
     const V a2 = hn::Set(d, gc.a2), b = hn::Set(d, gc.b);
     const V lambda_o1 = hn::Set(d, 1 + gc.lambda_o), scale = hn::Set(d, fc.scale);
     const V s_o = hn::Set(d, fc.s_o), norm = hn::Set(d, gc.a2 / 3.141592653589793);
     for (size_t i = 0; i < 16; i += N) {
-      const V t = hn::Load(d, th + i);
-      const V eps_i = hn::Add(hn::Sub(hn::Set(d, AzimuthalFrame::kHalfPiHi), t),
-                              hn::Set(d, AzimuthalFrame::kHalfPiLo));
-      const V ht =
-          fc.grazing_o ? hn::Mul(half, hn::Sub(eps_o, eps_i)) : hn::Mul(half, hn::Sub(t, theta_o));
-      V sa, ca, s_i, mu_i;
-      SinCosWithComplement(d, hn::Mul(half, hn::Add(t, theta_o)),
-                           hn::Mul(half, hn::Add(eps_i, eps_o)), &sa, &ca);
-      SinCosWithComplement(d, t, eps_i, &s_i, &mu_i);
-      const V st = hn::Sin(d, ht), ct = hn::Cos(d, ht);
-      mu_i = hn::Max(zero, mu_i);
+      V sa, ca, st, ct, s_i, mu_i;
+      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
       // PhiAt.
       const V x = hn::MulAdd(hn::Mul(a2, ct), ct, hn::Mul(st, st));
       const V y = hn::MulAdd(hn::Mul(a2, ca), ca, hn::Mul(sa, sa));

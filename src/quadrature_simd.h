@@ -2,10 +2,12 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // The baker's one-dimensional rules (azimuthal.h for GGX, azimuthal_slope.h
-// for Beckmann and STD) with the nodes of their numerical azimuthal
-// integrals in double SIMD lanes, dispatched once per texel to the best
-// Highway target (or the one ForceTarget chose). The same pieces and nodes
-// as the scalar references GgxAzimuthalDfg and SlopeAzimuthalDfg.
+// for Beckmann and STD) in double SIMD lanes: each theta_i piece's 15 nodes
+// together (angles, Lambda, G2, the azimuth's parameters or closed form),
+// then node by node the nodes of the numerical azimuthal integrals;
+// dispatched once per texel to the best Highway target (or the one
+// ForceTarget chose). The same pieces and nodes as the scalar references
+// GgxAzimuthalAlbedo, GgxAzimuthalDfg and SlopeAzimuthalDfg.
 
 #ifndef BRDFBAKE_SRC_QUADRATURE_SIMD_H_
 #define BRDFBAKE_SRC_QUADRATURE_SIMD_H_
@@ -39,7 +41,8 @@ AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking,
 AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces);
 
-// SlopeAzimuthalDfg with the azimuthal integrals' nodes in lanes.
+// SlopeAzimuthalDfg with each theta_i piece's 15 nodes in lanes, then the
+// azimuthal integrals' nodes in lanes.
 #if BRDFBAKE_WITH_BECKMANN
 AzimuthalDfgResult SimdSlopeAzimuthalDfg(const BeckmannNdf<double>& ndf, double mu,
                                          Masking masking, bool with_bias, double tol,
