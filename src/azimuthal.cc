@@ -38,8 +38,8 @@ const KronrodRule& Kronrod15() {
 }
 
 
-const AzimuthLadder& AzimuthLadder::Get(int ratio) {
-  auto make = [](int ratio, int levels) {
+const AzimuthLadder& AzimuthLadder::Get(double ratio) {
+  auto make = [](double ratio, int levels) {
     constexpr double kPi = 3.141592653589793;
     const KronrodRule& k = Kronrod15();
     AzimuthLadder r;
@@ -76,8 +76,9 @@ const AzimuthLadder& AzimuthLadder::Get(int ratio) {
     r.wk[15] = r.wg[15] = 0;
     return r;
   };
-  static const AzimuthLadder three = make(3, 40), two = make(2, 62);
-  return ratio == 2 ? two : three;
+  static const AzimuthLadder three = make(3, 40), two_and_half = make(2.5, 48),
+                             two = make(2, 62);
+  return ratio == 2 ? two : ratio == 2.5 ? two_and_half : three;
 }
 
 std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha) {

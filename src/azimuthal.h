@@ -337,16 +337,23 @@ struct OddRemainder {
 // feature at psi = 0. (With [0, pi] as one piece where the integrand is
 // smooth, G7 is only good to ~1e-9 and |K15 - G7| would stop the theta_i
 // rule short of tolerances below that; halves bring it to ~1e-13.)
-// Ratio 3 serves GGX's remainder (algebraic near psi = 0); ratio 2 the
-// Gaussian lobe of Beckmann, where on [x, 3x] G7 is good to only 3e-7 of the
-// integral (1e-9 on [x, 2x]; K15 to 1e-13 and 1e-16).
+// Ratio 3 serves GGX's remainder (algebraic near psi = 0). For a lobe at
+// psi = 0 of half width s the worst piece's |G7 - I|, relative to the whole
+// integral, over s from d_J to ratio d_J (mpmath, 30 digits): for the
+// Gaussian (Beckmann) 1.2e-9 at ratio 2, 5.4e-8 at 2.5, 3.5e-7 at 3 (K15:
+// 2e-17, 1.2e-14, 6e-13); for the STD's lobe (1 + (psi/s)^2 / (gamma -
+// 1))^-gamma at ratio 3 4.1e-8 (gamma 1.501), 2.3e-8 (2), 4.9e-8 (4); at
+// ratio 2.5 4.2e-9 (4.5), 4.7e-9 (6), 2.9e-8 (30); at ratio 2 7e-11
+// (4), 1.2e-10 (6). That floor bounds the |K15 - G7| claims from below, so
+// the wider ladders serve only tolerances above it (azimuthal_slope.h).
 struct AzimuthLadder {
   struct Piece {
     double half_width;
     double s2[16];  // sin^2(psi / 2) at the nodes; the 16th pads (weight 0)
     double s2_start;  // sin^2(psi / 2) at the piece's start
   };
-  int ratio = 3, levels = 0;
+  double ratio = 3;
+  int levels = 0;
   Piece outer;              // [pi/2, pi]
   std::vector<Piece> ring;  // ring[j], j >= 1: [d_j, d_(j-1)]
   std::vector<Piece> core;  // core[j]: [0, d_j]
@@ -355,8 +362,9 @@ struct AzimuthLadder {
   double wk[16], wg[16];
 
   static constexpr int kMaxPieces = 66;
-  // Ratio 3 (40 levels, d_40 = 1.3e-19) or 2 (62 levels, d_62 = 3.4e-19).
-  static const AzimuthLadder& Get(int ratio);
+  // Ratio 3 (40 levels, d_40 = 1.3e-19), 2.5 (48 levels, d_48 = 1.2e-19)
+  // or 2 (62 levels, d_62 = 3.4e-19).
+  static const AzimuthLadder& Get(double ratio);
   // d_j for j = 0..levels, by repeated division (Select's thresholds).
   std::vector<double> d;
   // The pieces for a feature of scale `start` at psi = 0; returns their count.

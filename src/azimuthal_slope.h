@@ -21,13 +21,17 @@
 // from the branch point of wo.h at distance 2 cos A. Both integrands are
 // positive and smooth on each piece: the lobe is Gaussian (Beckmann) or a
 // power of a quadratic in sin(psi / 2) (STD), and the ladder's pieces
-// resolve it at every scale: ratio 2 for the Gaussian and the STD from
-// gamma 4 on, ratio 3 for the STD's heavier, algebraic tails up to gamma 4
-// (as for GGX, gamma 2, in azimuthal.h; over the 32x32 E table the same
-// theta_i pieces and 22-24% less time from gamma 1.501 to 4; at gamma 6
-// the ratio-3 pieces begin to cost theta_i bisections, at gamma 10 five
-// times the pieces). The error estimate is the sum of the pieces'
-// |K15 - G7|. G2 depends on theta_i alone (isotropic Lambda), so
+// resolve it at every scale. The ladder's ratio sets a floor under the
+// pieces' |K15 - G7| (azimuthal.h: up to 5.4e-8 of the integral at the
+// wider ratios, 1.2e-9 at 2), so from tolerance 1e-7 up (the default) the
+// rule takes ratio 3 for the STD up to gamma 4 (its heavier, algebraic
+// tails, as GGX's in azimuthal.h) and 2.5 for the Gaussian and the STD
+// beyond gamma 4, and ratio 2 below 1e-7. Against ratio 2 at tolerance
+// 1e-7 over the 32x32 E table: the same theta_i pieces within 1%, and
+// 22-24% less time from gamma 1.501 to 4 (ratio 3; at gamma 6 ratio 3
+// begins to cost theta_i bisections, at 10 five times the pieces), 13-16%
+// from gamma 4.5 to inf (ratio 2.5). The error estimate is the sum of the
+// pieces' |K15 - G7|. G2 depends on theta_i alone (isotropic Lambda), so
 // Lambda(wi) is evaluated once per theta_i node, 15 at a time.
 
 #ifndef BRDFBAKE_SRC_AZIMUTHAL_SLOPE_H_
@@ -105,7 +109,7 @@ struct ScalarSlopeNodes {
 struct SlopeConsts {
   double alpha, lambda_o;
   bool separable;
-  int ladder_ratio;
+  double ladder_ratio;
 };
 
 // The integrands over theta_i of E and dfg.bias for an isotropic
@@ -113,9 +117,10 @@ struct SlopeConsts {
 template <class Ndf>
 class SlopeAzimuthalE : public AzimuthalFrame {
  public:
-  SlopeAzimuthalE(const Ndf& ndf, double mu_o, Masking masking)
+  // `tol`, the rule's tolerance, picks the azimuth ladder (see the header).
+  SlopeAzimuthalE(const Ndf& ndf, double mu_o, Masking masking, double tol)
       : AzimuthalFrame(mu_o), ndf_(&ndf), alpha_(ndf.alpha_x()),
-        separable_(masking == Masking::kSeparable) {
+        separable_(masking == Masking::kSeparable), ladder_ratio_(LadderRatio(ndf, tol)) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
   }
 
@@ -123,7 +128,7 @@ class SlopeAzimuthalE : public AzimuthalFrame {
   double alpha() const { return alpha_; }
 
   SlopeConsts slope_consts() const {
-    return {alpha_, lambda_o_, separable_, LadderRatio(*ndf_)};
+    return {alpha_, lambda_o_, separable_, ladder_ratio_};
   }
 
   // The AzimuthalValues at the 15 nodes of a piece of the theta_i rule:
@@ -168,7 +173,7 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     double start = b > 0 ? alpha_ * cc * std::sqrt(8 / b) : std::numeric_limits<double>::infinity();
     if (with_bias) start = std::min(start, 2 * g.ca);
     const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
-    int pieces = AzimuthLadder::Get(LadderRatio(*ndf_)).Select(start, used);
+    int pieces = AzimuthLadder::Get(ladder_ratio_).Select(start, used);
     // r2 grows with psi: the pieces from the first one starting at
     // r2 >= nodes.kNegligibleR2 on (where a Gaussian P22 is below the
     // smallest double) contribute nothing.
@@ -205,14 +210,18 @@ class SlopeAzimuthalE : public AzimuthalFrame {
   }
 
   // The azimuth ladder's ratio (see the header).
-  static int LadderRatio(const Ndf& ndf) {
-    if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) return ndf.gamma() <= 4 ? 3 : 2;
-    return 2;
+  static double LadderRatio(const Ndf& ndf, double tol) {
+    if (!(tol >= 1e-7)) return 2;
+    if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) {
+      if (ndf.gamma() <= 4) return 3;
+    }
+    return 2.5;
   }
 
   const Ndf* ndf_;
   double alpha_;
   bool separable_;
+  double ladder_ratio_;
   double lambda_o_ = 0;
 };
 
@@ -222,7 +231,7 @@ template <class Ndf, class Nodes>
 AzimuthalDfgResult SlopeAzimuthalDfgWith(const Ndf& ndf, double mu, Masking masking,
                                          bool with_bias, double tol, int max_pieces,
                                          const Nodes& nodes) {
-  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking);
+  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol);
   return AdaptiveAzimuthalRule(
       AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()),
       [&](const double* theta, AzimuthalValues* out) {
