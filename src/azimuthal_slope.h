@@ -23,10 +23,11 @@
 // power of a quadratic in sin(psi / 2) (STD), and the ladder's pieces
 // resolve it at every scale. The ladder's ratio sets a floor under the
 // pieces' |K15 - G7| (azimuthal.h: up to 5.4e-8 of the integral at the
-// wider ratios, 1.2e-9 at 2), so from tolerance 1e-7 up (the default) the
+// wider ratios, 1.2e-9 at 2), so from tolerance 1e-7 up (the default; 2e-7
+// for dfg, whose scale claim carries the floors of both integrals) the
 // rule takes ratio 3 for the STD up to gamma 4 (its heavier, algebraic
 // tails, as GGX's in azimuthal.h) and 2.5 for the Gaussian and the STD
-// beyond gamma 4, and ratio 2 below 1e-7. Against ratio 2 at tolerance
+// beyond gamma 4, and ratio 2 below. Against ratio 2 at tolerance
 // 1e-7 over the 32x32 E table: the same theta_i pieces within 1%, and
 // 22-24% less time from gamma 1.501 to 4 (ratio 3; at gamma 6 ratio 3
 // begins to cost theta_i bisections, at 10 five times the pieces), 13-16%
@@ -117,10 +118,12 @@ struct SlopeConsts {
 template <class Ndf>
 class SlopeAzimuthalE : public AzimuthalFrame {
  public:
-  // `tol`, the rule's tolerance, picks the azimuth ladder (see the header).
-  SlopeAzimuthalE(const Ndf& ndf, double mu_o, Masking masking, double tol)
+  // `tol`, the rule's tolerance, and `with_bias` pick the azimuth ladder
+  // (see the header).
+  SlopeAzimuthalE(const Ndf& ndf, double mu_o, Masking masking, double tol, bool with_bias)
       : AzimuthalFrame(mu_o), ndf_(&ndf), alpha_(ndf.alpha_x()),
-        separable_(masking == Masking::kSeparable), ladder_ratio_(LadderRatio(ndf, tol)) {
+        separable_(masking == Masking::kSeparable),
+        ladder_ratio_(LadderRatio(ndf, with_bias ? 0.5 * tol : tol)) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
   }
 
@@ -209,7 +212,8 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     return ndf_->UnitLambda(mu / (alpha_ * s));
   }
 
-  // The azimuth ladder's ratio (see the header).
+  // The azimuth ladder's ratio for a budget `tol` of each azimuthal
+  // integral's floor (see the header).
   static double LadderRatio(const Ndf& ndf, double tol) {
     if (!(tol >= 1e-7)) return 2;
     if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) {
@@ -231,7 +235,7 @@ template <class Ndf, class Nodes>
 AzimuthalDfgResult SlopeAzimuthalDfgWith(const Ndf& ndf, double mu, Masking masking,
                                          bool with_bias, double tol, int max_pieces,
                                          const Nodes& nodes) {
-  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol);
+  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol, with_bias);
   return AdaptiveAzimuthalRule(
       AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()),
       [&](const double* theta, AzimuthalValues* out) {

@@ -241,7 +241,7 @@ template <class Ndf, class P22, class LambdaF>
 AzimuthalDfgResult SimdSlopeTexel(const Ndf& ndf, double mu, Masking masking, bool with_bias,
                                   double tol, int max_pieces,
                                   const SimdSlopeNodes<P22, LambdaF>& nodes) {
-  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol);
+  const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol, with_bias);
   const SimdSlopeEval<P22, LambdaF> eval{nodes, f.frame_consts(), f.slope_consts(), with_bias};
   return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha()), eval, tol,
                                max_pieces);
