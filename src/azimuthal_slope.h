@@ -105,6 +105,41 @@ struct ScalarSlopeNodes {
   }
 };
 
+// One theta_i node's azimuthal integrals of D and D Fc on the ladder's
+// pieces from `start`, times `scale`, with their error estimates (the sums
+// of |K15 - G7|): the part of SlopeAzimuthalE's node that its SIMD twin
+// (quadrature_simd.cc) shares.
+template <class Nodes>
+AzimuthalValues SlopeAzimuthOnLadder(const AzimuthLadder& ladder, const SlopeAzimuth& az,
+                                     double start, double scale, const Nodes& nodes) {
+  const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
+  int pieces = ladder.Select(start, used);
+  // r2 grows with psi: the pieces from the first one starting at
+  // r2 >= nodes.kNegligibleR2 on (where a Gaussian P22 is below the
+  // smallest double) contribute nothing.
+  while (pieces > 1 &&
+         az.r2_0 + az.r2_t * (az.two_b * used[pieces - 1]->s2_start) >= nodes.kNegligibleR2) {
+    --pieces;
+  }
+  double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
+  double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
+  nodes(az, used, pieces, ke, ge, kb, gb);
+  double phi_e = 0, err_e = 0, phi_b = 0, err_b = 0;
+  for (int p = 0; p < pieces; ++p) {
+    const double h = used[p]->half_width;
+    phi_e += ke[p] * h;
+    err_e += std::abs(ke[p] - ge[p]) * h;
+    phi_b += kb[p] * h;
+    err_b += std::abs(kb[p] - gb[p]) * h;
+  }
+  AzimuthalValues out;
+  out.e = scale * phi_e;
+  out.e_error = scale * err_e;
+  out.bias = scale * phi_b;
+  out.bias_error = scale * err_b;
+  return out;
+}
+
 // What SlopeAzimuthalE::EvalPiece reads besides the frame, for its SIMD
 // twin (quadrature_simd.cc).
 struct SlopeConsts {
@@ -175,33 +210,9 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     const double b = 0.5 * two_b;
     double start = b > 0 ? alpha_ * cc * std::sqrt(8 / b) : std::numeric_limits<double>::infinity();
     if (with_bias) start = std::min(start, 2 * g.ca);
-    const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
-    int pieces = AzimuthLadder::Get(ladder_ratio_).Select(start, used);
-    // r2 grows with psi: the pieces from the first one starting at
-    // r2 >= nodes.kNegligibleR2 on (where a Gaussian P22 is below the
-    // smallest double) contribute nothing.
-    while (pieces > 1 &&
-           az.r2_0 + az.r2_t * (two_b * used[pieces - 1]->s2_start) >= nodes.kNegligibleR2) {
-      --pieces;
-    }
-    double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
-    double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
-    nodes(az, used, pieces, ke, ge, kb, gb);
-    double phi_e = 0, err_e = 0, phi_b = 0, err_b = 0;
-    for (int p = 0; p < pieces; ++p) {
-      const double h = used[p]->half_width;
-      phi_e += ke[p] * h;
-      err_e += std::abs(ke[p] - ge[p]) * h;
-      phi_b += kb[p] * h;
-      err_b += std::abs(kb[p] - gb[p]) * h;
-    }
     // D = P22 v^2 / (alpha^2 s^4), s^4 = 16 (cos A cos T)^4; Phi = 2 int_0^pi.
     const double norm = 2 / (a2 * 16 * (cc * cc) * (cc * cc));
-    out.e = w * norm * phi_e;
-    out.e_error = w * norm * err_e;
-    out.bias = w * norm * phi_b;
-    out.bias_error = w * norm * err_b;
-    return out;
+    return SlopeAzimuthOnLadder(AzimuthLadder::Get(ladder_ratio_), az, start, w * norm, nodes);
   }
 
   // Lambda of a direction at cos mu, sin s: UnitLambda(mu / (alpha s)); +inf

@@ -211,27 +211,7 @@ struct SimdSlopeEval {
       az.v_min = v_min[k];
       az.two_b = two_b[k];
       az.with_bias = with_bias;
-      const AzimuthLadder::Piece* used[AzimuthLadder::kMaxPieces];
-      int pieces = ladder.Select(start[k], used);
-      while (pieces > 1 &&
-             az.r2_0 + az.r2_t * (az.two_b * used[pieces - 1]->s2_start) >= nodes.kNegligibleR2) {
-        --pieces;
-      }
-      double ke[AzimuthLadder::kMaxPieces], ge[AzimuthLadder::kMaxPieces];
-      double kb[AzimuthLadder::kMaxPieces], gb[AzimuthLadder::kMaxPieces];
-      nodes(az, used, pieces, ke, ge, kb, gb);
-      double phi_e = 0, err_e = 0, phi_b = 0, err_b = 0;
-      for (int p = 0; p < pieces; ++p) {
-        const double h = used[p]->half_width;
-        phi_e += ke[p] * h;
-        err_e += std::abs(ke[p] - ge[p]) * h;
-        phi_b += kb[p] * h;
-        err_b += std::abs(kb[p] - gb[p]) * h;
-      }
-      v.e = w[k] * norm[k] * phi_e;
-      v.e_error = w[k] * norm[k] * err_e;
-      v.bias = w[k] * norm[k] * phi_b;
-      v.bias_error = w[k] * norm[k] * err_b;
+      v = SlopeAzimuthOnLadder(ladder, az, start[k], w[k] * norm[k], nodes);
     }
   }
 };
