@@ -81,7 +81,8 @@ const AzimuthLadder& AzimuthLadder::Get(double ratio) {
   return ratio == 2 ? two : ratio == 2.5 ? two_and_half : three;
 }
 
-std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha) {
+std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
+                                  double horizon_widen) {
   constexpr double kHalfPi = 1.5707963267948966;
   // Breakpoints: the peak, graded from 2 alpha outwards (ratio 3), and the horizon,
   // graded from the nearer of its singularities (see the header).
@@ -90,7 +91,7 @@ std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha)
     if (theta_o - h > 0) pts.push_back(theta_o - h);
     if (theta_o + h < kHalfPi) pts.push_back(theta_o + h);
   }
-  for (double e = alpha / (2 * (1 + lambda_o)); e < kHalfPi; e *= 3) {
+  for (double e = horizon_widen * (alpha / (2 * (1 + lambda_o))); e < kHalfPi; e *= 3) {
     pts.push_back(kHalfPi - e);
   }
   std::sort(pts.begin(), pts.end());

@@ -211,8 +211,10 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
                                    int max_pieces);
 
 // The breakpoints of the theta_i rule (see the header): the specular peak
-// at theta_o graded from 2 alpha, the horizon from alpha / (2 (1 + Lambda(wo))).
-std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha);
+// at theta_o graded from 2 alpha, the horizon from alpha / (2 (1 + Lambda(wo)))
+// times `horizon_widen` (>= 1; azimuthal_slope.h).
+std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
+                                  double horizon_widen = 1);
 
 // GgxAzimuthalAlbedo's rule with the integrand at a piece's 15 nodes from
 // `eval(f, theta, out)` (f's operator() node by node for the scalar
