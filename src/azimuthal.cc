@@ -43,7 +43,6 @@ const AzimuthLadder& AzimuthLadder::Get(double ratio) {
     constexpr double kPi = 3.141592653589793;
     const KronrodRule& k = Kronrod15();
     AzimuthLadder r;
-    r.ratio = ratio;
     r.levels = levels;
     r.ring.resize(levels + 1);
     r.core.resize(levels + 1);

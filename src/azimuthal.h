@@ -216,59 +216,6 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
 std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
                                   double horizon_widen = 1);
 
-// GgxAzimuthalAlbedo's rule with the integrand at a piece's 15 nodes from
-// `eval(f, theta, out)` (f's operator() node by node for the scalar
-// reference; quadrature_simd.h's lanes).
-template <class Eval>
-AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
-                                       int max_pieces, const Eval& eval) {
-  struct Piece {
-    double a, b, k, err;
-  };
-  const GgxAzimuthalE f(alpha, mu, masking);
-  const KronrodRule& rule = Kronrod15();
-  auto kronrod = [&](double a, double b) {
-    const double c = 0.5 * (a + b), h = 0.5 * (b - a);
-    double theta[15], v[15];
-    for (int i = 0; i < 15; ++i) theta[i] = c + h * rule.x[i];
-    eval(f, theta, v);
-    double k = 0, g = 0;
-    for (int i = 0; i < 15; ++i) {
-      k += rule.wk[i] * v[i];
-      g += rule.wg[i] * v[i];
-    }
-    return Piece{a, b, k * h, std::abs(k - g) * h};
-  };
-  const std::vector<double> pts = AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha);
-  std::vector<Piece> pieces;
-  pieces.reserve(pts.size() + 64);
-  double err = 0;
-  for (size_t i = 0; i + 1 < pts.size(); ++i) {
-    pieces.push_back(kronrod(pts[i], pts[i + 1]));
-    err += pieces.back().err;
-  }
-  // Bisect the worst piece until the claim meets the tolerance.
-  while (err > tol && static_cast<int>(pieces.size()) < max_pieces) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    if (!(m > p.a && m < p.b)) break;  // down to adjacent doubles
-    pieces[worst] = kronrod(p.a, m);
-    pieces.push_back(kronrod(m, p.b));
-    err = 0;
-    for (const Piece& q : pieces) err += q.err;
-  }
-  AzimuthalResult r;
-  for (const Piece& q : pieces) r.value += q.k;
-  // Plus the rounding of the sum (a few ulps of the value).
-  r.error = err + 4e-16 * std::abs(r.value);
-  r.pieces = static_cast<int>(pieces.size());
-  return r;
-}
-
 // The Schlick-weighted azimuthal integral. With v = |wi + wo|^2 = 2 + 2 wi.wo
 // and u = v + k (azimuthal.h: D = (alpha^2 / pi) v^2 / u^2, k = (alpha^2 - 1)
 // s^2 = -kappa), wo.h = sqrt(v) / 2, so over the azimuth both D and
@@ -355,7 +302,6 @@ struct AzimuthLadder {
     double s2[16];  // sin^2(psi / 2) at the nodes; the 16th pads (weight 0)
     double s2_start;  // sin^2(psi / 2) at the piece's start
   };
-  double ratio = 3;
   int levels = 0;
   Piece outer;              // [pi/2, pi]
   std::vector<Piece> ring;  // ring[j], j >= 1: [d_j, d_(j-1)]
@@ -523,6 +469,32 @@ AzimuthalDfgResult AdaptiveAzimuthalRule(const std::vector<double>& mesh, const 
   out.err_bias = err_b + 4e-16 * std::abs(out.bias);
   out.err_scale = err_s + 4e-16 * std::abs(out.e);
   out.pieces = static_cast<int>(pieces.size());
+  return out;
+}
+
+// GgxAzimuthalAlbedo's rule, AdaptiveAzimuthalRule with E alone (its
+// bias and scale claims then equal E's), with the integrand at a piece's 15
+// nodes from `eval(f, theta, out)` (f's operator() node by node for the
+// scalar reference; quadrature_simd.h's lanes).
+template <class Eval>
+AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces, const Eval& eval) {
+  const GgxAzimuthalE f(alpha, mu, masking);
+  const AzimuthalDfgResult r = AdaptiveAzimuthalRule(
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha),
+      [&](const double* theta, AzimuthalValues* out) {
+        double v[15];
+        eval(f, theta, v);
+        for (int i = 0; i < 15; ++i) {
+          out[i] = AzimuthalValues();
+          out[i].e = v[i];
+        }
+      },
+      tol, max_pieces);
+  AzimuthalResult out;
+  out.value = r.e;
+  out.error = r.err_e;
+  out.pieces = r.pieces;
   return out;
 }
 

@@ -474,7 +474,7 @@ AzimuthalResult AnisoAlbedoTexel(double alpha_x, double alpha_y, double mu, doub
 // (AnglesAt), Phi, G2 and the closed-form moments, the same operations as
 // the scalar reference, then the remainder node by node
 // (SimdRemainderNodes). The 16th lane repeats the first node.
-struct SimdGgxDfgNodes {
+struct SimdGgxNodes {
   AzimuthalFrame::FrameConsts fc;
   GgxAzimuthalE::DfgConsts gc;
 
@@ -593,14 +593,14 @@ AzimuthalResult GgxAlbedoTexel(double alpha, double mu, Masking masking, double 
   return GgxAzimuthalAlbedoWith(
       alpha, mu, masking, tol, max_pieces,
       [](const GgxAzimuthalE& f, const double* theta, double* out) {
-        SimdGgxDfgNodes{f.frame_consts(), f.dfg_consts()}.Albedo(theta, out);
+        SimdGgxNodes{f.frame_consts(), f.dfg_consts()}.Albedo(theta, out);
       });
 }
 
 AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double tol,
                                int max_pieces) {
   const GgxAzimuthalE f(alpha, mu, masking);
-  const SimdGgxDfgNodes nodes{f.frame_consts(), f.dfg_consts()};
+  const SimdGgxNodes nodes{f.frame_consts(), f.dfg_consts()};
   return AdaptiveAzimuthalRule(AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha), nodes, tol,
                                max_pieces);
 }
