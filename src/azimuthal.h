@@ -472,19 +472,18 @@ AzimuthalDfgResult AdaptiveAzimuthalRule(const std::vector<double>& mesh, const 
   return out;
 }
 
-// GgxAzimuthalAlbedo's rule, AdaptiveAzimuthalRule with E alone (its
-// bias and scale claims then equal E's), with the integrand at a piece's 15
-// nodes from `eval(f, theta, out)` (f's operator() node by node for the
-// scalar reference; quadrature_simd.h's lanes).
+// The albedo rule of the models whose azimuth is integrated in closed form
+// (no azimuthal error): AdaptiveAzimuthalRule with E alone (its bias and
+// scale claims then equal E's) on `mesh`, with the integrand at a piece's
+// 15 nodes from `eval(theta, out)`.
 template <class Eval>
-AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
-                                       int max_pieces, const Eval& eval) {
-  const GgxAzimuthalE f(alpha, mu, masking);
+AzimuthalResult AlbedoOnMesh(const std::vector<double>& mesh, double tol, int max_pieces,
+                             const Eval& eval) {
   const AzimuthalDfgResult r = AdaptiveAzimuthalRule(
-      AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha),
+      mesh,
       [&](const double* theta, AzimuthalValues* out) {
         double v[15];
-        eval(f, theta, v);
+        eval(theta, v);
         for (int i = 0; i < 15; ++i) {
           out[i] = AzimuthalValues();
           out[i].e = v[i];
@@ -496,6 +495,17 @@ AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking,
   out.error = r.err_e;
   out.pieces = r.pieces;
   return out;
+}
+
+// GgxAzimuthalAlbedo's rule, with the integrand at a piece's 15 nodes from
+// `eval(f, theta, out)` (f's operator() node by node for the scalar
+// reference; quadrature_simd.h's lanes).
+template <class Eval>
+AzimuthalResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
+                                       int max_pieces, const Eval& eval) {
+  const GgxAzimuthalE f(alpha, mu, masking);
+  return AlbedoOnMesh(AzimuthalMesh(f.theta_o(), f.lambda_o(), alpha), tol, max_pieces,
+                      [&](const double* theta, double* out) { eval(f, theta, out); });
 }
 
 template <class Nodes>

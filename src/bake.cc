@@ -275,6 +275,20 @@ TexelEstimate QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int
     return v;
   } else {
     const bool bias = spec.table == TableKind::kDfg;
+    // Beckmann's E (and the STD's at gamma = inf, which is Beckmann) with
+    // the azimuth in closed form (beckmann_azimuth.h).
+    bool beckmann = std::is_same_v<Ndf, BeckmannNdf<double>>;
+    if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) beckmann = std::isinf(ndf.gamma());
+    if (beckmann && !bias) {
+      const double a = ndf.alpha_x();
+      const AzimuthalResult r =
+          spec.simd ? SimdBeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
+                    : BeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes);
+      TexelEstimate v;
+      v.e = r.value;
+      v.err_e = r.error;
+      return v;
+    }
     return texel(spec.simd ? SimdSlopeAzimuthalDfg(ndf, m, spec.masking, bias, tol, max_nodes)
                            : SlopeAzimuthalDfg(ndf, m, spec.masking, bias, tol, max_nodes));
   }
@@ -377,6 +391,11 @@ std::string IntegratorJson(const BakeSpec& spec) {
   nlohmann::json j;
   const int n = spec.EffectiveSamples();
   j["method"] = IntegratorName(spec.integrator);
+  // Beckmann's E (and the STD's at gamma = inf) has its azimuth in closed form.
+  const bool beckmann_e = spec.table != TableKind::kDfg &&
+                          (spec.model.kind == ModelKind::kBeckmann ||
+                           (spec.model.kind == ModelKind::kStudentT && !spec.HasGammaAxis() &&
+                            spec.model.gamma >= kStudentTBeckmannLimitGamma));
   auto describe = [&](const char* domain, const char* rule, const char* error_estimate) {
     j["domain"] = domain;
     j["rule"] = rule;
@@ -417,10 +436,16 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "carried through the Kronrod weights");
         break;
       }
-      if (spec.model.kind == ModelKind::kGgx && spec.table != TableKind::kDfg) {
-        j["domain"] = "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
-                      "(isotropic GGX); mesh graded geometrically (ratio 3) from the specular "
-                      "peak (scale 2 alpha) and the horizon";
+      if ((spec.model.kind == ModelKind::kGgx && spec.table != TableKind::kDfg) || beckmann_e) {
+        j["domain"] = beckmann_e
+                          ? "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
+                            "(isotropic Beckmann: three moments of Kummer's function, by its "
+                            "series below x = 40 and its asymptotic expansion above, relative "
+                            "error 2e-15); mesh graded geometrically (ratio 3) from the specular "
+                            "peak (scale 2 alpha) and the horizon"
+                          : "theta_i in [0, pi/2], the azimuth of wi integrated in closed form "
+                            "(isotropic GGX); mesh graded geometrically (ratio 3) from the "
+                            "specular peak (scale 2 alpha) and the horizon";
         j["rule"] = "Gauss-Kronrod 15 per piece, pieces bisected worst first until the "
                     "summed error estimate meets the tolerance";
         j["error_estimate"] = "sum over the pieces of |K15 - G7|";
@@ -442,7 +467,13 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["domain"] = "theta_i in [0, pi/2], mesh graded geometrically (ratio 3) from the "
                     "specular peak and the horizon; Lambda(wi) once per theta_i; the azimuth "
                     "of D (and of D Fc for dfg) by Gauss-Kronrod 15 on pieces graded "
-                    "geometrically (ratio 2) from the lobe's half width";
+                    "geometrically from the lobe's half width (ratio 2; from tolerance 1e-7 "
+                    "up, 2e-7 for dfg, ratio 3 for std up to gamma 4 and 2.5 beyond)";
+      if (spec.model.kind == ModelKind::kStudentT && spec.HasGammaAxis() &&
+          spec.table != TableKind::kDfg) {
+        j["gamma_inf"] = "the last slice (beckmann) with the azimuth of wi in closed form "
+                         "(three moments of Kummer's function), relative error 2e-15";
+      }
       j["rule"] = "Gauss-Kronrod 15 per piece in theta_i, pieces bisected worst first until "
                   "the error estimates meet the tolerance";
       j["error_estimate"] = "sum over the pieces of |K15 - G7|, plus that of the azimuthal "

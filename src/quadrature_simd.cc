@@ -22,6 +22,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "simd/beckmann_azimuth_f64-inl.h"
 #include "simd/math_f64-inl.h"
 #if BRDFBAKE_WITH_STD
 #include "simd/std_f64-inl.h"
@@ -605,6 +606,69 @@ AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double 
                                max_pieces);
 }
 
+// BeckmannAzimuthalE::operator() at the 15 nodes of one theta_i piece in
+// lanes: the angles (AnglesAt), Lambda(wi), G2, the closed-form moments and
+// Phi, the same operations as the scalar reference. The 16th lane repeats
+// the first node.
+struct SimdBeckmannNodes {
+  AzimuthalFrame::FrameConsts fc;
+  BeckmannAzimuthalE::Consts bc;
+
+  void operator()(const double* theta, double* out) const {
+    using V = hn::Vec<DF64>;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double th[16], e[16];
+    for (int i = 0; i < 15; ++i) th[i] = theta[i];
+    th[15] = theta[0];
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
+            four = hn::Set(d, 4.0);
+    const V alpha = hn::Set(d, bc.alpha), a2 = hn::Set(d, bc.alpha * bc.alpha);
+    const V lambda_o = hn::Set(d, bc.lambda_o), scale = hn::Set(d, fc.scale);
+    const V s_o = hn::Set(d, fc.s_o), max_r2 = hn::Set(d, 706.0);
+    const V norm_c = hn::Set(d, 3.141592653589793 * (bc.alpha * bc.alpha) * 16);
+    for (size_t i = 0; i < 16; i += N) {
+      V sa, ca, st, ct, s_i, mu_i;
+      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
+      // a = cot(theta_i) / alpha: 0 (Lambda = inf) on the horizon.
+      const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
+      const V lambda_i = BeckmannLambdaF64(d, a);
+      const V g2 = bc.separable
+                       ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
+                       : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
+      const V w = hn::Mul(hn::Mul(scale, g2), s_i);
+      const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
+      const V cc = hn::IfThenElse(valid, hn::Mul(ca, ct), one);
+      const V two_b = hn::Mul(hn::Mul(four, s_i), s_o);
+      const V v_min = hn::Mul(hn::Mul(four, ca), ca);
+      const V r2_0 = hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct));
+      const V x = hn::Div(two_b, hn::Mul(hn::Mul(hn::Mul(four, a2), cc), cc));
+      V m0, m1, m2;
+      BeckmannAzimuthMomentsF64(d, x, &m0, &m1, &m2);
+      const V sum = hn::MulAdd(hn::Mul(two_b, two_b), m2,
+                               hn::Mul(hn::MulAdd(v_min, m0, hn::Mul(hn::Mul(two, two_b), m1)),
+                                       v_min));
+      const V cc2 = hn::Mul(cc, cc);
+      const V norm = hn::Div(two, hn::Mul(hn::Mul(norm_c, cc2), cc2));
+      // exp(-r2_0): 0 from 706 on (below the smallest normal double).
+      const V ex = hn::IfThenElseZero(hn::Lt(r2_0, max_r2),
+                                      hn::Exp(d, hn::Neg(hn::Min(r2_0, max_r2))));
+      const V v = hn::Mul(w, hn::Mul(hn::Mul(norm, ex), sum));
+      hn::Store(hn::IfThenElseZero(valid, v), d, e + i);
+    }
+    for (int i = 0; i < 15; ++i) out[i] = e[i];
+  }
+};
+
+AzimuthalResult BeckmannAlbedoTexel(double alpha, double mu, Masking masking, double tol,
+                                    int max_pieces) {
+  return BeckmannAzimuthalAlbedoWith(
+      alpha, mu, masking, tol, max_pieces,
+      [](const BeckmannAzimuthalE& f, const double* theta, double* out) {
+        SimdBeckmannNodes{f.frame_consts(), f.consts()}(theta, out);
+      });
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -631,6 +695,12 @@ HWY_EXPORT(GgxAlbedoTexel);
 AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces) {
   return HWY_DYNAMIC_DISPATCH(GgxAlbedoTexel)(alpha, mu, masking, tol, max_pieces);
+}
+
+HWY_EXPORT(BeckmannAlbedoTexel);
+AzimuthalResult SimdBeckmannAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
+                                            int max_pieces) {
+  return HWY_DYNAMIC_DISPATCH(BeckmannAlbedoTexel)(alpha, mu, masking, tol, max_pieces);
 }
 
 HWY_EXPORT(GgxDfgTexel);

@@ -19,6 +19,7 @@
 #include "brdfbake/targets.h"
 #include "azimuthal.h"
 #include "azimuthal_slope.h"
+#include "beckmann_azimuth.h"
 
 namespace brdfbake {
 
@@ -34,6 +35,11 @@ AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta
 // GgxAzimuthalAlbedo with each theta_i piece's 15 nodes in lanes.
 AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces);
+
+// BeckmannAzimuthalAlbedo with each theta_i piece's 15 nodes in lanes
+// (angles, Lambda, G2, the closed-form azimuthal moments).
+AzimuthalResult SimdBeckmannAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
+                                            int max_pieces);
 
 // GgxAzimuthalDfg with each theta_i piece's 15 nodes in lanes (angles, Phi,
 // G2, the closed-form moments) and then, node by node, the azimuthal
