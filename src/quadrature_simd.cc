@@ -8,6 +8,7 @@
 // piece's 16 nodes per loop.
 
 #include <cstring>
+#include <memory>
 #include <limits>
 #include <type_traits>
 
@@ -669,6 +670,113 @@ AzimuthalResult BeckmannAlbedoTexel(double alpha, double mu, Masking masking, do
       });
 }
 
+#if BRDFBAKE_WITH_STD
+// StdAzimuthalE::operator() at the 15 nodes of one theta_i piece in lanes:
+// the angles, Lambda(wi), G2, y and the tabulated moments (Clenshaw's
+// recurrence on each lane's own piece, its coefficients gathered), the same
+// operations as the scalar reference. The 16th lane repeats the first node.
+struct SimdStdNodes {
+  AzimuthalFrame::FrameConsts fc;
+  StdAzimuthalE::Consts sc;
+  const StdAzimuthMoments* moments;
+  const StudentTLambdaF64Consts* lc;
+
+  void operator()(const double* theta, double* out) const {
+    using T = StdAzimuthMoments;
+    using V = hn::Vec<DF64>;
+    const DF64 d;
+    const hn::RebindToSigned<DF64> di;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double th[16], e[16];
+    for (int i = 0; i < 15; ++i) th[i] = theta[i];
+    th[15] = theta[0];
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
+            four = hn::Set(d, 4.0);
+    const V alpha = hn::Set(d, sc.alpha), a2 = hn::Set(d, sc.alpha * sc.alpha);
+    const V lambda_o = hn::Set(d, sc.lambda_o), scale = hn::Set(d, fc.scale);
+    const V s_o = hn::Set(d, fc.s_o), gamma = hn::Set(d, sc.gamma);
+    const V gm1 = hn::Set(d, sc.gamma - 1), min_exp = hn::Set(d, -706.0);
+    const V norm_c = hn::Set(d, 3.141592653589793 * (sc.alpha * sc.alpha) * 16);
+    const double* coef = moments->coef();
+    const double* p = moments->p();
+    for (size_t i = 0; i < 16; i += N) {
+      V sa, ca, st, ct, s_i, mu_i;
+      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
+      const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
+      const V lambda_i = StudentTLambdaF64(d, *lc, a);
+      const V g2 = sc.separable
+                       ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
+                       : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
+      const V w = hn::Mul(hn::Mul(scale, g2), s_i);
+      const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
+      const V cc = hn::IfThenElse(valid, hn::Mul(ca, ct), one);
+      const V two_b = hn::Mul(hn::Mul(four, s_i), s_o);
+      const V v_min = hn::Mul(hn::Mul(four, ca), ca);
+      const V r2_0 = hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct));
+      const V l0 = hn::Log1p(d, hn::Div(r2_0, gm1));
+      const V y = hn::Mul(hn::Div(two_b, hn::Mul(hn::Mul(hn::Mul(hn::Mul(four, a2), cc), cc), gm1)),
+                          hn::Exp(d, hn::Neg(l0)));
+      // StdAzimuthMoments::At.
+      const V z = hn::Mul(gamma, y);
+      const V t = hn::Min(hn::Log1p(d, z), hn::Set(d, T::kMaxT));
+      const V piece_f =
+          hn::Min(hn::Floor(hn::Mul(t, hn::Set(d, 1 / T::kWidth))), hn::Set(d, T::kPieces - 1.0));
+      const V x = hn::Sub(hn::NegMulAdd(piece_f, hn::Set(d, T::kWidth), t), one);
+      const int degree = moments->degree();
+      const auto base = hn::Mul(hn::ConvertTo(di, piece_f), hn::Set(di, 3 * (degree + 1)));
+      const V inv = hn::Div(one, hn::Add(one, z)), r = hn::Sqrt(inv);
+      const V half_powers[3] = {r, hn::Mul(r, inv), hn::Mul(hn::Mul(r, inv), inv)};
+      const V x2 = hn::Add(x, x);
+      // Clenshaw's recurrence, the three chains interleaved, each lane's
+      // coefficients gathered.
+      V b1[3] = {zero, zero, zero}, b2[3] = {zero, zero, zero};
+      for (int j = degree; j >= 1; --j) {
+        for (int k = 0; k < 3; ++k) {
+          const V cj = hn::GatherIndex(d, coef + j * 3 + k, base);
+          const V b0 = hn::MulAdd(x2, b1[k], hn::Sub(cj, b2[k]));
+          b2[k] = b1[k];
+          b1[k] = b0;
+        }
+      }
+      V n[3];
+      for (int k = 0; k < 3; ++k) {
+        const V c0 = hn::GatherIndex(d, coef + k, base);
+        const V decay = p[k] < k + 0.5 ? hn::Exp(d, hn::Mul(hn::Set(d, -p[k]), t)) : half_powers[k];
+        n[k] = hn::Mul(hn::MulAdd(x, b1[k], hn::Sub(c0, b2[k])), decay);
+      }
+      const V sum = hn::MulAdd(hn::Mul(two_b, two_b), n[2],
+                               hn::Mul(hn::MulAdd(v_min, n[0], hn::Mul(hn::Mul(two, two_b), n[1])),
+                                       v_min));
+      const V cc2 = hn::Mul(cc, cc);
+      const V norm = hn::Div(two, hn::Mul(hn::Mul(norm_c, cc2), cc2));
+      const V arg = hn::Neg(hn::Mul(gamma, l0));
+      const V ex = hn::IfThenElseZero(hn::Gt(arg, min_exp), hn::Exp(d, hn::Max(arg, min_exp)));
+      const V v = hn::Mul(w, hn::Mul(hn::Mul(norm, ex), sum));
+      hn::Store(hn::IfThenElseZero(valid, v), d, e + i);
+    }
+    for (int i = 0; i < 15; ++i) out[i] = e[i];
+  }
+};
+
+AzimuthalResult StdAlbedoTexel(const StudentTNdf<double>& ndf, double mu, Masking masking,
+                               double tol, int max_pieces) {
+  // Lambda's constants (series coefficients, Gamma ratios: a few us), kept
+  // per thread for the last gamma.
+  thread_local double lc_gamma = std::numeric_limits<double>::quiet_NaN();
+  thread_local std::unique_ptr<StudentTLambdaF64Consts> lc_cached;
+  if (!(lc_gamma == ndf.gamma())) {
+    lc_cached = std::make_unique<StudentTLambdaF64Consts>(ndf.gamma());
+    lc_gamma = ndf.gamma();
+  }
+  const StudentTLambdaF64Consts& lc = *lc_cached;
+  return StdAzimuthalAlbedoWith(
+      ndf, mu, masking, tol, max_pieces,
+      [&](const StdAzimuthalE& f, const double* theta, double* out) {
+        SimdStdNodes{f.frame_consts(), f.consts(), &f.moments(), &lc}(theta, out);
+      });
+}
+#endif
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -702,6 +810,14 @@ AzimuthalResult SimdBeckmannAzimuthalAlbedo(double alpha, double mu, Masking mas
                                             int max_pieces) {
   return HWY_DYNAMIC_DISPATCH(BeckmannAlbedoTexel)(alpha, mu, masking, tol, max_pieces);
 }
+
+#if BRDFBAKE_WITH_STD
+HWY_EXPORT(StdAlbedoTexel);
+AzimuthalResult SimdStdAzimuthalAlbedo(const StudentTNdf<double>& ndf, double mu, Masking masking,
+                                       double tol, int max_pieces) {
+  return HWY_DYNAMIC_DISPATCH(StdAlbedoTexel)(ndf, mu, masking, tol, max_pieces);
+}
+#endif
 
 HWY_EXPORT(GgxDfgTexel);
 AzimuthalDfgResult SimdGgxAzimuthalDfg(double alpha, double mu, Masking masking, double tol,

@@ -20,6 +20,7 @@
 #include "azimuthal.h"
 #include "azimuthal_slope.h"
 #include "beckmann_azimuth.h"
+#include "std_azimuth.h"
 
 namespace brdfbake {
 
@@ -40,6 +41,13 @@ AzimuthalResult SimdGgxAzimuthalAlbedo(double alpha, double mu, Masking masking,
 // (angles, Lambda, G2, the closed-form azimuthal moments).
 AzimuthalResult SimdBeckmannAzimuthalAlbedo(double alpha, double mu, Masking masking, double tol,
                                             int max_pieces);
+
+#if BRDFBAKE_WITH_STD
+// StdAzimuthalAlbedo (finite gamma) with each theta_i piece's 15 nodes in
+// lanes (angles, Lambda, G2, the tabulated azimuthal moments).
+AzimuthalResult SimdStdAzimuthalAlbedo(const StudentTNdf<double>& ndf, double mu, Masking masking,
+                                       double tol, int max_pieces);
+#endif
 
 // GgxAzimuthalDfg with each theta_i piece's 15 nodes in lanes (angles, Phi,
 // G2, the closed-form moments) and then, node by node, the azimuthal

@@ -165,6 +165,12 @@ using ProgressFn = std::function<void(int64_t done, int64_t total)>;
 
 Table Bake(const BakeSpec& spec, const ProgressFn& progress = nullptr);
 
+// Bakes build some tables of their own once per process and keep them for
+// the next bakes: the STD's azimuthal moments per gamma (a few ms each).
+// This frees them, so that the next bake builds them again (benchmarks time
+// whole bakes this way). Not while a bake runs.
+void ReleaseBakeCaches();
+
 // One texel of the E / dfg tables with the spec's model, masking and
 // integrator: E, dfg.scale and dfg.bias at (roughness, mu), and the
 // integrator's own error estimate of each.
