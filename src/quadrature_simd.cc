@@ -673,8 +673,8 @@ AzimuthalResult BeckmannAlbedoTexel(double alpha, double mu, Masking masking, do
 #if BRDFBAKE_WITH_STD
 // StdAzimuthalE::operator() at the 15 nodes of one theta_i piece in lanes:
 // the angles, Lambda(wi), G2, y and the tabulated moments (Clenshaw's
-// recurrence on each lane's own piece, its coefficients gathered), the same
-// operations as the scalar reference. The 16th lane repeats the first node.
+// recurrence on each lane's own piece of the table), the same operations as
+// the scalar reference. The 16th lane repeats the first node.
 struct SimdStdNodes {
   AzimuthalFrame::FrameConsts fc;
   StdAzimuthalE::Consts sc;
@@ -685,7 +685,6 @@ struct SimdStdNodes {
     using T = StdAzimuthMoments;
     using V = hn::Vec<DF64>;
     const DF64 d;
-    const hn::RebindToSigned<DF64> di;
     const size_t N = hn::Lanes(d);
     HWY_ALIGN double th[16], e[16];
     for (int i = 0; i < 15; ++i) th[i] = theta[i];
@@ -723,26 +722,38 @@ struct SimdStdNodes {
           hn::Min(hn::Floor(hn::Mul(t, hn::Set(d, 1 / T::kWidth))), hn::Set(d, T::kPieces - 1.0));
       const V x = hn::Sub(hn::NegMulAdd(piece_f, hn::Set(d, T::kWidth), t), one);
       const int degree = moments->degree();
-      const auto base = hn::Mul(hn::ConvertTo(di, piece_f), hn::Set(di, 3 * (degree + 1)));
       const V inv = hn::Div(one, hn::Add(one, z)), r = hn::Sqrt(inv);
       const V half_powers[3] = {r, hn::Mul(r, inv), hn::Mul(hn::Mul(r, inv), inv)};
       const V x2 = hn::Add(x, x);
-      // Clenshaw's recurrence, the three chains interleaved, each lane's
-      // coefficients gathered.
-      V b1[3] = {zero, zero, zero}, b2[3] = {zero, zero, zero};
-      for (int j = degree; j >= 1; --j) {
+      // Clenshaw's recurrence, the three chains interleaved, once per
+      // distinct table piece among the lanes (the nodes of a theta_i piece
+      // mostly share one or two) with its coefficients broadcast, each lane
+      // taking the sums of its own piece: the same operations per lane as
+      // the scalar reference.
+      HWY_ALIGN double piece_of[HWY_MAX_BYTES / sizeof(double)];
+      hn::Store(piece_f, d, piece_of);
+      V n[3] = {zero, zero, zero};
+      auto todo = hn::Eq(piece_f, piece_f);
+      while (!hn::AllFalse(d, todo)) {
+        const double pc = piece_of[hn::FindFirstTrue(d, todo)];
+        const auto mine = hn::And(todo, hn::Eq(piece_f, hn::Set(d, pc)));
+        todo = hn::AndNot(mine, todo);
+        const double* c = coef + static_cast<size_t>(pc) * (degree + 1) * 3;
+        V b1[3] = {zero, zero, zero}, b2[3] = {zero, zero, zero};
+        for (int j = degree; j >= 1; --j) {
+          for (int k = 0; k < 3; ++k) {
+            const V b0 = hn::MulAdd(x2, b1[k], hn::Sub(hn::Set(d, c[j * 3 + k]), b2[k]));
+            b2[k] = b1[k];
+            b1[k] = b0;
+          }
+        }
         for (int k = 0; k < 3; ++k) {
-          const V cj = hn::GatherIndex(d, coef + j * 3 + k, base);
-          const V b0 = hn::MulAdd(x2, b1[k], hn::Sub(cj, b2[k]));
-          b2[k] = b1[k];
-          b1[k] = b0;
+          n[k] = hn::IfThenElse(mine, hn::MulAdd(x, b1[k], hn::Sub(hn::Set(d, c[k]), b2[k])), n[k]);
         }
       }
-      V n[3];
       for (int k = 0; k < 3; ++k) {
-        const V c0 = hn::GatherIndex(d, coef + k, base);
         const V decay = p[k] < k + 0.5 ? hn::Exp(d, hn::Mul(hn::Set(d, -p[k]), t)) : half_powers[k];
-        n[k] = hn::Mul(hn::MulAdd(x, b1[k], hn::Sub(c0, b2[k])), decay);
+        n[k] = hn::Mul(n[k], decay);
       }
       const V sum = hn::MulAdd(hn::Mul(two_b, two_b), n[2],
                                hn::Mul(hn::MulAdd(v_min, n[0], hn::Mul(hn::Mul(two, two_b), n[1])),

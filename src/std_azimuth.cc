@@ -40,6 +40,10 @@ void StdAzimuthMoments::Direct(double gamma, double y, double* n) {
   const auto& wt = boost::math::quadrature::gauss<double, 20>::weights();
   double s[3] = {0, 0, 0};
   for (size_t i = 0; i + 1 < pts.size(); ++i) {
+    // From where the integrand's factor (1 + y sin^2)^-gamma is below e^-745
+    // (0 in double; it decreases, and sin^2k <= 1) nothing is left.
+    const double s0 = std::sin(pts[i]);
+    if (gamma * std::log1p(y * s0 * s0) > 745) break;
     const double c = 0.5 * (pts[i] + pts[i + 1]), h = 0.5 * (pts[i + 1] - pts[i]);
     double p[3] = {0, 0, 0};
     for (size_t j = 0; j < x.size(); ++j) {
@@ -58,7 +62,10 @@ void StdAzimuthMoments::Direct(double gamma, double y, double* n) {
 }
 
 StdAzimuthMoments::StdAzimuthMoments(double gamma)
-    : gamma_(gamma), degree_(gamma <= 5 ? 20 : 30) {
+    : gamma_(gamma),
+      horizon_widen_(std::max(
+          1.0, 2 * 1e-9 * StudentTNdf<double>(1.0, 1.0, gamma).UnitLambda(1e-9))),
+      degree_(gamma <= 5 ? 20 : 30) {
   constexpr double kPi = 3.141592653589793;
   const int nodes = degree_ + 1;
   coef_.assign(size_t(kPieces) * nodes * 3, 0.0);

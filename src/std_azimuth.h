@@ -69,6 +69,8 @@ class StdAzimuthMoments {
   explicit StdAzimuthMoments(double gamma);
 
   double gamma() const { return gamma_; }
+  // SlopeAzimuthalE::horizon_widen of the STD at this gamma.
+  double horizon_widen() const { return horizon_widen_; }
   // The Chebyshev degree: 20 up to gamma 5, 30 beyond (see the header).
   int degree() const { return degree_; }
   const double* p() const { return p_; }
@@ -107,6 +109,7 @@ class StdAzimuthMoments {
 
  private:
   double gamma_;
+  double horizon_widen_;
   int degree_;
   double p_[3];
   std::vector<double> coef_;
@@ -136,8 +139,9 @@ class StdAzimuthalE : public AzimuthalFrame {
   double alpha() const { return alpha_; }
   const StdAzimuthMoments& moments() const { return *moments_; }
 
-  // The factor on the theta_i mesh's horizon scale: SlopeAzimuthalE's.
-  double horizon_widen() const { return std::max(1.0, 2 * 1e-9 * ndf_->UnitLambda(1e-9)); }
+  // The factor on the theta_i mesh's horizon scale: SlopeAzimuthalE's
+  // (kept with the table: a property of gamma).
+  double horizon_widen() const { return moments_->horizon_widen(); }
 
   // What operator() reads besides the frame, for its SIMD twin.
   struct Consts {

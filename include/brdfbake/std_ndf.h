@@ -150,15 +150,23 @@ using Wide = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
 // and an lgamma difference would cancel; beyond z = gamma - 1 = 1e8 the
 // asymptotic series Gamma(z + 1/2) / (Gamma(z) sqrt(z)) = 1 - 1/(8z)
 // + 1/(128z^2) + 5/(1024z^3) + O(z^-4) is exact to double precision.
+// Each thread keeps the last gamma's value: the Gamma ratio in long double
+// costs microseconds, and a bake constructs a model per texel at one gamma.
 template <typename W>
 W StudentTKt(W gamma) {
+  thread_local W last_gamma = std::numeric_limits<W>::quiet_NaN(), last_kt = W(0);
+  if (gamma == last_gamma) return last_kt;
   const W z = gamma - W(1);
+  W kt;
   if (z > W(1e8)) {
     const W iz = W(1) / z;
-    return (W(1) - iz * (W(1) / W(8) - iz * (W(1) / W(128) + iz * W(5) / W(1024)))) /
-           kSqrtPi<W>;
+    kt = (W(1) - iz * (W(1) / W(8) - iz * (W(1) / W(128) + iz * W(5) / W(1024)))) / kSqrtPi<W>;
+  } else {
+    kt = W(1) / (kSqrtPi<W> * std::sqrt(z) * boost::math::tgamma_delta_ratio(z, W(0.5)));
   }
-  return W(1) / (kSqrtPi<W> * std::sqrt(z) * boost::math::tgamma_delta_ratio(z, W(0.5)));
+  last_gamma = gamma;
+  last_kt = kt;
+  return kt;
 }
 
 // u = m^2 = a^2 / (gamma - 1) and expo = (gamma - 3/2) log(1 + u), so that
