@@ -98,7 +98,11 @@ BRDFBAKE_BAKE_BENCH(E/std_gamma30/simd, TableKind::kE, "std", 30, true)
     ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
 BRDFBAKE_BAKE_BENCH(E/std_gamma_inf/simd, TableKind::kE, "std", kInf, true)
     ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
+BRDFBAKE_BAKE_BENCH(E_avg/std_gamma1.501/simd, TableKind::kEavg, "std", 1.501, true)
+    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
 BRDFBAKE_BAKE_BENCH(E_avg/std_gamma3/simd, TableKind::kEavg, "std", 3, true)
+    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
+BRDFBAKE_BAKE_BENCH(E_avg/std_gamma30/simd, TableKind::kEavg, "std", 30, true)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
 // std over the gamma axis (1.501 to inf, tail warp): mu x roughness x gamma,
 // and E_avg over roughness x gamma.

@@ -1037,6 +1037,18 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                   spec.threads);
   }
+#if BRDFBAKE_WITH_STD
+  // The STD's azimuthal moment tables, built here with every thread (a
+  // texel that built one would hold the others waiting on its lock).
+  if (spec.model.kind == ModelKind::kStudentT &&
+      (spec.integrator == IntegratorKind::kQuadrature || spec.integrator == IntegratorKind::kEngine) &&
+      spec.table != TableKind::kDfg) {
+    for (const BakeSpec& s : slice_specs) {
+      const double g = StudentTNdf<double>(1.0, 1.0, s.model.gamma).gamma();
+      if (std::isfinite(g)) StdAzimuthMomentsFor(g);
+    }
+  }
+#endif
   std::atomic<int64_t> done{0};
   std::vector<double>& v0 = t.channels[0].values;
   if (sel) {
