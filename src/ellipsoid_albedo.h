@@ -30,10 +30,12 @@
 // slope plane where G2 has a kink.
 //
 // Rule (ellipsoid_albedo_rule.h): along each ray Gauss-Kronrod 15 in
-// x = sqrt(u), cut where the ray crosses the clamp's edge (the roots of a
-// quartic in rho), graded by 4 towards the ends that are horizon crossings
-// down to the width of G2's rise there, the worst piece bisected until the
-// ray meets a fifth of the tolerance. Over psi, Gauss-Kronrod 15 on
+// x = sqrt(u), each half of the ray that ends at a horizon crossing in
+// tau = log1p(offset / c), c the width of G2's rise there (the map cancels
+// G2's nearby pole, so one piece per 3 in tau replaces a geometric grading
+// down to c), cut where the ray crosses the clamp's edge (the roots of a
+// quartic in rho), the worst piece bisected until the ray meets a fifth of
+// the tolerance. Over psi, Gauss-Kronrod 15 on
 // segments: quarter turns from the rays where d.e = 0 when s0 is inside
 // the disk, or the range between the two rays tangent to it when s0 is
 // outside; each split again at the rays tangent to the clamp's edge. At a

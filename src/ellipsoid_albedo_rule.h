@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // The slope-plane rule of ellipsoid_albedo.h as a template over its node
-// evaluator: `Nodes` integrates n pieces [a_j, b_j] of a ray in the signed
-// offset (>= 0: y = x_hi - x; <= 0: -(x - x_lo)), given the ray's length
-// len in x = sqrt(u), returning each one's Kronrod 15 and Gauss 7 sums
-// (weights on [-1, 1], without the half width) of EllipsoidRay::Eval.
+// evaluator: `Nodes` integrates n pieces [a_j, b_j] of a ray in its signed
+// piece coordinate (EllipsoidRay::At), returning each one's Kronrod 15 and
+// Gauss 7 sums (weights on [-1, 1], without the half width) of
+// EllipsoidRay::Eval times the map's Jacobian.
 // ScalarEllipsoidNodes is the double reference; quadrature_simd.cc
 // evaluates the 15 nodes in lanes.
 
@@ -23,16 +23,15 @@
 
 namespace brdfbake {
 
-// Initial grading of a ray's halves towards horizon ends (ratio 4): at
-// least this many levels, and down to G2's layer there; the adaptive
-// bisection refines from there.
-inline constexpr int kEllipsoidRayLevels = 1;
-// The most pieces a ray is cut into, and the most grading levels (ratio 4)
-// towards a horizon end, where G2's layer is narrow.
+// The most pieces a ray is cut into.
 inline constexpr int kMaxRayPieces = 96;
-inline constexpr int kMaxRayLevels = 20;
-// Where along the ray's half (as a fraction) the layer's width is probed.
+// Where along the ray's half (as a fraction) the width of G2's rise at a
+// horizon end is probed.
 inline constexpr double kLayerProbe = 1e-3;
+// The widest initial piece in the mapped variable tau of a ray's half
+// (EllipsoidRay): exp(tau) over a width of 3 is integrated by Kronrod 15
+// to ~1e-14 of its mass.
+inline constexpr double kMappedPieceWidth = 3;
 // Points on G1's clamp edge probed for the rays tangent to it.
 inline constexpr int kClampProbes = 64;
 
@@ -85,6 +84,25 @@ class EllipsoidRay {
     x_lo_ = lo * std::sqrt(omx2_lo_);
     x_hi_ = rho_plus_ * std::sqrt(omx2_hi_);
     valid_ = x_hi_ > x_lo_;
+    if (!valid_) return;
+    len_ = x_hi_ - x_lo_;
+    mid_ = 0.5 * len_;
+    // At y = -omx2_hi / (2 x_hi) (x = 1, rho infinite) rho has a branch
+    // point, which a grazing view (rho_+ huge) brings close to the upper
+    // end: the map's scale is kept below its distance too.
+    c_hi_ = std::min(RiseWidth(mid_, false), 0.5 * omx2_hi_ / x_hi_);
+    if (lo_edge_) c_lo_ = RiseWidth(len_ - mid_, true);
+  }
+
+  // The ray's point at the signed piece coordinate o (Integrate): its
+  // offsets y = x_hi - x and t = x - x_lo, and |dx/do|.
+  void At(double o, double* y, double* t, double* jac) const {
+    const bool upper = o >= 0;
+    const double tau = std::abs(o), c = upper ? c_hi_ : c_lo_;
+    const double off = c > 0 ? c * std::expm1(tau) : tau;
+    *jac = c > 0 ? off + c : 1;
+    *y = upper ? off : len_ - off;
+    *t = upper ? len_ - off : off;
   }
 
   // The integral over x = sqrt(u) in [x_lo, x_hi] of G2 (1 + s.c) 2 x, and
@@ -93,45 +111,26 @@ class EllipsoidRay {
   void Integrate(const Nodes& nodes, double* value, double* error) const {
     *value = *error = 0;
     if (!valid_) return;
-    const double len = x_hi_ - x_lo_, mid = 0.5 * len;
-    // Pieces in signed offsets: y = x_hi - x >= 0 on the upper half (graded
-    // towards y = 0) and -t = -(x - x_lo) <= 0 on the lower half (graded
-    // towards t = 0 where that end is a horizon crossing). Their ends are
-    // laid out first and all the pieces evaluated in one call, so that the
-    // node evaluator has independent work for its lanes.
+    // Pieces in signed coordinates o (At): o >= 0 on the upper half, where
+    // y = x_hi - x, and o <= 0 on the lower half, where t = x - x_lo; in
+    // tau (y or t = c expm1(tau), RiseWidth) towards a horizon end, else
+    // the offset itself. Their ends are laid out first and all the pieces
+    // evaluated in one call, so that the node evaluator has independent
+    // work for its lanes.
     double a[kMaxRayPieces], b[kMaxRayPieces];
     int n = 0;
-    // G2 rises from 0 at a horizon end over a layer where Lambda(wi) ~ C /
-    // wi.z, wi.z ~ K y, falls to 1 + Lambda(wo) (1 if separable): its width
-    // is y Lambda(wi(y)) / (1 + Lambda(wo)) for any small offset y, taken
-    // at y = kLayerProbe times the half. Thin lobes make it narrow; the
-    // grading goes down to it, or nodes would step over the rise.
-    const double scale = f_.separable ? 1.0 : 1 + f_.lambda_o;
-    auto layer = [&](double y, double t, double offset) {
-      Vec3<double> wi;
-      double lin;
-      if (!WiAt(y, t, &wi, &lin)) return 0.0;
-      return offset * f_.ndf.Lambda(wi) / scale;
-    };
-    auto graded = [&](double top, bool toward_zero, bool from_lo) {
-      double width = 0;
-      if (toward_zero) {
-        const double o = kLayerProbe * top;
-        width = from_lo ? layer(len - o, o, o) : layer(o, len - o, o);
+    auto half = [&](double top, double c, bool lower) {
+      const double span = c > 0 ? std::log1p(top / c) : top;
+      const int m =
+          c > 0 ? std::clamp(static_cast<int>(std::ceil(span / kMappedPieceWidth)), 1, 16) : 1;
+      for (int k = 0; k < m; ++k) {
+        const double u0 = span * k / m, u1 = k + 1 == m ? span : span * (k + 1) / m;
+        a[n] = lower ? -u1 : u0;
+        b[n++] = lower ? -u0 : u1;
       }
-      double hi = top;
-      for (int k = 0; toward_zero && k < kMaxRayLevels && (k < kEllipsoidRayLevels || hi > width);
-           ++k) {
-        const double lo = 0.25 * hi;
-        a[n] = from_lo ? -hi : lo;
-        b[n++] = from_lo ? -lo : hi;
-        hi = lo;
-      }
-      a[n] = from_lo ? -hi : 0.0;
-      b[n++] = from_lo ? 0.0 : hi;
     };
-    graded(mid, true, false);
-    graded(len - mid, lo_edge_, true);
+    half(mid_, c_hi_, false);
+    half(len_ - mid_, c_lo_, true);
     // Where G1(wi)'s clamp turns on or off along the ray, G2 has a kink:
     // the piece holding it is split there.
     double kinks[kMaxPolyDegree];
@@ -139,7 +138,10 @@ class EllipsoidRay {
     for (int i = 0; i < n_kinks; ++i) {
       const double xc = kinks[i] / std::sqrt(1 + kinks[i] * kinks[i]);
       if (!(xc > x_lo_ && xc < x_hi_)) continue;
-      const double o = xc >= x_lo_ + (len - mid) ? x_hi_ - xc : -(xc - x_lo_);
+      const bool upper = xc >= x_lo_ + (len_ - mid_);
+      const double off = upper ? x_hi_ - xc : xc - x_lo_, c = upper ? c_hi_ : c_lo_;
+      const double tau = c > 0 ? std::log1p(off / c) : off;
+      const double o = upper ? tau : -tau;
       for (int j = 0; j < n; ++j) {
         if (a[j] < o && o < b[j]) {
           a[n] = o;
@@ -152,7 +154,7 @@ class EllipsoidRay {
     EllipsoidRayPiece pieces[kMaxRayPieces];
     auto evaluate = [&](int first, int count) {
       double k[kMaxRayPieces], g[kMaxRayPieces];
-      nodes(*this, a + first, b + first, count, len, k, g);
+      nodes(*this, a + first, b + first, count, k, g);
       for (int j = first; j < first + count; ++j) {
         const double h = 0.5 * (b[j] - a[j]);
         pieces[j] = EllipsoidRayPiece{a[j], b[j], k[j - first] * h,
@@ -178,7 +180,7 @@ class EllipsoidRay {
       a[worst] = pieces[worst].a;
       // Evaluate the two (not adjacent in the arrays) as one batch.
       double pa[2] = {a[worst], a[n]}, pb[2] = {b[worst], b[n]}, k[2], g[2];
-      nodes(*this, pa, pb, 2, len, k, g);
+      nodes(*this, pa, pb, 2, k, g);
       for (int s = 0; s < 2; ++s) {
         const int j = s == 0 ? worst : n;
         const double h = 0.5 * (pb[s] - pa[s]);
@@ -188,6 +190,26 @@ class EllipsoidRay {
     }
     for (int j = 0; j < n; ++j) *value += pieces[j].value;
     *error = sum_err();
+  }
+
+  // The scale c of the map towards a horizon end of the ray, on a half of
+  // length `top` (the lower half if `lower`). G2 rises from 0 there over a
+  // layer: wi.z ~ K y, Lambda(wi) ~ A / y, so G2 ~ y / (y + c) with
+  // c = A / (1 + Lambda(wo)) (A if separable), a pole at y = -c, which
+  // thin lobes bring close to the end. In tau, y = c expm1(tau), dy =
+  // (y + c) dtau cancels it: the integrand is smooth over [0, log1p(top /
+  // c)] however narrow the layer. c is measured at y = kLayerProbe top
+  // (where A has barely moved) and halved: a pole at y = -c' with c' > c
+  // sits at Im(tau) = pi, out of the way, while c' < c would bring it to
+  // tau = log(1 - c'/c) < 0, towards the piece. 0 (no map) where the
+  // probe fails.
+  double RiseWidth(double top, bool lower) const {
+    const double o = kLayerProbe * top;
+    Vec3<double> wi;
+    double lin;
+    if (!(lower ? WiAt(len_ - o, o, &wi, &lin) : WiAt(o, len_ - o, &wi, &lin))) return 0;
+    const double scale = f_.separable ? 1.0 : 1 + f_.lambda_o;
+    return 0.5 * o * f_.ndf.Lambda(wi) / scale;
   }
 
   // The rho in (max(0, rho_-), rho_+), ascending, where G1(wi)'s clamp
@@ -272,21 +294,22 @@ class EllipsoidRay {
   double psi_;
   double ex_ = 0, ey_ = 0, ee_ = 0;
   double rho_minus_ = 0, rho_plus_ = 0, x_lo_ = 0, x_hi_ = 0, omx2_lo_ = 1, omx2_hi_ = 1;
+  double len_ = 0, mid_ = 0;    // x_hi - x_lo, and where the halves meet
+  double c_hi_ = 0, c_lo_ = 0;  // RiseWidth of the upper and lower half (0: no map)
   bool lo_edge_ = false, valid_ = false;
 };
 
 struct ScalarEllipsoidNodes {
-  void operator()(const EllipsoidRay& ray, const double* a, const double* b, int n, double len,
-                  double* k, double* g) const {
+  void operator()(const EllipsoidRay& ray, const double* a, const double* b, int n, double* k,
+                  double* g) const {
     const KronrodRule& r = Kronrod15();
     for (int j = 0; j < n; ++j) {
       const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
       k[j] = g[j] = 0;
       for (int i = 0; i < 15; ++i) {
-        const double o = c + h * r.x[i];
-        const double y = o >= 0 ? o : len + o;   // x_hi - x
-        const double t = o >= 0 ? len - o : -o;  // x - x_lo
-        const double v = ray.Eval(y, t);
+        double y, t, jac;
+        ray.At(c + h * r.x[i], &y, &t, &jac);
+        const double v = ray.Eval(y, t) * jac;
         k[j] += r.wk[i] * v;
         g[j] += r.wg[i] * v;
       }

@@ -354,19 +354,21 @@ struct SimdAnisoNodes {
 };
 
 // One piece of an ellipsoid ray (ellipsoid_albedo_rule.h,
-// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::WiAt and
-// the ellipsoid's Lambda (ellipsoid.h), with both sides of each branch
-// computed and selected per lane.
+// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::At,
+// EllipsoidRay::WiAt and the ellipsoid's Lambda (ellipsoid.h), with both
+// sides of each branch computed and selected per lane (hn::Expm1, 4 ulp,
+// for std::expm1 in the map).
 struct SimdEllipsoidNodes {
-  void operator()(const EllipsoidRay &ray, const double *a, const double *b, int n, double len,
-                  double *k, double *g) const {
+  void operator()(const EllipsoidRay &ray, const double *a, const double *b, int n, double *k,
+                  double *g) const {
     using V = hn::Vec<DF64>;
     static const SimdAnisoNodes::Rule rule;
     const EllipsoidFrame &f = ray.f_;
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V lenv = hn::Set(d, len);
+    const V lenv = hn::Set(d, ray.len_);
+    const V c_hi = hn::Set(d, ray.c_hi_), c_lo = hn::Set(d, ray.c_lo_);
     const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
     const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
     const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
@@ -394,8 +396,12 @@ struct SimdEllipsoidNodes {
       for (size_t i = 0; i < 16; i += N) {
         const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
         const auto upper = hn::Ge(o, zero);
-        const V y = hn::IfThenElse(upper, o, hn::Add(lenv, o));           // x_hi - x
-        const V t = hn::IfThenElse(upper, hn::Sub(lenv, o), hn::Neg(o));  // x - x_lo
+        const V tau = hn::Abs(o), c = hn::IfThenElse(upper, c_hi, c_lo);
+        const auto mapped = hn::Gt(c, zero);
+        const V off = hn::IfThenElse(mapped, hn::Mul(c, hn::Expm1(d, tau)), tau);
+        const V jac = hn::IfThenElse(mapped, hn::Add(off, c), one);
+        const V y = hn::IfThenElse(upper, off, hn::Sub(lenv, off));  // x_hi - x
+        const V t = hn::IfThenElse(upper, hn::Sub(lenv, off), off);  // x - x_lo
         const V x = hn::Sub(x_hi, y);
         const V omx2 =
             hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
@@ -447,7 +453,8 @@ struct SimdEllipsoidNodes {
         const V g2 = f.separable
                          ? hn::Div(hn::Mul(g1o, wiz_dd), hn::Max(hn::Add(wiz_dd, nn_scale), tiny))
                          : hn::Div(wiz_dd, hn::Max(hn::MulAdd(lambda_o1, wiz_dd, nn_scale), tiny));
-        const V v = hn::IfThenElseZero(ok, hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)));
+        const V v =
+            hn::IfThenElseZero(ok, hn::Mul(hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)), jac));
         ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
         gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
       }
