@@ -38,22 +38,35 @@ struct GkPiece {
   double a = 0, b = 0, value = 0, err = 0, prop = 0;
 };
 
-// Gauss-Kronrod 15 of f on [a, b] times `scale`; f(x, &inner_err) returns
-// the integrand and the error of its own (inner) evaluation.
+// Gauss-Kronrod 15 on [a, b] times `scale` of a batch integrand:
+// f(x, v, e) fills v[i] and e[i], the integrand at the 15 nodes x[i] and
+// the errors of its own (inner) evaluation there.
 template <class F>
-GkPiece KronrodPiece(double a, double b, double scale, const F& f) {
+GkPiece KronrodPieceBatch(double a, double b, double scale, const F& f) {
   const KronrodRule& r = Kronrod15();
   const double c = 0.5 * (a + b), h = 0.5 * (b - a);
+  double x[15], v[15], e[15];
+  for (int i = 0; i < 15; ++i) x[i] = c + h * r.x[i];
+  f(x, v, e);
   double k = 0, g = 0, prop = 0;
   for (int i = 0; i < 15; ++i) {
-    double e = 0;
-    const double v = f(c + h * r.x[i], &e);
-    k += r.wk[i] * v;
-    g += r.wg[i] * v;
-    prop += r.wk[i] * e;
+    k += r.wk[i] * v[i];
+    g += r.wg[i] * v[i];
+    prop += r.wk[i] * e[i];
   }
   const double s = h * scale;
   return GkPiece{a, b, k * s, std::abs(k - g) * s, prop * s};
+}
+
+// The same for f(x, &inner_err) returning the integrand at one point.
+template <class F>
+GkPiece KronrodPiece(double a, double b, double scale, const F& f) {
+  return KronrodPieceBatch(a, b, scale, [&](const double* x, double* v, double* e) {
+    for (int i = 0; i < 15; ++i) {
+      e[i] = 0;
+      v[i] = f(x[i], &e[i]);
+    }
+  });
 }
 
 // Replaces the piece with the largest `err` by its two halves, made by
@@ -138,8 +151,9 @@ struct PsiSegment {
   double feature_a = 0, feature_b = 0;
 };
 
-// The sum over `segments` of the integral of ray(psi, &err) / (2 pi) over
-// each: Gauss-Kronrod 15 in t in [0, 1] with psi = a + (b - a) m(t), where
+// The sum over `segments` of the integral of the ray integral / (2 pi)
+// over each, rays(psi, n, value, err) giving it at n angles psi[i] at once
+// (value[i], and its error err[i]): Gauss-Kronrod 15 in t in [0, 1] with psi = a + (b - a) m(t), where
 // m(t) = t (no singular end), t^2 (only a), 1 - (1 - t)^2 (only b) or
 // t^2 (3 - 2 t) (both); each segment starts with one piece per quarter
 // turn (at least one) plus geometric grading (ratio 8, measured to need
@@ -153,8 +167,8 @@ struct PsiSegment {
 // 6.8e-9; one bisection brings the true error to 1e-14); the factor costs
 // 4.5% more rays over that material's 64x64 table.
 inline constexpr double kSegmentErrorSafety = 3;
-template <class Ray>
-AzimuthalResult SegmentRule(const Ray& ray, const std::vector<PsiSegment>& segments, double tol,
+template <class Rays>
+AzimuthalResult SegmentRule(const Rays& rays, const std::vector<PsiSegment>& segments, double tol,
                             int max_pieces) {
   constexpr double kTwoPi = 2 * kPi<double>;
   struct Piece : GkPiece {
@@ -164,29 +178,35 @@ AzimuthalResult SegmentRule(const Ray& ray, const std::vector<PsiSegment>& segme
     const PsiSegment& g = segments[s];
     const double w = g.b - g.a;
     const int kind = (g.singular_a ? 1 : 0) + (g.singular_b ? 2 : 0);
-    auto f = [&](double t, double* err) {
-      double m, dm;
-      switch (kind) {
-        case 0:
-          m = t, dm = 1;
-          break;
-        case 1:
-          m = t * t, dm = 2 * t;
-          break;
-        case 2:
-          m = 1 - (1 - t) * (1 - t), dm = 2 * (1 - t);
-          break;
-        default:
-          m = t * t * (3 - 2 * t), dm = 6 * t * (1 - t);
-          break;
+    auto f = [&](const double* t, double* v, double* e) {
+      double psi[15], jac[15];
+      for (int i = 0; i < 15; ++i) {
+        double m, dm;
+        switch (kind) {
+          case 0:
+            m = t[i], dm = 1;
+            break;
+          case 1:
+            m = t[i] * t[i], dm = 2 * t[i];
+            break;
+          case 2:
+            m = 1 - (1 - t[i]) * (1 - t[i]), dm = 2 * (1 - t[i]);
+            break;
+          default:
+            m = t[i] * t[i] * (3 - 2 * t[i]), dm = 6 * t[i] * (1 - t[i]);
+            break;
+        }
+        jac[i] = w * dm;
+        psi[i] = g.a + w * m;
       }
-      const double jac = w * dm;
-      const double v = ray(g.a + w * m, err) * jac;
-      *err *= jac;
-      return v;
+      rays(psi, 15, v, e);
+      for (int i = 0; i < 15; ++i) {
+        v[i] *= jac[i];
+        e[i] *= jac[i];
+      }
     };
     Piece p;
-    static_cast<GkPiece&>(p) = KronrodPiece(t0, t1, 1 / kTwoPi, f);
+    static_cast<GkPiece&>(p) = KronrodPieceBatch(t0, t1, 1 / kTwoPi, f);
     p.err *= kSegmentErrorSafety;
     p.segment = s;
     return p;

@@ -802,7 +802,13 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
     g.singular_b = is_cut(g.b);
     segments.push_back(g);
   }
-  const AzimuthalResult res = SegmentRule(weighted_average, segments, tol, 64);
+  auto averages = [&](const double* s, int n, double* value, double* err) {
+    for (int i = 0; i < n; ++i) {
+      err[i] = 0;
+      value[i] = weighted_average(s[i], &err[i]);
+    }
+  };
+  const AzimuthalResult res = SegmentRule(averages, segments, tol, 64);
   return {res.value, res.error};
 }
 

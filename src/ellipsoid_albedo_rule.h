@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // The slope-plane rule of ellipsoid_albedo.h as a template over its node
-// evaluator: `Nodes` integrates n pieces [a_j, b_j] of a ray in its signed
-// piece coordinate (EllipsoidRay::At), returning each one's Kronrod 15 and
+// evaluator: `Nodes` integrates n pieces [a_j, b_j], piece j on the ray
+// rays[j], in the signed piece coordinate (EllipsoidRay::At), returning
+// each one's Kronrod 15 and
 // Gauss 7 sums (weights on [-1, 1], without the half width) of
 // EllipsoidRay::Eval times the map's Jacobian.
 // ScalarEllipsoidNodes is the double reference; quadrature_simd.cc
@@ -32,6 +33,9 @@ inline constexpr double kLayerProbe = 1e-3;
 // (EllipsoidRay): exp(tau) over a width of 3 is integrated by Kronrod 15
 // to ~1e-14 of its mass.
 inline constexpr double kMappedPieceWidth = 3;
+// The most initial pieces of a mapped half (a span of 48 in tau: c down
+// to 1e-21 of the half).
+inline constexpr int kMaxHalfPieces = 16;
 // Points on G1's clamp edge probed for the rays tangent to it.
 inline constexpr int kClampProbes = 64;
 
@@ -105,24 +109,22 @@ class EllipsoidRay {
     *t = upper ? len_ - off : off;
   }
 
-  // The integral over x = sqrt(u) in [x_lo, x_hi] of G2 (1 + s.c) 2 x, and
-  // its error estimate.
-  template <class Nodes>
-  void Integrate(const Nodes& nodes, double* value, double* error) const {
-    *value = *error = 0;
-    if (!valid_) return;
+  bool valid() const { return valid_; }
+
+  // The initial pieces [a_j, b_j] of the integral over x = sqrt(u) in
+  // [x_lo, x_hi] of G2 (1 + s.c) 2 x (IntegrateRays); returns their count,
+  // at most 2 * kMaxHalfPieces + kMaxPolyDegree.
+  int Layout(double* a, double* b) const {
     // Pieces in signed coordinates o (At): o >= 0 on the upper half, where
     // y = x_hi - x, and o <= 0 on the lower half, where t = x - x_lo; in
     // tau (y or t = c expm1(tau), RiseWidth) towards a horizon end, else
-    // the offset itself. Their ends are laid out first and all the pieces
-    // evaluated in one call, so that the node evaluator has independent
-    // work for its lanes.
-    double a[kMaxRayPieces], b[kMaxRayPieces];
+    // the offset itself.
     int n = 0;
     auto half = [&](double top, double c, bool lower) {
       const double span = c > 0 ? std::log1p(top / c) : top;
-      const int m =
-          c > 0 ? std::clamp(static_cast<int>(std::ceil(span / kMappedPieceWidth)), 1, 16) : 1;
+      const int m = c > 0 ? std::clamp(static_cast<int>(std::ceil(span / kMappedPieceWidth)), 1,
+                                       kMaxHalfPieces)
+                          : 1;
       for (int k = 0; k < m; ++k) {
         const double u0 = span * k / m, u1 = k + 1 == m ? span : span * (k + 1) / m;
         a[n] = lower ? -u1 : u0;
@@ -151,45 +153,7 @@ class EllipsoidRay {
         }
       }
     }
-    EllipsoidRayPiece pieces[kMaxRayPieces];
-    auto evaluate = [&](int first, int count) {
-      double k[kMaxRayPieces], g[kMaxRayPieces];
-      nodes(*this, a + first, b + first, count, k, g);
-      for (int j = first; j < first + count; ++j) {
-        const double h = 0.5 * (b[j] - a[j]);
-        pieces[j] = EllipsoidRayPiece{a[j], b[j], k[j - first] * h,
-                                      std::abs(k[j - first] - g[j - first]) * h};
-      }
-    };
-    evaluate(0, n);
-    auto sum_err = [&] {
-      double e = 0;
-      for (int j = 0; j < n; ++j) e += pieces[j].err;
-      return e;
-    };
-    while (sum_err() > f_.ray_tol && n + 1 < kMaxRayPieces) {
-      int worst = 0;
-      for (int j = 1; j < n; ++j) {
-        if (pieces[j].err > pieces[worst].err) worst = j;
-      }
-      // The worst piece's halves: its left in its slot, its right appended.
-      const double m = 0.5 * (pieces[worst].a + pieces[worst].b);
-      a[n] = m;
-      b[n] = pieces[worst].b;
-      b[worst] = m;
-      a[worst] = pieces[worst].a;
-      // Evaluate the two (not adjacent in the arrays) as one batch.
-      double pa[2] = {a[worst], a[n]}, pb[2] = {b[worst], b[n]}, k[2], g[2];
-      nodes(*this, pa, pb, 2, k, g);
-      for (int s = 0; s < 2; ++s) {
-        const int j = s == 0 ? worst : n;
-        const double h = 0.5 * (pb[s] - pa[s]);
-        pieces[j] = EllipsoidRayPiece{pa[s], pb[s], k[s] * h, std::abs(k[s] - g[s]) * h};
-      }
-      ++n;
-    }
-    for (int j = 0; j < n; ++j) *value += pieces[j].value;
-    *error = sum_err();
+    return n;
   }
 
   // The scale c of the map towards a horizon end of the ray, on a half of
@@ -300,10 +264,11 @@ class EllipsoidRay {
 };
 
 struct ScalarEllipsoidNodes {
-  void operator()(const EllipsoidRay& ray, const double* a, const double* b, int n, double* k,
-                  double* g) const {
+  void operator()(const EllipsoidRay* const* rays, const double* a, const double* b, int n,
+                  double* k, double* g) const {
     const KronrodRule& r = Kronrod15();
     for (int j = 0; j < n; ++j) {
+      const EllipsoidRay& ray = *rays[j];
       const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
       k[j] = g[j] = 0;
       for (int i = 0; i < 15; ++i) {
@@ -316,6 +281,89 @@ struct ScalarEllipsoidNodes {
     }
   }
 };
+
+// The integrals along rays[0..count) (EllipsoidRay::Layout) and their
+// error estimates: each ray's pieces bisected, worst first, until their
+// |K15 - G7| sum meets f.ray_tol. The rays advance together, so that every
+// call of `nodes` (the initial pieces of all the rays, then one bisection
+// of each unfinished ray per round) gives its lanes independent work; each
+// ray's pieces, and so its value, are those of integrating it alone.
+template <class Nodes>
+void IntegrateRays(const EllipsoidRay* rays, int count, const Nodes& nodes, double* value,
+                   double* error) {
+  struct RayPieces {
+    int n = 0;
+    EllipsoidRayPiece p[kMaxRayPieces];
+  };
+  thread_local std::vector<RayPieces> work;
+  thread_local std::vector<const EllipsoidRay*> owner;
+  thread_local std::vector<int> slot;
+  thread_local std::vector<double> a, b, k, g;
+  if (static_cast<int>(work.size()) < count) work.resize(count);
+  const size_t most = static_cast<size_t>(count) * kMaxRayPieces;
+  if (owner.size() < most) {
+    owner.resize(most);
+    slot.resize(most);
+    a.resize(most);
+    b.resize(most);
+    k.resize(most);
+    g.resize(most);
+  }
+  // Evaluates the m queued pieces and stores them in their slots
+  // (ray * kMaxRayPieces + piece).
+  auto evaluate = [&](int m) {
+    nodes(owner.data(), a.data(), b.data(), m, k.data(), g.data());
+    for (int q = 0; q < m; ++q) {
+      const double h = 0.5 * (b[q] - a[q]);
+      work[slot[q] / kMaxRayPieces].p[slot[q] % kMaxRayPieces] =
+          EllipsoidRayPiece{a[q], b[q], k[q] * h, std::abs(k[q] - g[q]) * h};
+    }
+  };
+  int m = 0;
+  for (int r = 0; r < count; ++r) {
+    work[r].n = 0;
+    if (!rays[r].valid()) continue;
+    const int n = rays[r].Layout(a.data() + m, b.data() + m);
+    for (int j = 0; j < n; ++j) {
+      owner[m + j] = &rays[r];
+      slot[m + j] = r * kMaxRayPieces + j;
+    }
+    work[r].n = n;
+    m += n;
+  }
+  if (m > 0) evaluate(m);
+  auto sum_err = [&](int r) {
+    double e = 0;
+    for (int j = 0; j < work[r].n; ++j) e += work[r].p[j].err;
+    return e;
+  };
+  const double ray_tol = count > 0 ? rays[0].f_.ray_tol : 0;
+  for (;;) {
+    m = 0;
+    for (int r = 0; r < count; ++r) {
+      RayPieces& w = work[r];
+      if (w.n == 0 || !(sum_err(r) > ray_tol) || w.n + 1 >= kMaxRayPieces) continue;
+      int worst = 0;
+      for (int j = 1; j < w.n; ++j) {
+        if (w.p[j].err > w.p[worst].err) worst = j;
+      }
+      // The worst piece's halves: its left in its slot, its right appended.
+      const double pa = w.p[worst].a, pb = w.p[worst].b, mid = 0.5 * (pa + pb);
+      a[m] = pa, b[m] = mid, owner[m] = &rays[r], slot[m] = r * kMaxRayPieces + worst;
+      ++m;
+      a[m] = mid, b[m] = pb, owner[m] = &rays[r], slot[m] = r * kMaxRayPieces + w.n;
+      ++m;
+      ++w.n;
+    }
+    if (m == 0) break;
+    evaluate(m);
+  }
+  for (int r = 0; r < count; ++r) {
+    value[r] = 0;
+    for (int j = 0; j < work[r].n; ++j) value[r] += work[r].p[j].value;
+    error[r] = sum_err(r);
+  }
+}
 
 // The psi of the rays from s0 tangent to G1's clamp edge in the slope
 // plane: with wi(theta) on the edge (ClampEdge), the closed curve s(theta)
@@ -509,10 +557,13 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // |d|^2 - R^2 = |s0|^2 - 2 s0.c + (|c|^2 - 1 / wo.z^2), the last term -1.
   f.d2_minus_r2 = f.s0x * f.s0x + f.s0y * f.s0y - 2 * (f.s0x * f.cx + f.s0y * f.cy) - 1;
 
-  auto ray = [&](double psi, double* err) {
-    double v;
-    EllipsoidRay(f, psi).Integrate(nodes, &v, err);
-    return v;
+  // The rays of a psi piece, integrated together (IntegrateRays).
+  std::vector<EllipsoidRay> batch;
+  batch.reserve(15);
+  auto rays = [&](const double* psi, int count, double* value, double* err) {
+    batch.clear();
+    for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i]);
+    IntegrateRays(batch.data(), count, nodes, value, err);
   };
   const double ca = f.dx * f.l11,
                cb = f.dx * f.l12 + f.dy * f.l22;  // d.e = ca cos + cb sin
@@ -594,7 +645,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
       cut(rays.glancing[i], false, rays.glancing_width[i]);
     }
   }
-  return SegmentRule(ray, segments, tol, max_pieces);
+  return SegmentRule(rays, segments, tol, max_pieces);
 }
 
 }  // namespace brdfbake

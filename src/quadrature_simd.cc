@@ -359,21 +359,16 @@ struct SimdAnisoNodes {
 // sides of each branch computed and selected per lane (hn::Expm1, 4 ulp,
 // for std::expm1 in the map).
 struct SimdEllipsoidNodes {
-  void operator()(const EllipsoidRay &ray, const double *a, const double *b, int n, double *k,
-                  double *g) const {
+  void operator()(const EllipsoidRay *const *rays, const double *a, const double *b, int n,
+                  double *k, double *g) const {
+    if (n == 0) return;
     using V = hn::Vec<DF64>;
     static const SimdAnisoNodes::Rule rule;
-    const EllipsoidFrame &f = ray.f_;
+    const EllipsoidFrame &f = rays[0]->f_;  // the same for every ray
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V lenv = hn::Set(d, ray.len_);
-    const V c_hi = hn::Set(d, ray.c_hi_), c_lo = hn::Set(d, ray.c_lo_);
-    const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
-    const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
-    const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
-    const V ex = hn::Set(d, ray.ex_), ey = hn::Set(d, ray.ey_);
-    const V wz_ee = hn::Set(d, f.wz * ray.ee_), two_wz = hn::Set(d, 2 * f.wz);
+    const V two_wz = hn::Set(d, 2 * f.wz);
     const V s0x = hn::Set(d, f.s0x), s0y = hn::Set(d, f.s0y);
     const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx),
             wy = hn::Set(d, f.wy);
@@ -388,20 +383,31 @@ struct SimdEllipsoidNodes {
     const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
     const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
     const V tiny = hn::Set(d, std::numeric_limits<double>::min());
-    // Piece by piece; the pieces are independent, so their dependency
-    // chains (two square roots and two divisions deep) overlap.
+    // Piece by piece; the pieces (of up to 15 rays) are independent, so
+    // their dependency chains (two square roots and two divisions deep)
+    // overlap.
     for (int j = 0; j < n; ++j) {
+      const EllipsoidRay &ray = *rays[j];
+      const V lenv = hn::Set(d, ray.len_);
+      const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
+      const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
+      const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
+      const V ex = hn::Set(d, ray.ex_), ey = hn::Set(d, ray.ey_);
+      const V wz_ee = hn::Set(d, f.wz * ray.ee_);
       const V cv = hn::Set(d, 0.5 * (a[j] + b[j])), hv = hn::Set(d, 0.5 * (b[j] - a[j]));
+      // A piece lies in one half of its ray (Layout): its side, and
+      // whether that half is mapped, hold for all its nodes.
+      const bool upper = a[j] + b[j] >= 0;
+      const double c_piece = upper ? ray.c_hi_ : ray.c_lo_;
+      const bool mapped = c_piece > 0;
+      const V c = hn::Set(d, c_piece);
       V ks = zero, gsum = zero;
       for (size_t i = 0; i < 16; i += N) {
         const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
-        const auto upper = hn::Ge(o, zero);
-        const V tau = hn::Abs(o), c = hn::IfThenElse(upper, c_hi, c_lo);
-        const auto mapped = hn::Gt(c, zero);
-        const V off = hn::IfThenElse(mapped, hn::Mul(c, hn::Expm1(d, tau)), tau);
-        const V jac = hn::IfThenElse(mapped, hn::Add(off, c), one);
-        const V y = hn::IfThenElse(upper, off, hn::Sub(lenv, off));  // x_hi - x
-        const V t = hn::IfThenElse(upper, hn::Sub(lenv, off), off);  // x - x_lo
+        const V tau = hn::Abs(o);
+        const V off = mapped ? hn::Mul(c, hn::Expm1(d, tau)) : tau;
+        const V y = upper ? off : hn::Sub(lenv, off);  // x_hi - x
+        const V t = upper ? hn::Sub(lenv, off) : off;  // x - x_lo
         const V x = hn::Sub(x_hi, y);
         const V omx2 =
             hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
@@ -453,8 +459,9 @@ struct SimdEllipsoidNodes {
         const V g2 = f.separable
                          ? hn::Div(hn::Mul(g1o, wiz_dd), hn::Max(hn::Add(wiz_dd, nn_scale), tiny))
                          : hn::Div(wiz_dd, hn::Max(hn::MulAdd(lambda_o1, wiz_dd, nn_scale), tiny));
-        const V v =
-            hn::IfThenElseZero(ok, hn::Mul(hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x)), jac));
+        const V f2 = hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x));
+        // Times the map's Jacobian, y + c or t + c.
+        const V v = hn::IfThenElseZero(ok, mapped ? hn::Mul(f2, hn::Add(off, c)) : f2);
         ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
         gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
       }
