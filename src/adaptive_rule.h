@@ -153,19 +153,20 @@ struct PsiSegment {
 
 // The sum over `segments` of the integral of the ray integral / (2 pi)
 // over each, rays(psi, n, value, err) giving it at n angles psi[i] at once
-// (value[i], and its error err[i]): Gauss-Kronrod 15 in t in [0, 1] with psi = a + (b - a) m(t), where
-// m(t) = t (no singular end), t^2 (only a), 1 - (1 - t)^2 (only b) or
-// t^2 (3 - 2 t) (both); each segment starts with one piece per quarter
-// turn (at least one) plus geometric grading (ratio 8, measured to need
-// 17% fewer rays than PsiRule's 4 for the same errors) towards a featured
-// end down to a quarter of the feature; then the worst piece of all is
-// bisected with PsiRule's stopping rule. A piece's |K15 - G7| counts
-// three times (kSegmentErrorSafety): on a segment between two tangent rays
-// (ellipsoid_albedo_rule.h) an unsplit piece was measured to miss by 2.15
-// times its |K15 - G7| (alpha 0.3 x 0.6, theta_x 20, theta_z 30 degrees,
-// mu 0.18, phi 5.2033, tolerance 1e-7: true error 1.46e-8, |K15 - G7|
-// 6.8e-9; one bisection brings the true error to 1e-14); the factor costs
-// 4.5% more rays over that material's 64x64 table.
+// (value[i], and its error err[i]): Gauss-Kronrod 15 in t in [0, 1] with
+// psi = a + (b - a) m(t), where m(t) = t (no singular end), t^2 (only a),
+// 1 - (1 - t)^2 (only b) or t^2 (3 - 2 t) (both); each segment starts
+// with one piece per quarter turn (at least one) plus geometric grading
+// (ratio 8, measured to need 17% fewer rays than PsiRule's 4 for the same
+// errors) towards a featured end down to a quarter of the feature; then
+// the worst piece of all is bisected with PsiRule's stopping rule.
+// A piece's |K15 - G7| counts three times (kSegmentErrorSafety): on a
+// segment between two tangent rays (ellipsoid_albedo_rule.h) an unsplit
+// piece was measured to miss by 2.15 times its |K15 - G7| (alpha 0.3 x
+// 0.6, theta_x 20, theta_z 30 degrees, mu 0.18, phi 5.2033, tolerance
+// 1e-7: true error 1.46e-8, |K15 - G7| 6.8e-9; one bisection brings the
+// true error to 1e-14); the factor costs 4.5% more rays over that
+// material's 64x64 table.
 inline constexpr double kSegmentErrorSafety = 3;
 template <class Rays>
 AzimuthalResult SegmentRule(const Rays& rays, const std::vector<PsiSegment>& segments, double tol,
