@@ -193,6 +193,53 @@ class GgxAzimuthalE : public AzimuthalFrame {
   double lambda_o_ = 0;
 };
 
+// The common part of the integrands G2 Phi sin(theta_i) / (4 mu_o) whose
+// Phi = int D dphi comes from three moments of the azimuth
+// (beckmann_azimuth.h in closed form, std_azimuth.h tabulated):
+//   Phi = norm c(r2_0) ((v_min M_0 + 2 (2B) M_1) v_min + (2B)^2 M_2),
+// norm = 2 / (pi alpha^2 s^4), s / 2 = cc = cos A cos T, 2B = 4 sin(theta_i)
+// sin(theta_o), v_min = 4 cos^2 A, r2_0 = tan^2 T / alpha^2, with the
+// model's M_k and c(r2_0) (exp(-r2_0) for Beckmann).
+class MomentAzimuthalE : public AzimuthalFrame {
+ public:
+  double lambda_o() const { return lambda_o_; }
+  double alpha() const { return alpha_; }
+
+ protected:
+  MomentAzimuthalE(double alpha, double mu_o, Masking masking)
+      : AzimuthalFrame(mu_o), alpha_(alpha), separable_(masking == Masking::kSeparable) {}
+
+  // The factors above at the angles g, with Lambda(wi) = lambda_i, and the
+  // weight w = G2 sin(theta_i) / (4 mu_o); false where the node adds
+  // nothing (w = 0, or cos A <= 0).
+  struct Terms {
+    double w, a2, cc, two_b, v_min, r2_0;
+  };
+  bool TermsAt(const Angles& g, double lambda_i, Terms* t) const {
+    const double g2 =
+        separable_ ? 1 / ((1 + lambda_i) * (1 + lambda_o_)) : 1 / (1 + lambda_i + lambda_o_);
+    t->w = scale_ * g2 * g.s_i;
+    if (!(t->w > 0) || !(g.ca > 0)) return false;
+    t->a2 = alpha_ * alpha_;
+    t->cc = g.ca * g.ct;  // s / 2
+    t->two_b = 4 * g.s_i * s_o_;
+    t->v_min = 4 * g.ca * g.ca;
+    t->r2_0 = g.st * g.st / (t->a2 * g.ct * g.ct);
+    return true;
+  }
+  // The integrand from the terms, the moments m and c = c(r2_0).
+  static double Integrand(const Terms& t, const double* m, double c) {
+    const double sum = (t.v_min * m[0] + 2 * t.two_b * m[1]) * t.v_min + t.two_b * t.two_b * m[2];
+    // 2 / (pi alpha^2 s^4), s^4 = 16 (cos A cos T)^4.
+    const double norm = 2 / (3.141592653589793 * t.a2 * 16 * (t.cc * t.cc) * (t.cc * t.cc));
+    return t.w * (norm * c * sum);
+  }
+
+  double alpha_;
+  bool separable_;
+  double lambda_o_ = 0;
+};
+
 // The 15-point Kronrod rule on [-1, 1] with its embedded 7-point Gauss rule
 // (Gauss weight 0 at the Kronrod-only nodes).
 struct KronrodRule {

@@ -125,18 +125,12 @@ inline BeckmannMoments BeckmannAzimuthMoments(double x) {
 
 // The integrand G2 Phi sin(theta_i) / (4 mu_o) of Beckmann's E(mu_o) over
 // theta_i (alpha in [1e-4, 1], the header's closed-form Phi).
-class BeckmannAzimuthalE : public AzimuthalFrame {
+class BeckmannAzimuthalE : public MomentAzimuthalE {
  public:
   BeckmannAzimuthalE(double alpha, double mu_o, Masking masking)
-      : AzimuthalFrame(mu_o),
-        ndf_(alpha),
-        alpha_(alpha),
-        separable_(masking == Masking::kSeparable) {
+      : MomentAzimuthalE(alpha, mu_o, masking), ndf_(alpha) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
   }
-
-  double lambda_o() const { return lambda_o_; }
-  double alpha() const { return alpha_; }
 
   // What operator() reads besides the frame, for its SIMD twin.
   struct Consts {
@@ -147,22 +141,12 @@ class BeckmannAzimuthalE : public AzimuthalFrame {
 
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
-    const double lambda_i = LambdaAt(g.mu_i, g.s_i);
-    const double g2 =
-        separable_ ? 1 / ((1 + lambda_i) * (1 + lambda_o_)) : 1 / (1 + lambda_i + lambda_o_);
-    const double w = scale_ * g2 * g.s_i;
-    if (!(w > 0) || !(g.ca > 0)) return 0;
-    const double a2 = alpha_ * alpha_;
-    const double cc = g.ca * g.ct;  // s / 2
-    const double two_b = 4 * g.s_i * s_o_;
-    const double v_min = 4 * g.ca * g.ca;
-    const double r2_0 = g.st * g.st / (a2 * g.ct * g.ct);
-    const double x = two_b / (4 * a2 * cc * cc);  // 2B r2_t
+    Terms t;
+    if (!TermsAt(g, LambdaAt(g.mu_i, g.s_i), &t)) return 0;
+    const double x = t.two_b / (4 * t.a2 * t.cc * t.cc);  // 2B r2_t
     const BeckmannMoments m = BeckmannAzimuthMoments(x);
-    const double sum = (v_min * m.m0 + 2 * two_b * m.m1) * v_min + two_b * two_b * m.m2;
-    // 2 / (pi alpha^2 s^4), s^4 = 16 (cos A cos T)^4.
-    const double norm = 2 / (3.141592653589793 * a2 * 16 * (cc * cc) * (cc * cc));
-    return w * (norm * std::exp(-r2_0) * sum);
+    const double moments[3] = {m.m0, m.m1, m.m2};
+    return Integrand(t, moments, std::exp(-t.r2_0));
   }
 
  private:
@@ -175,9 +159,6 @@ class BeckmannAzimuthalE : public AzimuthalFrame {
   }
 
   BeckmannNdf<double> ndf_;
-  double alpha_;
-  bool separable_;
-  double lambda_o_ = 0;
 };
 
 // E(mu) of isotropic Beckmann by the adaptive rule over theta_i with the

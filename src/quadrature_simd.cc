@@ -621,57 +621,68 @@ AzimuthalDfgResult GgxDfgTexel(double alpha, double mu, Masking masking, double 
                                max_pieces);
 }
 
-// BeckmannAzimuthalE::operator() at the 15 nodes of one theta_i piece in
-// lanes: the angles (AnglesAt), Lambda(wi), G2, the closed-form moments and
-// Phi, the same operations as the scalar reference. The 16th lane repeats
-// the first node.
-struct SimdBeckmannNodes {
-  AzimuthalFrame::FrameConsts fc;
-  BeckmannAzimuthalE::Consts bc;
+// MomentAzimuthalE's integrand at the 15 nodes of one theta_i piece in
+// lanes (the 16th repeats the first): the angles, Lambda(wi), G2 and the
+// terms, then the model's moments and c(r2_0) from `model.Lambda(d, a)`
+// (a = cot(theta_i) / alpha, 0 on the horizon) and `model.Moments(d, t,
+// m, &c)`; the same operations as the scalar reference.
+struct MomentTermsF64 {
+  hn::Vec<DF64> a2, cc, two_b, v_min, r2_0;
+};
+template <class Model>
+void SimdMomentNodes(const AzimuthalFrame::FrameConsts& fc, double alpha_s, double lambda_o_s,
+                     bool separable, const Model& model, const double* theta, double* out) {
+  using V = hn::Vec<DF64>;
+  const DF64 d;
+  const size_t N = hn::Lanes(d);
+  HWY_ALIGN double th[16], e[16];
+  for (int i = 0; i < 15; ++i) th[i] = theta[i];
+  th[15] = theta[0];
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
+          four = hn::Set(d, 4.0);
+  const V alpha = hn::Set(d, alpha_s), a2 = hn::Set(d, alpha_s * alpha_s);
+  const V lambda_o = hn::Set(d, lambda_o_s), scale = hn::Set(d, fc.scale);
+  const V s_o = hn::Set(d, fc.s_o);
+  const V norm_c = hn::Set(d, 3.141592653589793 * (alpha_s * alpha_s) * 16);
+  for (size_t i = 0; i < 16; i += N) {
+    V sa, ca, st, ct, s_i, mu_i;
+    FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
+    const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
+    const V lambda_i = model.Lambda(d, a);
+    const V g2 = separable ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
+                           : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
+    const V w = hn::Mul(hn::Mul(scale, g2), s_i);
+    const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
+    MomentTermsF64 t;
+    t.a2 = a2;
+    t.cc = hn::IfThenElse(valid, hn::Mul(ca, ct), one);
+    t.two_b = hn::Mul(hn::Mul(four, s_i), s_o);
+    t.v_min = hn::Mul(hn::Mul(four, ca), ca);
+    t.r2_0 = hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct));
+    V m[3], c;
+    model.Moments(d, t, m, &c);
+    const V sum = hn::MulAdd(
+        hn::Mul(t.two_b, t.two_b), m[2],
+        hn::Mul(hn::MulAdd(t.v_min, m[0], hn::Mul(hn::Mul(two, t.two_b), m[1])), t.v_min));
+    const V cc2 = hn::Mul(t.cc, t.cc);
+    const V norm = hn::Div(two, hn::Mul(hn::Mul(norm_c, cc2), cc2));
+    const V v = hn::Mul(w, hn::Mul(hn::Mul(norm, c), sum));
+    hn::Store(hn::IfThenElseZero(valid, v), d, e + i);
+  }
+  for (int i = 0; i < 15; ++i) out[i] = e[i];
+}
 
-  void operator()(const double* theta, double* out) const {
+// BeckmannAzimuthalE::operator() in lanes: Lambda by BeckmannLambdaF64,
+// the closed-form moments by BeckmannAzimuthMomentsF64.
+struct SimdBeckmannModel {
+  hn::Vec<DF64> Lambda(DF64 d, hn::Vec<DF64> a) const { return BeckmannLambdaF64(d, a); }
+  void Moments(DF64 d, const MomentTermsF64& t, hn::Vec<DF64>* m, hn::Vec<DF64>* c) const {
     using V = hn::Vec<DF64>;
-    const DF64 d;
-    const size_t N = hn::Lanes(d);
-    HWY_ALIGN double th[16], e[16];
-    for (int i = 0; i < 15; ++i) th[i] = theta[i];
-    th[15] = theta[0];
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
-            four = hn::Set(d, 4.0);
-    const V alpha = hn::Set(d, bc.alpha), a2 = hn::Set(d, bc.alpha * bc.alpha);
-    const V lambda_o = hn::Set(d, bc.lambda_o), scale = hn::Set(d, fc.scale);
-    const V s_o = hn::Set(d, fc.s_o), max_r2 = hn::Set(d, 706.0);
-    const V norm_c = hn::Set(d, 3.141592653589793 * (bc.alpha * bc.alpha) * 16);
-    for (size_t i = 0; i < 16; i += N) {
-      V sa, ca, st, ct, s_i, mu_i;
-      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
-      // a = cot(theta_i) / alpha: 0 (Lambda = inf) on the horizon.
-      const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
-      const V lambda_i = BeckmannLambdaF64(d, a);
-      const V g2 = bc.separable
-                       ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
-                       : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
-      const V w = hn::Mul(hn::Mul(scale, g2), s_i);
-      const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
-      const V cc = hn::IfThenElse(valid, hn::Mul(ca, ct), one);
-      const V two_b = hn::Mul(hn::Mul(four, s_i), s_o);
-      const V v_min = hn::Mul(hn::Mul(four, ca), ca);
-      const V r2_0 = hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct));
-      const V x = hn::Div(two_b, hn::Mul(hn::Mul(hn::Mul(four, a2), cc), cc));
-      V m0, m1, m2;
-      BeckmannAzimuthMomentsF64(d, x, &m0, &m1, &m2);
-      const V sum = hn::MulAdd(hn::Mul(two_b, two_b), m2,
-                               hn::Mul(hn::MulAdd(v_min, m0, hn::Mul(hn::Mul(two, two_b), m1)),
-                                       v_min));
-      const V cc2 = hn::Mul(cc, cc);
-      const V norm = hn::Div(two, hn::Mul(hn::Mul(norm_c, cc2), cc2));
-      // exp(-r2_0): 0 from 706 on (below the smallest normal double).
-      const V ex = hn::IfThenElseZero(hn::Lt(r2_0, max_r2),
-                                      hn::Exp(d, hn::Neg(hn::Min(r2_0, max_r2))));
-      const V v = hn::Mul(w, hn::Mul(hn::Mul(norm, ex), sum));
-      hn::Store(hn::IfThenElseZero(valid, v), d, e + i);
-    }
-    for (int i = 0; i < 15; ++i) out[i] = e[i];
+    const V four = hn::Set(d, 4.0), max_r2 = hn::Set(d, 706.0);
+    const V x = hn::Div(t.two_b, hn::Mul(hn::Mul(hn::Mul(four, t.a2), t.cc), t.cc));
+    BeckmannAzimuthMomentsF64(d, x, &m[0], &m[1], &m[2]);
+    // exp(-r2_0): 0 from 706 on (below the smallest normal double).
+    *c = hn::IfThenElseZero(hn::Lt(t.r2_0, max_r2), hn::Exp(d, hn::Neg(hn::Min(t.r2_0, max_r2))));
   }
 };
 
@@ -680,106 +691,76 @@ AzimuthalResult BeckmannAlbedoTexel(double alpha, double mu, Masking masking, do
   return BeckmannAzimuthalAlbedoWith(
       alpha, mu, masking, tol, max_pieces,
       [](const BeckmannAzimuthalE& f, const double* theta, double* out) {
-        SimdBeckmannNodes{f.frame_consts(), f.consts()}(theta, out);
+        const BeckmannAzimuthalE::Consts c = f.consts();
+        SimdMomentNodes(f.frame_consts(), c.alpha, c.lambda_o, c.separable, SimdBeckmannModel{},
+                        theta, out);
       });
 }
 
 #if BRDFBAKE_WITH_STD
-// StdAzimuthalE::operator() at the 15 nodes of one theta_i piece in lanes:
-// the angles, Lambda(wi), G2, y and the tabulated moments (Clenshaw's
-// recurrence on each lane's own piece of the table), the same operations as
-// the scalar reference. The 16th lane repeats the first node.
-struct SimdStdNodes {
-  AzimuthalFrame::FrameConsts fc;
-  StdAzimuthalE::Consts sc;
+// StdAzimuthalE::operator() in lanes: Lambda by StudentTLambdaF64, y and
+// the tabulated moments (Clenshaw's recurrence on each lane's own piece of
+// the table), the same operations as the scalar reference.
+struct SimdStdModel {
+  double gamma;
   const StdAzimuthMoments* moments;
   const StudentTLambdaF64Consts* lc;
 
-  void operator()(const double* theta, double* out) const {
+  hn::Vec<DF64> Lambda(DF64 d, hn::Vec<DF64> a) const { return StudentTLambdaF64(d, *lc, a); }
+  void Moments(DF64 d, const MomentTermsF64& t, hn::Vec<DF64>* n, hn::Vec<DF64>* c) const {
     using T = StdAzimuthMoments;
     using V = hn::Vec<DF64>;
-    const DF64 d;
-    const size_t N = hn::Lanes(d);
-    HWY_ALIGN double th[16], e[16];
-    for (int i = 0; i < 15; ++i) th[i] = theta[i];
-    th[15] = theta[0];
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
-            four = hn::Set(d, 4.0);
-    const V alpha = hn::Set(d, sc.alpha), a2 = hn::Set(d, sc.alpha * sc.alpha);
-    const V lambda_o = hn::Set(d, sc.lambda_o), scale = hn::Set(d, fc.scale);
-    const V s_o = hn::Set(d, fc.s_o), gamma = hn::Set(d, sc.gamma);
-    const V gm1 = hn::Set(d, sc.gamma - 1), min_exp = hn::Set(d, -706.0);
-    const V norm_c = hn::Set(d, 3.141592653589793 * (sc.alpha * sc.alpha) * 16);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), four = hn::Set(d, 4.0);
+    const V gamma_v = hn::Set(d, gamma), gm1 = hn::Set(d, gamma - 1);
+    const V min_exp = hn::Set(d, -706.0);
     const double* coef = moments->coef();
     const double* p = moments->p();
-    for (size_t i = 0; i < 16; i += N) {
-      V sa, ca, st, ct, s_i, mu_i;
-      FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
-      const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
-      const V lambda_i = StudentTLambdaF64(d, *lc, a);
-      const V g2 = sc.separable
-                       ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
-                       : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
-      const V w = hn::Mul(hn::Mul(scale, g2), s_i);
-      const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
-      const V cc = hn::IfThenElse(valid, hn::Mul(ca, ct), one);
-      const V two_b = hn::Mul(hn::Mul(four, s_i), s_o);
-      const V v_min = hn::Mul(hn::Mul(four, ca), ca);
-      const V r2_0 = hn::Div(hn::Mul(st, st), hn::Mul(hn::Mul(a2, ct), ct));
-      const V l0 = hn::Log1p(d, hn::Div(r2_0, gm1));
-      const V y = hn::Mul(hn::Div(two_b, hn::Mul(hn::Mul(hn::Mul(hn::Mul(four, a2), cc), cc), gm1)),
-                          hn::Exp(d, hn::Neg(l0)));
-      // StdAzimuthMoments::At.
-      const V z = hn::Mul(gamma, y);
-      const V t = hn::Min(hn::Log1p(d, z), hn::Set(d, T::kMaxT));
-      const V piece_f =
-          hn::Min(hn::Floor(hn::Mul(t, hn::Set(d, 1 / T::kWidth))), hn::Set(d, T::kPieces - 1.0));
-      const V x = hn::Sub(hn::NegMulAdd(piece_f, hn::Set(d, T::kWidth), t), one);
-      const int degree = moments->degree();
-      const V inv = hn::Div(one, hn::Add(one, z)), r = hn::Sqrt(inv);
-      const V half_powers[3] = {r, hn::Mul(r, inv), hn::Mul(hn::Mul(r, inv), inv)};
-      const V x2 = hn::Add(x, x);
-      // Clenshaw's recurrence, the three chains interleaved, once per
-      // distinct table piece among the lanes (the nodes of a theta_i piece
-      // mostly share one or two) with its coefficients broadcast, each lane
-      // taking the sums of its own piece: the same operations per lane as
-      // the scalar reference.
-      HWY_ALIGN double piece_of[HWY_MAX_BYTES / sizeof(double)];
-      hn::Store(piece_f, d, piece_of);
-      V n[3] = {zero, zero, zero};
-      auto todo = hn::Eq(piece_f, piece_f);
-      while (!hn::AllFalse(d, todo)) {
-        const double pc = piece_of[hn::FindFirstTrue(d, todo)];
-        const auto mine = hn::And(todo, hn::Eq(piece_f, hn::Set(d, pc)));
-        todo = hn::AndNot(mine, todo);
-        const double* c = coef + static_cast<size_t>(pc) * (degree + 1) * 3;
-        V b1[3] = {zero, zero, zero}, b2[3] = {zero, zero, zero};
-        for (int j = degree; j >= 1; --j) {
-          for (int k = 0; k < 3; ++k) {
-            const V b0 = hn::MulAdd(x2, b1[k], hn::Sub(hn::Set(d, c[j * 3 + k]), b2[k]));
-            b2[k] = b1[k];
-            b1[k] = b0;
-          }
-        }
+    const V l0 = hn::Log1p(d, hn::Div(t.r2_0, gm1));
+    const V y =
+        hn::Mul(hn::Div(t.two_b, hn::Mul(hn::Mul(hn::Mul(hn::Mul(four, t.a2), t.cc), t.cc), gm1)),
+                hn::Exp(d, hn::Neg(l0)));
+    // StdAzimuthMoments::At.
+    const V z = hn::Mul(gamma_v, y);
+    const V tt = hn::Min(hn::Log1p(d, z), hn::Set(d, T::kMaxT));
+    const V piece_f =
+        hn::Min(hn::Floor(hn::Mul(tt, hn::Set(d, 1 / T::kWidth))), hn::Set(d, T::kPieces - 1.0));
+    const V x = hn::Sub(hn::NegMulAdd(piece_f, hn::Set(d, T::kWidth), tt), one);
+    const int degree = moments->degree();
+    const V inv = hn::Div(one, hn::Add(one, z)), r = hn::Sqrt(inv);
+    const V half_powers[3] = {r, hn::Mul(r, inv), hn::Mul(hn::Mul(r, inv), inv)};
+    const V x2 = hn::Add(x, x);
+    // Clenshaw's recurrence, the three chains interleaved, once per
+    // distinct table piece among the lanes (the nodes of a theta_i piece
+    // mostly share one or two) with its coefficients broadcast, each lane
+    // taking the sums of its own piece: the same operations per lane as
+    // the scalar reference.
+    HWY_ALIGN double piece_of[HWY_MAX_BYTES / sizeof(double)];
+    hn::Store(piece_f, d, piece_of);
+    for (int k = 0; k < 3; ++k) n[k] = zero;
+    auto todo = hn::Eq(piece_f, piece_f);
+    while (!hn::AllFalse(d, todo)) {
+      const double pc = piece_of[hn::FindFirstTrue(d, todo)];
+      const auto mine = hn::And(todo, hn::Eq(piece_f, hn::Set(d, pc)));
+      todo = hn::AndNot(mine, todo);
+      const double* cf = coef + static_cast<size_t>(pc) * (degree + 1) * 3;
+      V b1[3] = {zero, zero, zero}, b2[3] = {zero, zero, zero};
+      for (int j = degree; j >= 1; --j) {
         for (int k = 0; k < 3; ++k) {
-          n[k] = hn::IfThenElse(mine, hn::MulAdd(x, b1[k], hn::Sub(hn::Set(d, c[k]), b2[k])), n[k]);
+          const V b0 = hn::MulAdd(x2, b1[k], hn::Sub(hn::Set(d, cf[j * 3 + k]), b2[k]));
+          b2[k] = b1[k];
+          b1[k] = b0;
         }
       }
       for (int k = 0; k < 3; ++k) {
-        const V decay = p[k] < k + 0.5 ? hn::Exp(d, hn::Mul(hn::Set(d, -p[k]), t)) : half_powers[k];
-        n[k] = hn::Mul(n[k], decay);
+        n[k] = hn::IfThenElse(mine, hn::MulAdd(x, b1[k], hn::Sub(hn::Set(d, cf[k]), b2[k])), n[k]);
       }
-      const V sum = hn::MulAdd(hn::Mul(two_b, two_b), n[2],
-                               hn::Mul(hn::MulAdd(v_min, n[0], hn::Mul(hn::Mul(two, two_b), n[1])),
-                                       v_min));
-      const V cc2 = hn::Mul(cc, cc);
-      const V norm = hn::Div(two, hn::Mul(hn::Mul(norm_c, cc2), cc2));
-      const V arg = hn::Neg(hn::Mul(gamma, l0));
-      const V ex = hn::IfThenElseZero(hn::Gt(arg, min_exp), hn::Exp(d, hn::Max(arg, min_exp)));
-      const V v = hn::Mul(w, hn::Mul(hn::Mul(norm, ex), sum));
-      hn::Store(hn::IfThenElseZero(valid, v), d, e + i);
     }
-    for (int i = 0; i < 15; ++i) out[i] = e[i];
+    for (int k = 0; k < 3; ++k) {
+      const V decay = p[k] < k + 0.5 ? hn::Exp(d, hn::Mul(hn::Set(d, -p[k]), tt)) : half_powers[k];
+      n[k] = hn::Mul(n[k], decay);
+    }
+    const V arg = hn::Neg(hn::Mul(gamma_v, l0));
+    *c = hn::IfThenElseZero(hn::Gt(arg, min_exp), hn::Exp(d, hn::Max(arg, min_exp)));
   }
 };
 
@@ -797,7 +778,9 @@ AzimuthalResult StdAlbedoTexel(const StudentTNdf<double>& ndf, double mu, Maskin
   return StdAzimuthalAlbedoWith(
       ndf, mu, masking, tol, max_pieces,
       [&](const StdAzimuthalE& f, const double* theta, double* out) {
-        SimdStdNodes{f.frame_consts(), f.consts(), &f.moments(), &lc}(theta, out);
+        const StdAzimuthalE::Consts c = f.consts();
+        SimdMomentNodes(f.frame_consts(), c.alpha, c.lambda_o, c.separable,
+                        SimdStdModel{c.gamma, &f.moments(), &lc}, theta, out);
       });
 }
 #endif

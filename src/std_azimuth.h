@@ -124,19 +124,15 @@ void ClearStdAzimuthMoments();
 
 // The integrand over theta_i of the STD's E(mu_o) (gamma finite; the header's
 // Phi).
-class StdAzimuthalE : public AzimuthalFrame {
+class StdAzimuthalE : public MomentAzimuthalE {
  public:
   StdAzimuthalE(const StudentTNdf<double>& ndf, double mu_o, Masking masking)
-      : AzimuthalFrame(mu_o),
+      : MomentAzimuthalE(ndf.alpha_x(), mu_o, masking),
         ndf_(&ndf),
-        moments_(&StdAzimuthMomentsFor(ndf.gamma())),
-        alpha_(ndf.alpha_x()),
-        separable_(masking == Masking::kSeparable) {
+        moments_(&StdAzimuthMomentsFor(ndf.gamma())) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
   }
 
-  double lambda_o() const { return lambda_o_; }
-  double alpha() const { return alpha_; }
   const StdAzimuthMoments& moments() const { return *moments_; }
 
   // The factor on the theta_i mesh's horizon scale: SlopeAzimuthalE's
@@ -152,25 +148,15 @@ class StdAzimuthalE : public AzimuthalFrame {
 
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
-    const double lambda_i = LambdaAt(g.mu_i, g.s_i);
-    const double g2 =
-        separable_ ? 1 / ((1 + lambda_i) * (1 + lambda_o_)) : 1 / (1 + lambda_i + lambda_o_);
-    const double w = scale_ * g2 * g.s_i;
-    if (!(w > 0) || !(g.ca > 0)) return 0;
+    Terms t;
+    if (!TermsAt(g, LambdaAt(g.mu_i, g.s_i), &t)) return 0;
     const double gamma = ndf_->gamma(), gm1 = gamma - 1;
-    const double a2 = alpha_ * alpha_;
-    const double cc = g.ca * g.ct;  // s / 2
-    const double two_b = 4 * g.s_i * s_o_;
-    const double v_min = 4 * g.ca * g.ca;
-    const double r2_0 = g.st * g.st / (a2 * g.ct * g.ct);
-    const double l0 = std::log1p(r2_0 / gm1);  // log c0
+    const double l0 = std::log1p(t.r2_0 / gm1);  // log c0
     // y = 2B r2_t / ((gamma - 1) c0), r2_t = 1 / (4 alpha^2 cc^2).
-    const double y = two_b / (4 * a2 * cc * cc * gm1) * std::exp(-l0);
+    const double y = t.two_b / (4 * t.a2 * t.cc * t.cc * gm1) * std::exp(-l0);
     double n[3];
     moments_->At(y, n);
-    const double sum = (v_min * n[0] + 2 * two_b * n[1]) * v_min + two_b * two_b * n[2];
-    const double norm = 2 / (3.141592653589793 * a2 * 16 * (cc * cc) * (cc * cc));
-    return w * (norm * std::exp(-gamma * l0) * sum);
+    return Integrand(t, n, std::exp(-gamma * l0));
   }
 
  private:
@@ -182,9 +168,6 @@ class StdAzimuthalE : public AzimuthalFrame {
 
   const StudentTNdf<double>* ndf_;
   const StdAzimuthMoments* moments_;
-  double alpha_;
-  bool separable_;
-  double lambda_o_ = 0;
 };
 
 // E(mu) of the isotropic STD at finite gamma by the adaptive rule over
