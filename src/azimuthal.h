@@ -263,6 +263,19 @@ AzimuthalResult GgxAzimuthalAlbedo(double alpha, double mu, Masking masking, dou
 std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
                                   double horizon_widen = 1);
 
+// AzimuthalMesh's horizon_widen for a slope distribution whose unit
+// Lambda(a) -> c / a near the horizon (a -> 0): max(1, 2 c), c taken as
+// 1e-9 Lambda(1e-9). Near the horizon G2's pole lies at pi/2 - theta_i ~
+// -alpha c / (1 + Lambda(wo)) and the mesh's scale assumes GGX's c = 1/2.
+// The STD's c grows without bound as gamma -> 1.5 (2.52 at 1.55, 112.8 at
+// 1.501), where that scale would start the grading up to 225 times too
+// fine. (Below 1/2, gamma > 2 and Beckmann's 0.282, the mesh keeps GGX's
+// finer start.)
+template <class UnitLambda>
+double HorizonWiden(const UnitLambda& unit_lambda) {
+  return std::max(1.0, 2 * 1e-9 * unit_lambda(1e-9));
+}
+
 // The Schlick-weighted azimuthal integral. With v = |wi + wo|^2 = 2 + 2 wi.wo
 // and u = v + k (azimuthal.h: D = (alpha^2 / pi) v^2 / u^2, k = (alpha^2 - 1)
 // s^2 = -kappa), wo.h = sqrt(v) / 2, so over the azimuth both D and

@@ -165,16 +165,10 @@ class SlopeAzimuthalE : public AzimuthalFrame {
   double lambda_o() const { return lambda_o_; }
   double alpha() const { return alpha_; }
 
-  // The factor on the theta_i mesh's horizon scale (AzimuthalMesh). Near
-  // the horizon Lambda(a) -> c / a (c = E[max(0, x)] of the unit slope
-  // marginal), so G2's pole lies at pi/2 - theta_i ~ -alpha c / (1 + Lambda(wo));
-  // the mesh's scale assumes GGX's c = 1/2. The STD's c grows without bound
-  // as gamma -> 1.5 (2.52 at 1.55, 112.8 at 1.501), where that scale would
-  // start the grading up to 225 times too fine: max(1, 2 c). (Below 1/2,
-  // gamma > 2 and Beckmann's 0.282, the mesh keeps GGX's finer start.)
+  // The factor on the theta_i mesh's horizon scale (HorizonWiden).
   double horizon_widen() const {
     if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) {
-      return std::max(1.0, 2 * 1e-9 * ndf_->UnitLambda(1e-9));
+      return HorizonWiden([&](double a) { return ndf_->UnitLambda(a); });
     }
     return 1.0;
   }

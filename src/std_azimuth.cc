@@ -63,8 +63,8 @@ void StdAzimuthMoments::Direct(double gamma, double y, double* n) {
 
 StdAzimuthMoments::StdAzimuthMoments(double gamma)
     : gamma_(gamma),
-      horizon_widen_(std::max(
-          1.0, 2 * 1e-9 * StudentTNdf<double>(1.0, 1.0, gamma).UnitLambda(1e-9))),
+      horizon_widen_(HorizonWiden(
+          [ndf = StudentTNdf<double>(1.0, 1.0, gamma)](double a) { return ndf.UnitLambda(a); })),
       degree_(gamma <= 5 ? 20 : 30) {
   constexpr double kPi = 3.141592653589793;
   const int nodes = degree_ + 1;
