@@ -29,6 +29,9 @@
 #include <hwy/highway.h>
 #include <hwy/tests/hwy_gtest.h>
 
+#include "simd/common-inl.h"
+#include "simd/ellipsoid-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {
 namespace HWY_NAMESPACE {
@@ -256,6 +259,114 @@ void CheckEllipsoidSampleVisible() {
 }
 #endif  // BRDFBAKE_WITH_ELLIPSOID
 
+#if BRDFBAKE_WITH_ELLIPSOID
+// The same kernels in double lanes (ellipsoid-inl.h is generic over the
+// lane type) against the double reference at the same inputs: the bounds
+// of the float kernels with the double epsilon, times the same condition
+// numbers.
+constexpr double kEllF64Rel = 2e-14;     // D, Lambda (to LambdaScale), G1, the BRDF
+constexpr double kEllF64PdfDot = 1e-15;  // the pdf's rounding of u.m, over u.m
+
+void CheckEllipsoidF64() {
+  namespace hn = hwy::HWY_NAMESPACE;
+  using DD = hn::ScalableTag<double>;
+  const DD dd;
+  const size_t N = hn::Lanes(dd);
+  const size_t n = 20000, padded = (n + N - 1) / N * N;
+  const Dirs wi32 = RandomDirs(n, 31), wo32 = RandomDirs(n, 32);
+  // The directions renormalized in double (the reference takes unit
+  // vectors), padded with the pole.
+  std::vector<double> ix(padded, 0), iy(padded, 0), iz(padded, 1);
+  std::vector<double> ox(padded, 0), oy(padded, 0), oz(padded, 1);
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3<double> a = Normalize(wi32.At(i)), b = Normalize(wo32.At(i));
+    ix[i] = a.x, iy[i] = a.y, iz[i] = a.z;
+    ox[i] = b.x, oy[i] = b.y, oz[i] = b.z;
+  }
+  std::vector<double> dv(padded), lv(padded), gv(padded), pv(padded), fv(padded);
+  double worst_d = 0, worst_l = 0, worst_g = 0, worst_f = 0, worst_p = 0;
+  for (const EllConfig& cfg : kEllConfigs) {
+    const BatchModel p = ToParams(cfg);
+    const EllipsoidNdf<double> ndf = ToNdf(p);
+    const Mat3<double> ait = InvT(p), a = ndf.shape_matrix();
+    const EllipsoidConsts<DD> c(dd, p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z, 1.0);
+    for (size_t i = 0; i < padded; i += N) {
+      const auto x = hn::LoadU(dd, &ix[i]), y = hn::LoadU(dd, &iy[i]), z = hn::LoadU(dd, &iz[i]);
+      hn::StoreU(EllipsoidD(dd, c, x, y, z), dd, &dv[i]);
+      hn::StoreU(EllipsoidLambda(dd, c, x, y, z), dd, &lv[i]);
+      hn::StoreU(EllipsoidG1(dd, c, x, y, z), dd, &gv[i]);
+      // The pdf of the normal wi seen from wo.
+      hn::StoreU(EllipsoidPdfVisible(dd, c, hn::LoadU(dd, &ox[i]), hn::LoadU(dd, &oy[i]),
+                                     hn::LoadU(dd, &oz[i]), x, y, z),
+                 dd, &pv[i]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3<double> v(ix[i], iy[i], iz[i]), u(ox[i], oy[i], oz[i]);
+      const double kd = Kappa(ait, v), ka = Kappa(a, v);
+      const double ed = RelErr(dv[i], ndf.D(v)) / kd;
+      const double lref = ndf.Lambda(v);
+      const double scale = LambdaScale(a, v, lref);
+      const double el = std::isinf(lref) ? (std::isinf(lv[i]) ? 0.0 : 1.0)
+                                         : std::abs(lv[i] - lref) / scale / ka;
+      const double eg = std::isinf(lref) ? std::abs(gv[i])
+                                         : std::abs(gv[i] - ndf.G1(v)) /
+                                               (scale / ((1 + lref) * (1 + lref))) / ka;
+      worst_d = std::max(worst_d, ed);
+      worst_l = std::max(worst_l, el);
+      worst_g = std::max(worst_g, eg);
+      ASSERT_LE(ed, kEllF64Rel) << "D cfg " << cfg.ax << "," << cfg.ay << "," << cfg.tx << ","
+                                << cfg.ty << "," << cfg.tz << " i=" << i;
+      ASSERT_LE(el, kEllF64Rel) << "Lambda cfg " << cfg.ax << "," << cfg.ay << "," << cfg.tx
+                                << "," << cfg.ty << "," << cfg.tz << " i=" << i << " got "
+                                << lv[i] << " ref " << lref;
+      ASSERT_LE(eg, kEllF64Rel) << "G1 i=" << i << " got " << gv[i] << " ref " << ndf.G1(v);
+      const double um = Dot(u, v);
+      if (u.z > 0 && v.z > 0 && um > 0) {
+        const double pref = ndf.PdfVisible(u, v);
+        const double kp = std::max(Kappa(ait, v), Kappa(a, u));
+        const double ep = RelErr(pv[i], pref) / (kEllF64Rel * kp + kEllF64PdfDot / um);
+        worst_p = std::max(worst_p, ep);
+        ASSERT_LE(ep, 1.0) << "PdfVisible i=" << i << " got " << pv[i] << " ref " << pref;
+      }
+    }
+    for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
+      for (double f0 : {1.0, 0.04}) {
+        const EllipsoidConsts<DD> cf(dd, p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z,
+                                     f0);
+        const SchlickFresnel<DD> fresnel{hn::Set(dd, f0)};
+        const bool sep = masking == Masking::kSeparable;
+        for (size_t i = 0; i < padded; i += N) {
+          hn::StoreU(EllipsoidBrdf(dd, cf, sep, hn::LoadU(dd, &ix[i]), hn::LoadU(dd, &iy[i]),
+                                   hn::LoadU(dd, &iz[i]), hn::LoadU(dd, &ox[i]),
+                                   hn::LoadU(dd, &oy[i]), hn::LoadU(dd, &oz[i]), fresnel),
+                     dd, &fv[i]);
+        }
+        const Fresnel fr = Fresnel::Schlick({f0, f0, f0});
+        for (size_t i = 0; i < n; ++i) {
+          const Vec3<double> w_i(ix[i], iy[i], iz[i]), w_o(ox[i], oy[i], oz[i]);
+          const double kappa =
+              std::max({Kappa(ait, w_i + w_o), Kappa(a, w_i), Kappa(a, w_o)});
+          const double ref = Brdf(ndf, fr, w_i, w_o, masking);
+          const double li = ndf.Lambda(w_i), lo = ndf.Lambda(w_o);
+          const double g_cond = 1 + LambdaScale(a, w_i, li) / (1 + li) +
+                                LambdaScale(a, w_o, lo) / (1 + lo);
+          const double ef = RelErr(fv[i], ref) / (kappa * g_cond);
+          worst_f = std::max(worst_f, ef);
+          ASSERT_LE(ef, kEllF64Rel) << "BRDF cfg " << cfg.ax << "," << cfg.ay << "," << cfg.tx
+                                    << "," << cfg.ty << "," << cfg.tz << " i=" << i << " got "
+                                    << fv[i] << " ref " << ref;
+        }
+      }
+    }
+  }
+  std::printf("%s: ellipsoid in double lanes, max error / kappa: D %.3g, Lambda (relative to "
+              "LambdaScale) %.3g, G1 %.3g, BRDF (/ g_cond) %.3g (bound %.0e); PdfVisible "
+              "error / bound %.3g (%.0e kappa + %.0e / u.m)\n",
+              Target(), worst_d, worst_l, worst_g, worst_f, kEllF64Rel, worst_p, kEllF64Rel,
+              kEllF64PdfDot);
+}
+#endif  // BRDFBAKE_WITH_ELLIPSOID
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();
@@ -267,6 +378,7 @@ HWY_BEFORE_TEST(SimdEllipsoidTest);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidDLambdaG1);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidBrdf);
 HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidSampleVisible);
+HWY_EXPORT_AND_TEST_P(SimdEllipsoidTest, CheckEllipsoidF64);
 #endif
 }  // namespace brdfbake
 #endif
