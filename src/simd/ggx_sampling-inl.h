@@ -102,16 +102,15 @@ HWY_INLINE void SinCos2Pi(D d, V u, V* sin_out, V* cos_out) {
     q = hn::ConvertTo(di, qf);
     const V r = hn::Sub(x, qf);
     const V r2 = hn::Mul(r, r);
-    static constexpr T kSin[9] = {6.0669357311061955e-12, -6.688035109811468e-10,
-                                  5.692172921967927e-08,  -3.598843235212085e-06,
-                                  0.00016044118478735983, -0.004681754135318688,
-                                  0.07969262624616705,    -0.6459640975062463,
-                                  1.5707963267948966};
-    static constexpr T kCos[10] = {-5.294400200734623e-13, 6.565963114979473e-11,
-                                   -6.386603083791852e-09, 4.710874778818172e-07,
+    static constexpr T kSin[9] = {
+        6.0669357311061955e-12, -6.688035109811468e-10, 5.692172921967927e-08,
+        -3.598843235212085e-06, 0.00016044118478735983, -0.004681754135318688,
+        0.07969262624616705,    -0.6459640975062463,    1.5707963267948966};
+    static constexpr T kCos[10] = {-5.294400200734623e-13,  6.565963114979473e-11,
+                                   -6.386603083791852e-09,  4.710874778818172e-07,
                                    -2.5202042373060607e-05, 0.0009192602748394266,
-                                   -0.02086348076335296,   0.25366950790104803,
-                                   -1.2337005501361697,    1.0};
+                                   -0.02086348076335296,    0.25366950790104803,
+                                   -1.2337005501361697,     1.0};
     V ps = hn::Set(d, kSin[0]);
     for (int j = 1; j < 9; ++j) ps = hn::MulAdd(ps, r2, hn::Set(d, kSin[j]));
     sin_r = hn::Mul(ps, r);
@@ -168,16 +167,17 @@ HWY_INLINE void CrescentPoint(D d, V s, V oms, V u1, V u2, V* p1, V* p2s, V* lif
   const V c_minus_p2 = hn::IfThenElse(p2_pos, diff, sum);
   const V c_plus_p2 = hn::IfThenElse(p2_pos, sum, diff);
   // 1 - p1^2 - p2'^2 = (c - p2')(c + p2') = s (c - p2) (2 oms c + s (c + p2)).
-  const V z2 = hn::Mul(hn::Mul(s, c_minus_p2),
-                       hn::MulAdd(hn::Add(oms, oms), c, hn::Mul(s, c_plus_p2)));
+  const V z2 =
+      hn::Mul(hn::Mul(s, c_minus_p2), hn::MulAdd(hn::Add(oms, oms), c, hn::Mul(s, c_plus_p2)));
   *lift = hn::Sqrt(hn::Max(z2, hn::Zero(d)));
 }
 
 // Seed 003 Listing 1: a visible normal of GGX for the view w, from (u1, u2).
 template <class D, class V>
-HWY_INLINE void GgxSampleVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy, V wz, V u1,
-                                 V u2, V* mx, V* my, V* mz) {
-  const V zero = hn::Zero(d), one = hn::Set(d, hn::TFromD<D>(1)), half = hn::Set(d, hn::TFromD<D>(0.5));
+HWY_INLINE void GgxSampleVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy, V wz, V u1, V u2,
+                                 V* mx, V* my, V* mz) {
+  const V zero = hn::Zero(d), one = hn::Set(d, hn::TFromD<D>(1)),
+          half = hn::Set(d, hn::TFromD<D>(0.5));
   // Section 3.2: to the hemisphere configuration; vh = (L cx, L cy, vz).
   const V gx = hn::Mul(c.ax, wx), gy = hn::Mul(c.ay, wy);
   const V g2 = hn::MulAdd(gx, gx, hn::Mul(gy, gy));
@@ -213,8 +213,7 @@ HWY_INLINE void GgxSampleVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy,
 // multiplied through by sqrt(1 - u2): no division, and u2 = 1 gives the
 // horizon normal instead of an infinite slope.
 template <class D, class V>
-HWY_INLINE void GgxSampleNdf(D d, const GgxSamplingConsts<D>& c, V u1, V u2, V* mx, V* my,
-                             V* mz) {
+HWY_INLINE void GgxSampleNdf(D d, const GgxSamplingConsts<D>& c, V u1, V u2, V* mx, V* my, V* mz) {
   const V one = hn::Set(d, hn::TFromD<D>(1));
   const V uc = hn::Min(hn::Max(u2, hn::Zero(d)), one);
   V sn, cs;
@@ -234,15 +233,14 @@ HWY_INLINE void GgxSampleNdf(D d, const GgxSamplingConsts<D>& c, V u1, V u2, V* 
 // = 2 (w.m) |m|^4 / (pi ax ay Q^2 (w.z + R)), Q as in GgxD. One square root,
 // one division; zero unless w.z, m.z and w.m are positive.
 template <class D, class V>
-HWY_INLINE V GgxPdfVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy, V wz, V mx, V my,
-                           V mz) {
+HWY_INLINE V GgxPdfVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy, V wz, V mx, V my, V mz) {
   const GgxConsts<D>& g = c.ggx;
   const V zero = hn::Zero(d);
   const V len2 = hn::MulAdd(mx, mx, hn::MulAdd(my, my, hn::Mul(mz, mz)));
   const V q = hn::MulAdd(hn::Mul(mx, mx), g.inv_ax2,
                          hn::MulAdd(hn::Mul(my, my), g.inv_ay2, hn::Mul(mz, mz)));
-  const V r = hn::Sqrt(hn::MulAdd(wz, wz, hn::MulAdd(hn::Mul(wx, wx), g.ax2,
-                                                     hn::Mul(hn::Mul(wy, wy), g.ay2))));
+  const V r = hn::Sqrt(
+      hn::MulAdd(wz, wz, hn::MulAdd(hn::Mul(wx, wx), g.ax2, hn::Mul(hn::Mul(wy, wy), g.ay2))));
   const V wm = hn::MulAdd(wx, mx, hn::MulAdd(wy, my, hn::Mul(wz, mz)));
   const V num = hn::Mul(hn::Mul(hn::Add(wm, wm), hn::Mul(len2, len2)), g.inv_pi_axay);
   const V pdf = hn::Div(num, hn::Mul(hn::Mul(q, q), hn::Add(wz, r)));
