@@ -159,6 +159,22 @@ BENCHMARK_CAPTURE(BM_BakeEllipsoid, E/ellipsoid/64x64, TableKind::kE)
 BENCHMARK_CAPTURE(BM_BakeEllipsoid, E_avg/ellipsoid, TableKind::kEavg)
     ->Args({1, 2})->BRDFBAKE_BAKE_ARGS(3);
 
+// The sel lobe's integral over (alpha_x, alpha_y), 32x32 (lanes or
+// --target scalar).
+void BM_BakeSel(benchmark::State& state, bool simd) {
+  BakeSpec spec;
+  spec.table = TableKind::kSelNorm;
+  spec.model.kind = ModelKind::kSel;
+  spec.alpha_x.size = spec.alpha_y.size = static_cast<int>(state.range(0));
+  spec.threads = static_cast<int>(state.range(1));
+  spec.simd = simd;
+  TimeBake(state, spec);
+}
+BENCHMARK_CAPTURE(BM_BakeSel, sel_norm/sel/simd/32x32, true)
+    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
+BENCHMARK_CAPTURE(BM_BakeSel, sel_norm/sel/scalar/32x32, false)
+    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
+
 BRDFBAKE_BAKE_BENCH(dfg/ggx/scalar, TableKind::kDfg, "ggx", 2, false)
     ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(3);
 BRDFBAKE_BAKE_BENCH(E/beckmann/scalar, TableKind::kE, "beckmann", 2, false)

@@ -1052,8 +1052,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   if (sel) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), y = static_cast<int>(i / t.width);
-      const SelIntegral n = SelLobeIntegral(spec.alpha_x.Value(x), spec.alpha_y.Value(y),
-                                            spec.tolerance);
+      const double ax = spec.alpha_x.Value(x), ay = spec.alpha_y.Value(y);
+      const SelIntegral n = spec.simd ? SimdSelLobeIntegral(ax, ay, spec.tolerance)
+                                      : SelLobeIntegral(ax, ay, spec.tolerance);
       v0[i] = n.n;
       t.channels[1].values[i] = n.ratio;
       error[i] = std::max(n.n_error, n.ratio_error);

@@ -20,6 +20,7 @@
 #include "azimuthal.h"
 #include "azimuthal_slope.h"
 #include "beckmann_azimuth.h"
+#include "sel_norm.h"
 #include "std_azimuth.h"
 
 namespace brdfbake {
@@ -28,6 +29,8 @@ namespace brdfbake {
 AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double phi,
                                    Masking masking, double tol, int max_pieces);
 
+// SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
+SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);
 // EllipsoidAlbedo (ellipsoid_albedo.h) with each ray piece's nodes in lanes.
 AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x,
                                     double theta_y, double theta_z, double mu, double phi,

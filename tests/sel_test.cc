@@ -7,6 +7,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/sel.h"
+#include "quadrature_simd.h"
 #include "sel_norm.h"
 
 #include <gtest/gtest.h>
@@ -246,15 +247,21 @@ TEST(SelTest, NormTable) {
   spec.alpha_x.size = 4;
   spec.alpha_y.size = 3;
   spec.alpha_x.min = 0.1;
-  const Table t = Bake(spec);
-  ASSERT_EQ(t.channels.size(), 2u);
-  EXPECT_EQ(t.channels[0].name, "sel.0_integral");
-  EXPECT_EQ(t.channels[1].name, "sel.1_ratio");
-  for (int y = 0; y < 3; ++y) {
-    for (int x = 0; x < 4; ++x) {
-      const SelIntegral n = SelLobeIntegral(spec.alpha_x.Value(x), spec.alpha_y.Value(y), 1e-7);
-      EXPECT_EQ(t.channels[0].values[y * 4 + x], n.n);
-      EXPECT_EQ(t.channels[1].values[y * 4 + x], n.ratio);
+  // Lanes (the default) and the scalar reference (--target scalar).
+  for (bool simd : {true, false}) {
+    spec.simd = simd;
+    const Table t = Bake(spec);
+    ASSERT_EQ(t.channels.size(), 2u);
+    EXPECT_EQ(t.channels[0].name, "sel.0_integral");
+    EXPECT_EQ(t.channels[1].name, "sel.1_ratio");
+    for (int y = 0; y < 3; ++y) {
+      for (int x = 0; x < 4; ++x) {
+        const double ax = spec.alpha_x.Value(x), ay = spec.alpha_y.Value(y);
+        const SelIntegral n =
+            simd ? SimdSelLobeIntegral(ax, ay, 1e-7) : SelLobeIntegral(ax, ay, 1e-7);
+        EXPECT_EQ(t.channels[0].values[y * 4 + x], n.n);
+        EXPECT_EQ(t.channels[1].values[y * 4 + x], n.ratio);
+      }
     }
   }
   spec.model.kind = ModelKind::kGgx;
