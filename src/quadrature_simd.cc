@@ -38,6 +38,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 using DF64 = hn::ScalableTag<double>;
 
+// A Kronrod piece's 15 nodes in 16 aligned lanes, the 16th repeating the
+// first, so that every target runs whole vectors.
+HWY_INLINE void NodesTo16(const double* nodes, double* out) {
+  for (int i = 0; i < 15; ++i) out[i] = nodes[i];
+  out[15] = nodes[0];
+}
+
 // The remainder of the Schlick-weighted azimuthal integral (azimuthal.h,
 // ScalarRemainderNodes) with each piece's 16 nodes (15 and one of weight 0)
 // in lanes. Returns the Kronrod value over all n pieces (the per-piece sums
@@ -168,8 +175,7 @@ struct SimdSlopeEval {
     const size_t N = hn::Lanes(d);
     HWY_ALIGN double th[16], w[16], cav[16], r2_0[16], r2_t[16], v_min[16], two_b[16];
     HWY_ALIGN double start[16], norm[16];
-    for (int i = 0; i < 15; ++i) th[i] = theta[i];
-    th[15] = theta[0];
+    NodesTo16(theta, th);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), four = hn::Set(d, 4.0);
     const V alpha = hn::Set(d, sc.alpha), a2 = hn::Set(d, sc.alpha * sc.alpha);
     const V lambda_o = hn::Set(d, sc.lambda_o), scale = hn::Set(d, fc.scale);
@@ -488,8 +494,7 @@ struct SimdSelNodes {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     HWY_ALIGN double p[16], out[16];
-    for (int i = 0; i < 15; ++i) p[i] = phi[i];
-    p[15] = phi[0];
+    NodesTo16(phi, p);
     const V s2 = hn::Set(d, t.s2), c2 = hn::Set(d, t.c * t.c);
     const V ikx2 = hn::Set(d, t.ikx2), iky2 = hn::Set(d, t.iky2), one = hn::Set(d, 1.0);
     for (size_t i = 0; i < 16; i += N) {
@@ -566,8 +571,7 @@ struct SimdGgxNodes {
     const size_t N = hn::Lanes(d);
     constexpr double kTwoPi = 6.283185307179586;
     HWY_ALIGN double th[16];
-    for (int i = 0; i < 15; ++i) th[i] = theta[i];
-    th[15] = theta[0];
+    NodesTo16(theta, th);
     double *e = terms->e, *wn = terms->wn, *closed = terms->closed, *sk = terms->sk,
            *vmin = terms->vmin, *two_bb = terms->two_bb, *start = terms->start;
     const V half = hn::Set(d, 0.5), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
@@ -665,8 +669,7 @@ void SimdMomentNodes(const AzimuthalFrame::FrameConsts& fc, double alpha_s, doub
   const DF64 d;
   const size_t N = hn::Lanes(d);
   HWY_ALIGN double th[16], e[16];
-  for (int i = 0; i < 15; ++i) th[i] = theta[i];
-  th[15] = theta[0];
+  NodesTo16(theta, th);
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
           four = hn::Set(d, 4.0);
   const V alpha = hn::Set(d, alpha_s), a2 = hn::Set(d, alpha_s * alpha_s);
