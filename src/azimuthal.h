@@ -205,6 +205,13 @@ class MomentAzimuthalE : public AzimuthalFrame {
   double lambda_o() const { return lambda_o_; }
   double alpha() const { return alpha_; }
 
+  // What the common part reads besides the frame, for its SIMD twin.
+  struct Consts {
+    double alpha, lambda_o;
+    bool separable;
+  };
+  Consts consts() const { return {alpha_, lambda_o_, separable_}; }
+
  protected:
   MomentAzimuthalE(double alpha, double mu_o, Masking masking)
       : AzimuthalFrame(mu_o), alpha_(alpha), separable_(masking == Masking::kSeparable) {}

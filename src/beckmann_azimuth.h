@@ -132,13 +132,6 @@ class BeckmannAzimuthalE : public MomentAzimuthalE {
     lambda_o_ = LambdaAt(mu_o, s_o_);
   }
 
-  // What operator() reads besides the frame, for its SIMD twin.
-  struct Consts {
-    double alpha, lambda_o;
-    bool separable;
-  };
-  Consts consts() const { return {alpha_, lambda_o_, separable_}; }
-
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
     Terms t;

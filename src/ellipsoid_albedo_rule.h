@@ -4,9 +4,8 @@
 // The slope-plane rule of ellipsoid_albedo.h as a template over its node
 // evaluator: `Nodes` integrates n pieces [a_j, b_j], piece j on the ray
 // rays[j], in the signed piece coordinate (EllipsoidRay::At), returning
-// each one's Kronrod 15 and
-// Gauss 7 sums (weights on [-1, 1], without the half width) of
-// EllipsoidRay::Eval times the map's Jacobian.
+// each one's Kronrod 15 and Gauss 7 sums (weights on [-1, 1], without the
+// half width) of EllipsoidRay::Eval times the map's Jacobian.
 // ScalarEllipsoidNodes is the double reference; quadrature_simd.cc
 // evaluates the 15 nodes in lanes.
 
@@ -98,7 +97,7 @@ class EllipsoidRay {
     if (lo_edge_) c_lo_ = RiseWidth(len_ - mid_, true);
   }
 
-  // The ray's point at the signed piece coordinate o (Integrate): its
+  // The ray's point at the signed piece coordinate o (Layout): its
   // offsets y = x_hi - x and t = x - x_lo, and |dx/do|.
   void At(double o, double* y, double* t, double* jac) const {
     const bool upper = o >= 0;
@@ -560,7 +559,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // The rays of a psi piece, integrated together (IntegrateRays).
   std::vector<EllipsoidRay> batch;
   batch.reserve(15);
-  auto rays = [&](const double* psi, int count, double* value, double* err) {
+  auto ray_batch = [&](const double* psi, int count, double* value, double* err) {
     batch.clear();
     for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i]);
     IntegrateRays(batch.data(), count, nodes, value, err);
@@ -645,7 +644,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
       cut(rays.glancing[i], false, rays.glancing_width[i]);
     }
   }
-  return SegmentRule(rays, segments, tol, max_pieces);
+  return SegmentRule(ray_batch, segments, tol, max_pieces);
 }
 
 }  // namespace brdfbake

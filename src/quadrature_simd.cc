@@ -361,10 +361,10 @@ struct SimdAnisoNodes {
 };
 
 // One piece of an ellipsoid ray (ellipsoid_albedo_rule.h,
-// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::At,
+// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::At (its
+// half and map chosen per piece; hn::Expm1, 4 ulp, for std::expm1),
 // EllipsoidRay::WiAt and the ellipsoid's Lambda (ellipsoid.h), with both
-// sides of each branch computed and selected per lane (hn::Expm1, 4 ulp,
-// for std::expm1 in the map).
+// sides of each other branch computed and selected per lane.
 struct SimdEllipsoidNodes {
   void operator()(const EllipsoidRay *const *rays, const double *a, const double *b, int n,
                   double *k, double *g) const {
@@ -663,8 +663,8 @@ struct MomentTermsF64 {
   hn::Vec<DF64> a2, cc, two_b, v_min, r2_0;
 };
 template <class Model>
-void SimdMomentNodes(const AzimuthalFrame::FrameConsts& fc, double alpha_s, double lambda_o_s,
-                     bool separable, const Model& model, const double* theta, double* out) {
+void SimdMomentNodes(const AzimuthalFrame::FrameConsts& fc, const MomentAzimuthalE::Consts& mc,
+                     const Model& model, const double* theta, double* out) {
   using V = hn::Vec<DF64>;
   const DF64 d;
   const size_t N = hn::Lanes(d);
@@ -672,16 +672,16 @@ void SimdMomentNodes(const AzimuthalFrame::FrameConsts& fc, double alpha_s, doub
   NodesTo16(theta, th);
   const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0),
           four = hn::Set(d, 4.0);
-  const V alpha = hn::Set(d, alpha_s), a2 = hn::Set(d, alpha_s * alpha_s);
-  const V lambda_o = hn::Set(d, lambda_o_s), scale = hn::Set(d, fc.scale);
+  const V alpha = hn::Set(d, mc.alpha), a2 = hn::Set(d, mc.alpha * mc.alpha);
+  const V lambda_o = hn::Set(d, mc.lambda_o), scale = hn::Set(d, fc.scale);
   const V s_o = hn::Set(d, fc.s_o);
-  const V norm_c = hn::Set(d, 3.141592653589793 * (alpha_s * alpha_s) * 16);
+  const V norm_c = hn::Set(d, 3.141592653589793 * (mc.alpha * mc.alpha) * 16);
   for (size_t i = 0; i < 16; i += N) {
     V sa, ca, st, ct, s_i, mu_i;
     FrameAngles(d, fc, hn::Load(d, th + i), &sa, &ca, &st, &ct, &s_i, &mu_i);
     const V a = hn::IfThenElseZero(hn::Gt(mu_i, zero), hn::Div(mu_i, hn::Mul(alpha, s_i)));
     const V lambda_i = model.Lambda(d, a);
-    const V g2 = separable ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
+    const V g2 = mc.separable ? hn::Div(one, hn::Mul(hn::Add(one, lambda_i), hn::Add(one, lambda_o)))
                            : hn::Div(one, hn::Add(hn::Add(one, lambda_i), lambda_o));
     const V w = hn::Mul(hn::Mul(scale, g2), s_i);
     const auto valid = hn::And(hn::Gt(w, zero), hn::Gt(ca, zero));
@@ -723,9 +723,7 @@ AzimuthalResult BeckmannAlbedoTexel(double alpha, double mu, Masking masking, do
   return BeckmannAzimuthalAlbedoWith(
       alpha, mu, masking, tol, max_pieces,
       [](const BeckmannAzimuthalE& f, const double* theta, double* out) {
-        const BeckmannAzimuthalE::Consts c = f.consts();
-        SimdMomentNodes(f.frame_consts(), c.alpha, c.lambda_o, c.separable, SimdBeckmannModel{},
-                        theta, out);
+        SimdMomentNodes(f.frame_consts(), f.consts(), SimdBeckmannModel{}, theta, out);
       });
 }
 
@@ -810,9 +808,8 @@ AzimuthalResult StdAlbedoTexel(const StudentTNdf<double>& ndf, double mu, Maskin
   return StdAzimuthalAlbedoWith(
       ndf, mu, masking, tol, max_pieces,
       [&](const StdAzimuthalE& f, const double* theta, double* out) {
-        const StdAzimuthalE::Consts c = f.consts();
-        SimdMomentNodes(f.frame_consts(), c.alpha, c.lambda_o, c.separable,
-                        SimdStdModel{c.gamma, &f.moments(), &lc}, theta, out);
+        SimdMomentNodes(f.frame_consts(), f.consts(), SimdStdModel{f.gamma(), &f.moments(), &lc},
+                        theta, out);
       });
 }
 #endif

@@ -139,12 +139,7 @@ class StdAzimuthalE : public MomentAzimuthalE {
   // (kept with the table: a property of gamma).
   double horizon_widen() const { return moments_->horizon_widen(); }
 
-  // What operator() reads besides the frame, for its SIMD twin.
-  struct Consts {
-    double alpha, lambda_o, gamma;
-    bool separable;
-  };
-  Consts consts() const { return {alpha_, lambda_o_, ndf_->gamma(), separable_}; }
+  double gamma() const { return ndf_->gamma(); }
 
   double operator()(double theta_i) const {
     const Angles g = AnglesAt(theta_i);
