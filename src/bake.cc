@@ -29,6 +29,7 @@
 #include "disk_quadrature.h"
 #include "sampling_integrators.h"
 #include "quadrature_simd.h"
+#include "sampling_simd.h"
 
 namespace brdfbake {
 namespace {
@@ -308,11 +309,16 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
     case IntegratorKind::kQuadrature:
       return QuadratureFor(ndf, mu, spec, n, spec.tolerance);
     case IntegratorKind::kQmc:
-      return QmcTexel(ndf, mu, spec.masking, n, texel_seed, false);
-    case IntegratorKind::kMc:
-      return QmcTexel(ndf, mu, spec.masking, n, texel_seed, true);
+    case IntegratorKind::kMc: {
+      const bool plain_mc = spec.integrator == IntegratorKind::kMc;
+      if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
+        if (spec.simd) return SimdQmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
+      }
+      return QmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
+    }
     case IntegratorKind::kEngine: {
-      const QuadratureResult r = EngineRule(ndf, mu, spec.masking, n);
+      const QuadratureResult r = spec.simd ? SimdEngineRule(ndf, mu, spec.masking, n)
+                                           : EngineRule(ndf, mu, spec.masking, n);
       if (!spec.estimate_error) {
         TexelEstimate v;
         v.e = r.e;

@@ -26,78 +26,129 @@
 
 namespace brdfbake {
 
+// The sums over a point set that the integrators below take: sum(u1, u2,
+// n, &acc, &acc_fc) adds up w and w Fc at the n points (u1[i], u2[i]).
+// The scalar one evaluates `Integrand` (the model's visible-normal
+// sampler) point by point in order; sampling_simd.h has the lanes twins.
+template <class Ndf>
+auto ScalarVisibleSum(const Ndf& ndf, const Vec3<double>& wo, Masking masking) {
+  return [f = Integrand<Ndf>(ndf, wo, masking)](const double* u1, const double* u2, int n,
+                                                double* acc, double* acc_fc) {
+    double e = 0, fc = 0;
+    for (int i = 0; i < n; ++i) {
+      double w, wfc;
+      f.Eval(u1[i], u2[i], &w, &wfc);
+      e += w;
+      fc += wfc;
+    }
+    *acc = e;
+    *acc_fc = fc;
+  };
+}
+
+// The view of the sampling integrators: azimuth 0, mu at least kMuMin.
+inline Vec3<double> SamplingView(double mu) { return FromMuPhi(std::max(mu, kMuMin), 0.0); }
+
 // Randomized QMC: `replicas` Cranley-Patterson rotations of an
 // n-point Hammersley set; the estimate is their mean and the error 4 times
-// the standard error of the mean.
-template <class Ndf>
-TexelEstimate QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uint64_t seed,
-                    bool plain_mc) {
-  const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
-  const Integrand<Ndf> f(ndf, wo, masking);
-  const int replicas = 8;
+// the standard error of the mean. Plain MC draws the points from the
+// texel's SplitMix64 stream instead (u1 then u2 per point). `sum` adds up
+// one replica's points (ScalarVisibleSum).
+template <class Sum>
+TexelEstimate QmcTexelWith(int samples, uint64_t seed, bool plain_mc, const Sum& sum) {
+  constexpr int replicas = 8;
   const int n = std::max(1, samples / replicas);
   Rng rng(seed);
-  double sum_e = 0, sum_e2 = 0, sum_b = 0, sum_b2 = 0, sum_s = 0, sum_s2 = 0;
+  thread_local std::vector<double> u1, u2;
+  u1.resize(n);
+  u2.resize(n);
+  double e[replicas], b[replicas], s[replicas];
   for (int r = 0; r < replicas; ++r) {
     const double shift1 = rng.Uniform(), shift2 = rng.Uniform();
-    double acc = 0, acc_fc = 0;
     for (int i = 0; i < n; ++i) {
-      double u1, u2;
       if (plain_mc) {
-        u1 = rng.Uniform();
-        u2 = rng.Uniform();
+        u1[i] = rng.Uniform();
+        u2[i] = rng.Uniform();
       } else {
-        u1 = (i + 0.5) / n + shift1;
-        u2 = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
-        u1 -= std::floor(u1);
-        u2 -= std::floor(u2);
+        const double a = (i + 0.5) / n + shift1;
+        const double b = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
+        u1[i] = a - std::floor(a);
+        u2[i] = b - std::floor(b);
       }
-      double w, wfc;
-      f.Eval(u1, u2, &w, &wfc);
-      acc += w;
-      acc_fc += wfc;
     }
-    const double e = acc / n, b = acc_fc / n, s = e - b;
-    sum_e += e; sum_e2 += e * e;
-    sum_b += b; sum_b2 += b * b;
-    sum_s += s; sum_s2 += s * s;
+    double acc = 0, acc_fc = 0;
+    sum(u1.data(), u2.data(), n, &acc, &acc_fc);
+    e[r] = acc / n;
+    b[r] = acc_fc / n;
+    s[r] = e[r] - b[r];
   }
-  auto err = [&](double sum, double sum2) {
-    const double mean = sum / replicas;
-    const double var = std::max(0.0, (sum2 - replicas * mean * mean) / (replicas - 1));
-    return 4.0 * std::sqrt(var / replicas);
+  // The mean, and 4 standard errors from the squared deviations from it
+  // (two passes: sum x^2 - R mean^2 would cancel to rounding noise where
+  // the replicas agree to 1e-8 of their value).
+  auto mean = [&](const double* x) {
+    double m = 0;
+    for (int r = 0; r < replicas; ++r) m += x[r];
+    return m / replicas;
+  };
+  auto err = [&](const double* x, double m) {
+    double ss = 0;
+    for (int r = 0; r < replicas; ++r) ss += (x[r] - m) * (x[r] - m);
+    return 4.0 * std::sqrt(ss / (replicas - 1) / replicas);
   };
   TexelEstimate v;
-  v.e = sum_e / replicas;
-  v.bias = sum_b / replicas;
-  v.scale = sum_s / replicas;
-  v.err_e = err(sum_e, sum_e2);
-  v.err_bias = err(sum_b, sum_b2);
-  v.err_scale = err(sum_s, sum_s2);
+  v.e = mean(e);
+  v.bias = mean(b);
+  v.scale = mean(s);
+  v.err_e = err(e, v.e);
+  v.err_bias = err(b, v.bias);
+  v.err_scale = err(s, v.scale);
   return v;
+}
+
+template <class Ndf>
+TexelEstimate QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, uint64_t seed,
+                       bool plain_mc) {
+  return QmcTexelWith(samples, seed, plain_mc, ScalarVisibleSum(ndf, SamplingView(mu), masking));
 }
 
 // The engine setting: an N-point Hammersley set (no randomization) driving
 // NDF sampling of the half vector, pdf(wi) = D(h) h.z / (4 wo.h), so the
-// weight is G2 (wo.h) / (wo.z h.z).
-template <class Ndf>
-QuadratureResult EngineRule(const Ndf& ndf, double mu, Masking masking, int samples) {
-  const Vec3<double> wo = FromMuPhi(std::max(mu, kMuMin), 0.0);
-  QuadratureResult r;
+// weight is G2 (wo.h) / (wo.z h.z). `sum` as for QmcTexelWith, with
+// u1 = i / N the azimuth's and u2 the radius's variable of SampleNdf.
+template <class Sum>
+QuadratureResult EngineRuleWith(int samples, const Sum& sum) {
+  thread_local std::vector<double> u1, u2;
+  u1.resize(samples);
+  u2.resize(samples);
   for (int i = 0; i < samples; ++i) {
-    const double u1 = static_cast<double>(i) / samples;
-    const double u2 = RadicalInverse2(static_cast<uint32_t>(i));
-    const Vec3<double> h = ndf.SampleNdf(u1, u2);
-    const Vec3<double> wi = Reflect(wo, h);
-    const double wo_h = Dot(wo, h);
-    if (!(wi.z > 0) || !(wo_h > 0) || !(h.z > 0)) continue;
-    const double w = G2(ndf, wi, wo, h, masking) * wo_h / (wo.z * h.z);
-    r.e += w;
-    r.fc += w * SchlickWeight(wo_h);
+    u1[i] = static_cast<double>(i) / samples;
+    u2[i] = RadicalInverse2(static_cast<uint32_t>(i));
   }
+  QuadratureResult r;
+  sum(u1.data(), u2.data(), samples, &r.e, &r.fc);
   r.e /= samples;
   r.fc /= samples;
   return r;
+}
+
+template <class Ndf>
+QuadratureResult EngineRule(const Ndf& ndf, double mu, Masking masking, int samples) {
+  const Vec3<double> wo = SamplingView(mu);
+  return EngineRuleWith(samples, [&](const double* u1, const double* u2, int n, double* acc,
+                                     double* acc_fc) {
+    double e = 0, fc = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3<double> h = ndf.SampleNdf(u1[i], u2[i]);
+      const Vec3<double> wi = Reflect(wo, h);
+      const double wo_h = Dot(wo, h);
+      if (!(wi.z > 0) || !(wo_h > 0) || !(h.z > 0)) continue;
+      const double w = G2(ndf, wi, wo, h, masking) * wo_h / (wo.z * h.z);
+      e += w;
+      fc += w * SchlickWeight(wo_h);
+    }
+    *acc = e;
+    *acc_fc = fc;
+  });
 }
 
 }  // namespace brdfbake

@@ -204,7 +204,12 @@ foreach(target scalar best)
   endif()
 endforeach()
 expect_one_line_error(bake --table E --target NEON -o "${out_dir}/target_bad.exr")
-expect_one_line_error(bake --table E --target scalar --integrator qmc -o "${out_dir}/target_bad.exr")
+# Every integrator takes --target: scalar runs the double reference.
+run_tool(TRUE out err bake --table E --size 4x4 --target scalar --integrator qmc
+         -o "${out_dir}/target_qmc.exr")
+if(NOT out MATCHES "wrote .*E ggx 4x4, qmc integrator")
+  message(FATAL_ERROR "bake --target scalar --integrator qmc: '${out}'")
+endif()
 # std over a gamma axis: a third --size entry (E_avg: a second) without
 # --gamma; the axis takes --range and only the tail warp.
 run_tool(TRUE out err bake --table E --model std --size 6x5x4 -o "${out_dir}/std_gamma.exr")

@@ -1,0 +1,43 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The sampling integrators of sampling_integrators.h (randomized QMC, MC,
+// the engine setting) with their samples in double SIMD lanes: the same
+// point sets, drawn in the same order, and per point the model's sampler
+// and weight in lanes (simd/*_sampling-inl.h and the double Lambda
+// kernels); each replica's sum is accumulated in lanes. Dispatched once per
+// texel to the best Highway target (or the one ForceTarget chose).
+
+#ifndef BRDFBAKE_SRC_SAMPLING_SIMD_H_
+#define BRDFBAKE_SRC_SAMPLING_SIMD_H_
+
+#include <cstdint>
+
+#include "brdfbake/bake.h"
+#include "brdfbake/beckmann.h"
+#include "brdfbake/brdf.h"
+#include "brdfbake/ggx.h"
+#include "brdfbake/std_ndf.h"
+#include "texel_integrand.h"
+
+namespace brdfbake {
+
+// QmcTexel for GGX with GGX's visible-normal sampler in lanes.
+TexelEstimate SimdQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
+                           uint64_t seed, bool plain_mc);
+
+// EngineRule with NDF sampling of the half vector in lanes.
+QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking masking,
+                                int samples);
+#if BRDFBAKE_WITH_BECKMANN
+QuadratureResult SimdEngineRule(const BeckmannNdf<double>& ndf, double mu, Masking masking,
+                                int samples);
+#endif
+#if BRDFBAKE_WITH_STD
+QuadratureResult SimdEngineRule(const StudentTNdf<double>& ndf, double mu, Masking masking,
+                                int samples);
+#endif
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_SAMPLING_SIMD_H_
