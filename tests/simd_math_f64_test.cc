@@ -7,7 +7,8 @@
 // full-mantissa points, and Beckmann's Lambda(a) swept log-uniformly over
 // [1e-8, 30], uniformly over [0, 30], at the subnormal and overflow edges,
 // and at a = 0, negative a, +-inf and NaN, and against its scalar twin
-// BeckmannNdf<double>::UnitLambda. Each check asserts the bound documented
+// BeckmannNdf<double>::UnitLambda; erfcx(a) over [0, 12] and [1e-10,
+// 1e150]. Each check asserts the bound documented
 // beside the kernel and prints the observed maximum.
 
 #include <algorithm>
@@ -134,6 +135,47 @@ inline const std::vector<Ref>& ExpRefs() {
   return refs;
 }
 
+// erfcx(a) = exp(a^2) erfc(a) in 50 digits, a uniform over [0, 12] (the
+// visible-slope sampler's range is |x| <= 9) and log-uniform over [1e-10,
+// 1e150], with random low bits, plus the branch point 1/2 and 0.
+inline const std::vector<double>& ErfcxArgs() {
+  static const std::vector<double> args = [] {
+    std::vector<double> v;
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> jitter(0.0, 1.0);
+    const int kN = 20000;
+    for (int i = 0; i <= kN; ++i) v.push_back(12.0 * (i + jitter(rng)) / kN);
+    for (int i = 0; i <= kN; ++i) v.push_back(std::pow(10.0, -10.0 + 160.0 * (i + jitter(rng)) / kN));
+    for (double e : {0.0, 0.5, std::nextafter(0.5, 0.0), 1e-300, 4.0 / (165.0 / 128.0), 1e150}) {
+      v.push_back(e);
+    }
+    return v;
+  }();
+  return args;
+}
+
+inline const std::vector<Ref>& ErfcxRefs() {
+  static const std::vector<Ref> refs = [] {
+    std::vector<Ref> r;
+    for (double a : ErfcxArgs()) {
+      const Big ba(a);
+      if (a <= 20) {
+        r.push_back(ToRef(exp(ba * ba) * boost::math::erfc(ba)));
+        continue;
+      }
+      // Beyond, exp(a^2) erfc(a) leaves the range of Boost's erfc: the
+      // continued fraction (A&S 7.1.14) erfcx(a) = 1 / (sqrt(pi) (a + (1/2)
+      // / (a + 1 / (a + (3/2) / (a + ...))))), 200 levels (converged to 50
+      // digits from a = 5 on).
+      Big tail = ba;
+      for (int k = 200; k >= 1; --k) tail = ba + Big(k) / 2 / tail;
+      r.push_back(ToRef(1 / (boost::math::constants::root_pi<Big>() * tail)));
+    }
+    return r;
+  }();
+  return refs;
+}
+
 }  // namespace simd_math_f64_test
 }  // namespace brdfbake
 
@@ -162,6 +204,7 @@ using simd_math_f64_test::Ref;
 constexpr double kExpNegSqRel = 3.3e-16;   // ExpNegSquareF64
 constexpr double kLambdaRel = 1.5e-15;     // BeckmannLambdaF64
 constexpr double kLambdaBound = 2e-15;
+constexpr double kErfcxRel = 1e-15;       // ErfcxF64
 constexpr double kSubnormalUlp = 4.9406564584124654e-324;
 
 void CheckExpNegSquareF64() {
@@ -245,6 +288,21 @@ void CheckBeckmannLambdaF64() {
       hwy::TargetName(HWY_TARGET), worst_twin, worst_scalar, worst_scalar_rel);
 }
 
+void CheckErfcxF64() {
+  const std::vector<double>& as = simd_math_f64_test::ErfcxArgs();
+  const std::vector<Ref>& refs = simd_math_f64_test::ErfcxRefs();
+  const auto got = MapF64(as, [](auto d, auto v) { return ErfcxF64(d, v); });
+  double worst = 0, worst_a = 0;
+  for (size_t i = 0; i < as.size(); ++i) {
+    const double rel = AbsErr(got[i], refs[i]) / refs[i].hi;
+    ASSERT_LE(rel, kErfcxRel) << "erfcx a=" << as[i] << " got " << got[i] << " ref "
+                              << refs[i].hi;
+    if (rel > worst) worst = rel, worst_a = as[i];
+  }
+  std::printf("%s: ErfcxF64 max rel error %.3g at a=%.17g (bound %.2g, %zu points)\n",
+              hwy::TargetName(HWY_TARGET), worst, worst_a, kErfcxRel, as.size());
+}
+
 }  // namespace
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
@@ -255,5 +313,6 @@ namespace brdfbake {
 HWY_BEFORE_TEST(SimdMathF64Test);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckExpNegSquareF64);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckBeckmannLambdaF64);
+HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckErfcxF64);
 }  // namespace brdfbake
 #endif
