@@ -311,7 +311,7 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
     case IntegratorKind::kQmc:
     case IntegratorKind::kMc: {
       const bool plain_mc = spec.integrator == IntegratorKind::kMc;
-      if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
+      if constexpr (!std::is_same_v<Ndf, StudentTNdf<double>>) {
         if (spec.simd) return SimdQmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
       }
       return QmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);

@@ -19,6 +19,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "simd/beckmann_sampling-inl.h"
 #include "simd/ggx_sampling-inl.h"
 #include "simd/math_f64-inl.h"
 #if BRDFBAKE_WITH_STD
@@ -176,20 +177,18 @@ struct GgxLanesLambda {
   }
 };
 
-TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
-                          uint64_t seed, bool plain_mc) {
-  const DF64 d;
-  const Vec3<double> wo = SamplingView(mu);
-  const GgxSamplingConsts<DF64> c(d, ndf.alpha_x(), ndf.alpha_y());
-  const LanesView v(d, wo, ndf.Lambda(wo));
-  const GgxLanesLambda lambda{&c.ggx};
+// QMC and MC with a model's exact visible-normal sampler `sample(d, wx,
+// wy, wz, u1, u2, &m)`: f cos_i / pdf = G2 / G1(wo) (VisibleSampler).
+template <class Sample, class Lambda>
+TexelEstimate VisibleQmcInLanes(double mu, double lambda_o, Masking masking, int samples,
+                                uint64_t seed, bool plain_mc, const Sample& sample,
+                                const Lambda& lambda) {
+  const LanesView v(DF64(), SamplingView(mu), lambda_o);
   TexelEstimate out;
   WithMasking(masking, [&](auto separable) {
-    // f cos_i / pdf = G2 / G1(wo) for exact visible-normal sampling
-    // (VisibleSampler).
     auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
       VF64 mx, my, mz;
-      GgxSampleVisible(d, c, v.wx, hn::Zero(d), v.wz, u1, u2, &mx, &my, &mz);
+      sample(d, v.wx, hn::Zero(d), v.wz, u1, u2, &mx, &my, &mz);
       const VF64 wo_m = hn::MulAdd(v.wx, mx, hn::Mul(v.wz, mz));
       VF64 ix, iy, iz;
       ReflectView(v, mx, my, mz, wo_m, &ix, &iy, &iz);
@@ -203,6 +202,17 @@ TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking,
                            double* acc_fc) { SumInLanes(weights, u1, u2, n, acc, acc_fc); });
   });
   return out;
+}
+
+TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
+                          uint64_t seed, bool plain_mc) {
+  const GgxSamplingConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y());
+  return VisibleQmcInLanes(
+      mu, ndf.Lambda(SamplingView(mu)), masking, samples, seed, plain_mc,
+      [&](DF64 d, VF64 wx, VF64 wy, VF64 wz, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+        GgxSampleVisible(d, c, wx, wy, wz, u1, u2, x, y, z);
+      },
+      GgxLanesLambda{&c.ggx});
 }
 
 // The engine rule for a model with NDF sampler `normal(d, u1, u2, &m)` and
@@ -247,24 +257,42 @@ HWY_INLINE VF64 BeckmannR2(DF64 d, VF64 u) {
   return hn::Neg(hn::Log1p(d, hn::Neg(ClampBelowOne(d, u))));
 }
 struct BeckmannLanesLambda {
-  double alpha;
+  const BeckmannConsts<DF64>* c;
   HWY_INLINE VF64 operator()(DF64 d, VF64 x, VF64 y, VF64 z) const {
-    return IsotropicLambda(
-        d, [](DF64 d, VF64 a) { return BeckmannLambdaF64(d, a); }, alpha, x, y, z);
+    return BeckmannLambda(d, *c, x, y, z);
   }
 };
+QuadratureResult BeckmannEngineInLanes(double alpha, double mu, double lambda_o, Masking masking,
+                                       int samples) {
+  const BeckmannConsts<DF64> c(DF64(), alpha, alpha, 1.0);
+  return EngineInLanes(
+      mu, lambda_o, masking, samples,
+      [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+        SlopeNormal(d, alpha, BeckmannR2(d, u2), u1, x, y, z);
+      },
+      BeckmannLanesLambda{&c});
+}
+TexelEstimate BeckmannQmcInLanes(double alpha, double mu, double lambda_o, Masking masking,
+                                 int samples, uint64_t seed, bool plain_mc) {
+  const BeckmannConsts<DF64> c(DF64(), alpha, alpha, 1.0);
+  return VisibleQmcInLanes(
+      mu, lambda_o, masking, samples, seed, plain_mc,
+      [&](DF64 d, VF64 wx, VF64 wy, VF64 wz, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+        BeckmannSampleVisible(d, c, wx, wy, wz, u1, u2, x, y, z);
+      },
+      BeckmannLanesLambda{&c});
+}
 #endif
 
 #if BRDFBAKE_WITH_BECKMANN
 QuadratureResult BeckmannEngineTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
                                      int samples) {
-  const double alpha = ndf.alpha_x();
-  return EngineInLanes(
-      mu, ndf.Lambda(SamplingView(mu)), masking, samples,
-      [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-        SlopeNormal(d, alpha, BeckmannR2(d, u2), u1, x, y, z);
-      },
-      BeckmannLanesLambda{alpha});
+  return BeckmannEngineInLanes(ndf.alpha_x(), mu, ndf.Lambda(SamplingView(mu)), masking, samples);
+}
+TexelEstimate BeckmannQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
+                               int samples, uint64_t seed, bool plain_mc) {
+  return BeckmannQmcInLanes(ndf.alpha_x(), mu, ndf.Lambda(SamplingView(mu)), masking, samples,
+                            seed, plain_mc);
 }
 #endif
 
@@ -275,14 +303,7 @@ QuadratureResult StdEngineTexel(const StudentTNdf<double>& ndf, double mu, Maski
                                 int samples) {
   const double alpha = ndf.alpha_x(), g = ndf.gamma();
   const double lambda_o = ndf.Lambda(SamplingView(mu));
-  if (std::isinf(g)) {
-    return EngineInLanes(
-        mu, lambda_o, masking, samples,
-        [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-          SlopeNormal(d, alpha, BeckmannR2(d, u2), u1, x, y, z);
-        },
-        BeckmannLanesLambda{alpha});
-  }
+  if (std::isinf(g)) return BeckmannEngineInLanes(alpha, mu, lambda_o, masking, samples);
   // StudentTNdf::UnitSampleR2: r2 = (gamma - 1) expm1(-log1p(-u) / (gamma - 1)).
   const StudentTLambdaF64Consts lc(g);
   return EngineInLanes(
@@ -319,6 +340,12 @@ QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking ma
 }
 
 #if BRDFBAKE_WITH_BECKMANN
+HWY_EXPORT(BeckmannQmcTexel);
+TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
+                           int samples, uint64_t seed, bool plain_mc) {
+  return HWY_DYNAMIC_DISPATCH(BeckmannQmcTexel)(ndf, mu, masking, samples, seed, plain_mc);
+}
+
 HWY_EXPORT(BeckmannEngineTexel);
 QuadratureResult SimdEngineRule(const BeckmannNdf<double>& ndf, double mu, Masking masking,
                                 int samples) {

@@ -22,9 +22,14 @@
 
 namespace brdfbake {
 
-// QmcTexel for GGX with GGX's visible-normal sampler in lanes.
+// QmcTexel (QMC, or MC with plain_mc) with the model's visible-normal
+// sampler in lanes.
 TexelEstimate SimdQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
                            uint64_t seed, bool plain_mc);
+#if BRDFBAKE_WITH_BECKMANN
+TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
+                           int samples, uint64_t seed, bool plain_mc);
+#endif
 
 // EngineRule with NDF sampling of the half vector in lanes.
 QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking masking,

@@ -61,15 +61,16 @@ double Differs(const TexelEstimate& a, const TexelEstimate& b) {
   return std::max({std::abs(a.e - b.e), std::abs(a.bias - b.bias), std::abs(a.scale - b.scale)});
 }
 
-// QMC and MC (the same estimator over other points) with GGX's
+// QMC and MC (the same estimator over other points) with the model's
 // visible-normal sampler; 8 x 125 points leave a tail of 5 lanes on AVX3
 // and 1 on AVX2, 8 x 128 none.
-TEST(SamplingSimdTest, GgxQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
+template <class Ndf>
+void CheckQmc(const char* model, const std::function<Ndf(double)>& make) {
   for (bool plain_mc : {false, true}) {
     for (int samples : {1000, 1024}) {
-      OnEveryTarget(plain_mc ? "ggx mc" : "ggx qmc", [&](Masking masking, double alpha,
-                                                         double mu) {
-        const GgxNdf<double> ndf(alpha);
+      const std::string what = std::string(model) + (plain_mc ? " mc" : " qmc");
+      OnEveryTarget(what.c_str(), [&](Masking masking, double alpha, double mu) {
+        const Ndf ndf = make(alpha);
         const TexelEstimate ref = QmcTexel(ndf, mu, masking, samples, 77, plain_mc);
         const TexelEstimate got = SimdQmcTexel(ndf, mu, masking, samples, 77, plain_mc);
         // The error estimates, 4 standard errors of the 8 replicas, move by
@@ -83,6 +84,16 @@ TEST(SamplingSimdTest, GgxQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
     }
   }
 }
+
+TEST(SamplingSimdTest, GgxQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
+  CheckQmc<GgxNdf<double>>("ggx", [](double a) { return GgxNdf<double>(a); });
+}
+
+#if BRDFBAKE_WITH_BECKMANN
+TEST(SamplingSimdTest, BeckmannQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
+  CheckQmc<BeckmannNdf<double>>("beckmann", [](double a) { return BeckmannNdf<double>(a); });
+}
+#endif
 
 // Every count of points per replica from 1 to 2 vectors and a few more:
 // each tail length of every target, against the scalar sum.

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <boost/math/special_functions/erf.hpp>
 #include <cmath>
+#include <iomanip>
+#include <random>
 #include <cstdio>
 #include <vector>
 
@@ -250,6 +252,103 @@ void CheckBeckmannSampleVisible() {
       Target(), worst, kVisibleSampleAbs, worst_raw, worst_dot, worst_pdf);
 }
 
+// The same kernels in double lanes (the sampling integrators' samplers,
+// src/sampling_simd.cc): erf^-1 against boost's erfc_inv, and
+// BeckmannSampleVisible and BeckmannPdfVisible against BeckmannNdf<double>
+// for the same double (u1, u2), on the random views and the grid of
+// CheckBeckmannSampleVisible with 1 - u1 and u1 down to 2^-50.
+constexpr double kF64ErfInvRel = 1e-15;  // erf^-1: relative, + 4e-16 absolute
+constexpr double kF64VisibleAbs = 1e-14;  // the unit-roughness normal, max component
+constexpr double kF64PdfRel = 1e-13;      // + 2e-16 / (w.m), the rounding of w.m
+void CheckBeckmannSamplingF64() {
+  using DD = hn::ScalableTag<double>;
+  const DD dd;
+  const size_t N = hn::Lanes(dd);
+  std::vector<double> u;
+  for (uint32_t i = 0; i <= (1u << 18); ++i) u.push_back(static_cast<double>(i) / (1u << 18));
+  for (int k = 1; k <= 60; ++k) {
+    u.push_back(std::ldexp(1.0, -k));
+    u.push_back(1.0 - std::ldexp(1.0, -std::min(k, 53)));
+  }
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (int i = 0; i < 50000; ++i) u.push_back(uni(rng));
+  while (u.size() % N) u.push_back(0.5);
+  double worst_inv = 0;
+  for (size_t i = 0; i < u.size(); i += N) {
+    HWY_ALIGN double y[HWY_MAX_BYTES / 8];
+    hn::Store(ErfInvCentered(dd, hn::LoadU(dd, u.data() + i)), dd, y);
+    for (size_t k = 0; k < N; ++k) {
+      const double q = std::max(std::min(u[i + k], 1.0 - u[i + k]), 0x1p-53);
+      const double mag = boost::math::erfc_inv(2 * q);
+      const double ref = u[i + k] < 0.5 ? -mag : mag;
+      const double e = std::abs(y[k] - ref) / (kF64ErfInvRel * std::abs(ref) + 4e-16);
+      worst_inv = std::max(worst_inv, e);
+      ASSERT_LE(e, 1.0) << "u " << u[i + k] << " got " << y[k] << " ref " << ref;
+    }
+  }
+  const Dirs views = Views(20000, 11);
+  std::vector<double> wx, wy, wz, u1, u2;
+  const std::vector<float> r1 = Uniforms(20000, 12), r2 = Uniforms(20000, 13);
+  for (size_t i = 0; i < views.size(); ++i) {
+    const Vec3<double> w = Normalize(views.At(i));
+    wx.push_back(w.x), wy.push_back(w.y), wz.push_back(w.z);
+    u1.push_back(std::min(r1[i] + 0x1p-30 * r2[i], 1.0));
+    u2.push_back(std::min(r2[i] + 0x1p-30 * r1[i], 1.0));
+  }
+  for (int i = 0; i < 100; ++i) {
+    for (int j = 0; j < 100; ++j) {
+      const Vec3<double> w = FromMuPhi(std::pow(10.0, -4.0 + 4.0 * i / 99), 0.1 + 0.37 * j);
+      wx.push_back(w.x), wy.push_back(w.y), wz.push_back(w.z);
+      const double t = std::exp2(-50.0 * std::abs(j - 49.5) / 49.5);
+      u1.push_back(j < 50 ? t : 1 - t);
+      u2.push_back(u2[i * 100 + j]);
+    }
+  }
+  const size_t n = wx.size();
+  while (wx.size() % N) {
+    wx.push_back(0), wy.push_back(0), wz.push_back(1), u1.push_back(0.5), u2.push_back(0.5);
+  }
+  std::vector<double> mx(wx.size()), my(wx.size()), mz(wx.size()), pdf(wx.size());
+  double worst = 0, worst_pdf = 0;
+  for (const auto& a : kSamplingAlphas) {
+    const BeckmannNdf<double> ndf(a[0], a[1]);
+    const BeckmannConsts<DD> c(dd, a[0], a[1], 1.0);
+    for (size_t i = 0; i < wx.size(); i += N) {
+      const auto x = hn::LoadU(dd, &wx[i]), y = hn::LoadU(dd, &wy[i]), z = hn::LoadU(dd, &wz[i]);
+      hn::Vec<DD> ox, oy, oz;
+      BeckmannSampleVisible(dd, c, x, y, z, hn::LoadU(dd, &u1[i]), hn::LoadU(dd, &u2[i]), &ox,
+                            &oy, &oz);
+      hn::StoreU(ox, dd, &mx[i]);
+      hn::StoreU(oy, dd, &my[i]);
+      hn::StoreU(oz, dd, &mz[i]);
+      hn::StoreU(BeckmannPdfVisible(dd, c, x, y, z, ox, oy, oz), dd, &pdf[i]);
+    }
+    const double cax = std::max<double>(a[0], 1e-4), cay = std::max<double>(a[1], 1e-4);
+    for (size_t i = 0; i < n; ++i) {
+      const Vec3<double> w(wx[i], wy[i], wz[i]), got(mx[i], my[i], mz[i]);
+      const Vec3<double> ref = ndf.SampleVisible(w, u1[i], u2[i]);
+      const double e = MaxAbsDiff(Unstretch(got, cax, cay), Unstretch(ref, cax, cay));
+      worst = std::max(worst, e);
+      ASSERT_LE(e, kF64VisibleAbs) << "alpha " << a[0] << "," << a[1] << " i=" << i
+                                   << std::setprecision(17) << " wo " << w.x << "," << w.y << ","
+                                   << w.z << " u " << u1[i] << "," << u2[i] << " got " << got.x
+                                   << "," << got.y << "," << got.z << " ref " << ref.x << ","
+                                   << ref.y << "," << ref.z;
+      const double wm = Dot(w, got);
+      if (!(wm > 1e-300) || !(got.z > 0)) continue;
+      const double pref = ndf.PdfVisible(w, got);
+      if (!(pref > 1e-300)) continue;
+      const double pe = std::abs(pdf[i] - pref) / pref / (kF64PdfRel + 2.2e-16 / wm);
+      worst_pdf = std::max(worst_pdf, pe);
+      ASSERT_LE(pe, 1.0) << "pdf i=" << i << " got " << pdf[i] << " ref " << pref;
+    }
+  }
+  std::printf("%s: double lanes: erf^-1 error / bound %.3g; Beckmann SampleVisible max error "
+              "%.3g (bound %.0e), PdfVisible error / bound %.3g\n",
+              Target(), worst_inv, worst, kF64VisibleAbs, worst_pdf);
+}
+
 // Every branch of Algorithm 1: sigma <= 0.01 (NDF), gamma > 10 (Beckmann),
 // the GGX, NDF and Beckmann bands between.
 
@@ -267,5 +366,6 @@ HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannBrdf);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannSampleNdf);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckErfInv);
 HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannSampleVisible);
+HWY_EXPORT_AND_TEST_P(SimdBeckmannTest, CheckBeckmannSamplingF64);
 }  // namespace brdfbake
 #endif

@@ -61,9 +61,12 @@ class BeckmannNdf : public SlopeNdf<T, BeckmannNdf<T>> {
       sin_phi = ws.y / sin_t;
     }
     const T x = SampleVisibleSlopeX(ws.z, sin_t, u1);
-    const T uy = std::clamp(T(2) * u2 - T(1), -T(1) + std::numeric_limits<T>::epsilon(),
-                            T(1) - std::numeric_limits<T>::epsilon());
-    const T y = boost::math::erf_inv(uy);
+    // y = erf^-1(2 u2 - 1) = -+erfc^-1(2 q), q = min(u2, 1 - u2) (exact; 2 u2 - 1
+    // would round away the tail's precision), clamped at 2^-53 as 2 u2 - 1
+    // at +-(1 - 2^-52).
+    const T q = std::max(std::min(u2, T(1) - u2), std::numeric_limits<T>::epsilon() / 2);
+    const T y_mag = boost::math::erfc_inv(T(2) * q);
+    const T y = u2 < T(0.5) ? -y_mag : y_mag;
     // Rotate back to the view azimuth, unstretch, slope -> normal.
     const T sx = ax * (cos_phi * x - sin_phi * y);
     const T sy = ay * (sin_phi * x + cos_phi * y);

@@ -1,7 +1,9 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Beckmann visible-normal sampling and its density, float lanes; the scalar
+// Beckmann visible-normal sampling and its density, generic over the lane
+// type (float for the batch kernels, double for the sampling integrators;
+// see "Double lanes" below); the scalar
 // twins (double reference) are BeckmannNdf::SampleVisible and ::PdfVisible in
 // include/brdfbake/beckmann.h, which this kernel follows step by step: for
 // the same (u1, u2) it returns the same normal.
@@ -65,6 +67,15 @@
 // exp(-r2) is below FLT_MIN and the batch call flushes it (measured 0.67 of
 // the bound at most).
 //
+// Double lanes (the sampling integrators): the same steps with erfcx and
+// exp(-x^2) in double (ErfcxF64, ExpNegSquareF64), 6 Newton steps, 15
+// Taylor terms, erf^-1 refined by two Newton steps (ErfInvCentered), and
+// the start deep in the upper tail from U's leading term. Error: the
+// unit-roughness normal within 1e-14 of BeckmannNdf<double>::SampleVisible
+// (max component), PdfVisible within 1e-13 + 2.2e-16 / (w.m) relative, for
+// any u1, u2 in [0, 1] with 1 - u1 and u1 down to 2^-50 (CheckBeckmannSamplingF64,
+// every target: measured 2.3e-15 and 0.64 of the pdf's bound).
+//
 // Cost per lane: 4 Newton steps of one exp, one log, two divisions and ~50
 // FMA each, plus the guess (atan, log1p, expm1, one erf^-1) and erf^-1(2 u2 -
 // 1). The steps form one dependency chain, so a vector takes about the same
@@ -102,8 +113,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 // Error: 3e-7 relative for any u in [0, 1] (tests/simd_beckmann_test.cc,
 // SimdBeckmannTest.CheckErfInv: measured max 2.1e-7 with FMA (AVX2,
 // AVX3), 2.7e-7 without (SSE4, SSSE3, SCALAR)).
-template <class D, class V>
+template <bool kRefine = true, class D, class V>
 HWY_INLINE V ErfInvCentered(D d, V u) {
+  using T = hn::TFromD<D>;
   static constexpr float kCentral[10] = {
       -8.931926310e-09f, 2.333596782e-08f,  4.681313612e-07f,  -3.463985195e-06f,
       -4.972419902e-06f, 2.183493925e-04f,  -1.252726419e-03f, -4.177392926e-03f,
@@ -113,32 +125,74 @@ HWY_INLINE V ErfInvCentered(D d, V u) {
       2.306117131e-05f,  -2.063626016e-05f, 4.839427129e-05f, -1.284933533e-04f,
       3.260869416e-04f,  -8.647334762e-04f, 1.258546021e-03f, 1.009492755e+00f,
       3.839783907e+00f};
-  const V one = hn::Set(d, 1.0f);
-  const V q = hn::Max(hn::Min(u, hn::Sub(one, u)), hn::Set(d, 0x1p-53f));
-  const V w = hn::Neg(hn::Log(d, hn::Mul(hn::Mul(hn::Set(d, 4.0f), q), hn::Sub(one, q))));
-  const V p_central = HornerHighFirst(d, kCentral, hn::Sub(w, hn::Set(d, 2.5f)));
-  const V p_tail = HornerHighFirst(d, kTail, hn::Sub(hn::Sqrt(w), hn::Set(d, 4.0f)));
-  const V p = hn::IfThenElse(hn::Lt(w, hn::Set(d, 5.0f)), p_central, p_tail);
-  const V abs_x = hn::NegMulAdd(hn::Set(d, 2.0f), q, one);  // |2u - 1| = 1 - 2q
-  return hn::CopySign(hn::Mul(p, abs_x), hn::Sub(u, hn::Set(d, 0.5f)));
+  const V one = hn::Set(d, T(1));
+  const V q = hn::Max(hn::Min(u, hn::Sub(one, u)), hn::Set(d, T(0x1p-53)));
+  const V w = hn::Neg(hn::Log(d, hn::Mul(hn::Mul(hn::Set(d, T(4)), q), hn::Sub(one, q))));
+  const V p_central = HornerHighFirst(d, kCentral, hn::Sub(w, hn::Set(d, T(2.5))));
+  const V p_tail = HornerHighFirst(d, kTail, hn::Sub(hn::Sqrt(w), hn::Set(d, T(4))));
+  const V p = hn::IfThenElse(hn::Lt(w, hn::Set(d, T(5))), p_central, p_tail);
+  const V abs_x = hn::NegMulAdd(hn::Set(d, T(2)), q, one);  // |2u - 1| = 1 - 2q
+  V y = hn::Mul(p, abs_x);
+  if constexpr (sizeof(T) == 8 && kRefine) {
+    // Double lanes: the fit above (3e-7) refined by Newton on erfc(y) = 2q
+    // (exact), y >= 0: y += (sqrt(pi) / 2) (erfcx(y) - 2q / exp(-y^2)),
+    // with ErfcxF64 and ExpNegSquareF64 (simd/math_f64-inl.h; exp(-y^2) >=
+    // 1e-15 for y <= 5.86). Two steps square the error twice (3e-7 ->
+    // 1e-13 -> below rounding); the result is within 2e-16 (1 + |y|) of
+    // erf^-1 (CheckErfInvF64).
+    const V two_q = hn::Add(q, q);
+    for (int step = 0; step < 2; ++step) {
+      const V corr = hn::Sub(ErfcxF64(d, y), hn::Div(two_q, ExpNegSquareF64(d, y)));
+      y = hn::Max(hn::MulAdd(hn::Set(d, T(0.88622692545275801)), corr, y), hn::Zero(d));
+    }
+  }
+  return hn::CopySign(y, hn::Sub(u, hn::Set(d, T(0.5))));
 }
 
 // The scalar search interval of the visible slope is [-kBeckmannSlopeMax,
 // min(mu, kBeckmannSlopeMax)]; Newton steps of the kernel.
 constexpr float kBeckmannSlopeMax = 9.0f;
-constexpr int kBeckmannNewtonSteps = 4;
-// Terms of the Taylor series of U near the top of the interval.
-constexpr int kBeckmannTaylorTerms = 7;
+// Per lane type (the header's error statement is for float; double: see
+// BeckmannSampleVisible): Newton steps (float 4: 1e-7 (1 + x^2); double 6,
+// two more quadratic steps), terms of the Taylor series of U near the top
+// (float 7: 2.3e-7 relative; double 15: 1e-18, mpmath over mu in [0, 9] at
+// the switch r max(mu, 2.5) = 1/4).
+template <class T>
+constexpr int BeckmannNewtonSteps() {
+  return sizeof(T) == 8 ? 6 : 4;
+}
+template <class T>
+constexpr int BeckmannTaylorTerms() {
+  return sizeof(T) == 8 ? 15 : 7;
+}
+
+// exp(-x^2) and erfcx(x) (x >= 0) in the lanes' precision.
+template <class D, class V>
+HWY_INLINE V ExpNegSquareOf(D d, V x) {
+  if constexpr (sizeof(hn::TFromD<D>) == 8) {
+    return ExpNegSquareF64(d, x);
+  } else {
+    return ExpNegSquare(d, x);
+  }
+}
+template <class D, class V>
+HWY_INLINE V ErfcxOf(D d, V x) {
+  if constexpr (sizeof(hn::TFromD<D>) == 8) {
+    return ErfcxF64(d, x);
+  } else {
+    return Erfcx(d, x);
+  }
+}
 
 // F(x) and V(x) = c - F(x) of the header, from E = exp(-x^2) and
 // R = erfcx(|x|) (also returned: erfc(|x|) = E R).
 template <class D, class V>
 HWY_INLINE void BeckmannSlopeCdf(D d, V c, V s_pi, V x, V* f, V* v, V* e, V* r) {
-  *e = ExpNegSquare(d, x);
-  *r = Erfcx(d, hn::Abs(x));
+  *e = ExpNegSquareOf(d, x);
+  *r = ErfcxOf(d, hn::Abs(x));
   const auto neg = hn::Le(x, hn::Zero(d));
   // x <= 0: F = E (c R + s/sqrt(pi)) / 2;  x > 0: V = E (c R - s/sqrt(pi)) / 2.
-  const V small = hn::Mul(hn::Mul(*e, hn::Set(d, 0.5f)),
+  const V small = hn::Mul(hn::Mul(*e, hn::Set(d, hn::TFromD<D>(0.5))),
                           hn::MulAdd(c, *r, hn::IfThenElse(neg, s_pi, hn::Neg(s_pi))));
   const V large = hn::Sub(c, small);
   *f = hn::IfThenElse(neg, small, large);
@@ -150,14 +204,22 @@ HWY_INLINE void BeckmannSlopeCdf(D d, V c, V s_pi, V x, V* f, V* v, V* e, V* r) 
 template <class D, class V>
 HWY_INLINE void BeckmannSampleVisible(D d, const BeckmannConsts<D>& k, V wx, V wy, V wz, V u1,
                                       V u2, V* mx, V* my, V* mz) {
-  const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f);
-  const V inv_sqrt_pi = hn::Set(d, 0.56418958354775628f);
-  const V slope_max = hn::Set(d, kBeckmannSlopeMax);
+  using T = hn::TFromD<D>;
+  constexpr int kNewtonSteps = BeckmannNewtonSteps<T>();
+  constexpr int kTaylorTerms = BeckmannTaylorTerms<T>();
+  // Floors and clamps in the lanes' range: the smallest normal's order
+  // (float 1e-38, double 1e-300) and the largest u1 below 1.
+  constexpr T kTiny = sizeof(T) == 8 ? T(1e-300) : T(1.2e-38f);
+  constexpr T kTargetFloor = sizeof(T) == 8 ? T(1e-300) : T(1e-37f);
+  constexpr T kBelowOne = sizeof(T) == 8 ? T(1 - 0x1p-53) : T(0.99999994f);
+  const V zero = hn::Zero(d), one = hn::Set(d, T(1.0)), half = hn::Set(d, T(0.5));
+  const V inv_sqrt_pi = hn::Set(d, T(0.56418958354775628));
+  const V slope_max = hn::Set(d, T(kBeckmannSlopeMax));
   // Stretch: the view (gx, gy, w.z), its azimuth (cos_phi, sin_phi) ((1, 0)
   // at the pole, as in the scalar code) and c, s of the unit-roughness view.
   const V gx = hn::Mul(k.ax, wx), gy = hn::Mul(k.ay, wy);
   const V g2 = hn::MulAdd(gx, gx, hn::Mul(gy, gy));
-  const auto off_pole = hn::Gt(g2, hn::Set(d, 1.2e-38f));
+  const auto off_pole = hn::Gt(g2, hn::Set(d, kTiny));
   const V inv_g = RsqrtNewton(d, hn::IfThenElse(off_pole, g2, one));
   const V cos_phi = hn::IfThenElse(off_pole, hn::Mul(gx, inv_g), one);
   const V sin_phi = hn::IfThenElseZero(off_pole, hn::Mul(gy, inv_g));
@@ -172,51 +234,60 @@ HWY_INLINE void BeckmannSampleVisible(D d, const BeckmannConsts<D>& k, V wx, V w
   V f_mu, v_mu, e_mu, r_mu;
   BeckmannSlopeCdf(d, c, s_pi, mu, &f_mu, &v_mu, &e_mu, &r_mu);
   const auto upper = hn::Gt(u1, half);
-  const V sign = hn::IfThenElse(upper, hn::Set(d, -1.0f), one);
+  const V sign = hn::IfThenElse(upper, hn::Set(d, T(-1.0)), one);
   const V tail = hn::IfThenElse(upper, hn::Sub(one, u1), u1);
-  const V target = hn::Max(hn::Mul(tail, f_mu), hn::Set(d, 1e-37f));
+  const V target = hn::Max(hn::Mul(tail, f_mu), hn::Set(d, kTargetFloor));
   const V log_target = hn::Log(d, target);
 
   // Taylor coefficients of U in r = mu - x: b_n = s E(mu) / sqrt(pi) h_n /
   // (n + 2), h_n = H_n(mu) / n! from h_(n+1) = (2 mu h_n - 2 h_(n-1)) / (n + 1).
   // Used where r max(mu, 2.5) < 1/4 and mu is not clamped.
-  V b[kBeckmannTaylorTerms];
+  V b[kTaylorTerms];
   {
     const V scale = hn::Mul(s_pi, e_mu), two_mu = hn::Add(mu, mu);
     V h_prev = one, h = two_mu;
     b[0] = hn::Mul(scale, half);
-    for (int n = 1; n < kBeckmannTaylorTerms; ++n) {
-      b[n] = hn::Mul(scale, hn::Mul(h, hn::Set(d, 1.0f / static_cast<float>(n + 2))));
+    for (int n = 1; n < kTaylorTerms; ++n) {
+      b[n] = hn::Mul(scale, hn::Mul(h, hn::Set(d, T(1) / static_cast<T>(n + 2))));
       const V h_next = hn::Mul(hn::MulSub(two_mu, h, hn::Add(h_prev, h_prev)),
-                               hn::Set(d, 1.0f / static_cast<float>(n + 1)));
+                               hn::Set(d, T(1) / static_cast<T>(n + 1)));
       h_prev = h;
       h = h_next;
     }
   }
   const V taylor_scale = hn::IfThenElse(hn::Lt(mu_raw, slope_max),
-                                        hn::Max(mu, hn::Set(d, 2.5f)), hn::Set(d, 1e30f));
+                                        hn::Max(mu, hn::Set(d, T(2.5))), hn::Set(d, T(1e30)));
 
   // Initial guess x0 = erf^-1(2 v - 1), v = erfc(-mu)/2 (-expm1(p log1p(-u1))).
   const V theta = hn::Atan(d, hn::Div(s, c));
   const V p = hn::MulAdd(
       theta,
-      hn::MulAdd(theta, hn::MulAdd(theta, hn::Set(d, -0.0594f), hn::Set(d, 0.4265f)),
-                 hn::Set(d, -0.876f)),
+      hn::MulAdd(theta, hn::MulAdd(theta, hn::Set(d, T(-0.0594)), hn::Set(d, T(0.4265))),
+                 hn::Set(d, T(-0.876))),
       one);
-  const V log_1mu = hn::Log1p(d, hn::Neg(hn::Min(u1, hn::Set(d, 0.99999994f))));
+  const V log_1mu = hn::Log1p(d, hn::Neg(hn::Min(u1, hn::Set(d, kBelowOne))));
   const V cdf_mu = hn::NegMulAdd(hn::Mul(e_mu, r_mu), half, one);  // erfc(-mu) / 2
   const V v0 = hn::Mul(cdf_mu, hn::Neg(hn::Expm1(d, hn::Mul(p, log_1mu))));
   V lo = hn::Neg(slope_max), hi = mu;
-  V x = hn::Min(hn::Max(ErfInvCentered(d, v0), lo), hi);
+  V x = hn::Min(hn::Max(ErfInvCentered</*kRefine=*/false>(d, v0), lo), hi);
+  // Deep in the upper tail the fit puts x0 at the top itself (U(x0) = 0),
+  // where Newton on log U cannot start; there U ~ b_0 r^2 gives the start
+  // r0 = sqrt(target / b_0), exact as r -> 0, used where it falls in the
+  // series' range. (Float lanes never get that deep: 1 - u1 >= 2^-24 there
+  // keeps x0 below the top; double lanes reach 1 - u1 = 2^-53.)
+  const V r_top = hn::Sqrt(hn::Div(target, b[0]));
+  const auto start_top =
+      hn::And(upper, hn::Lt(hn::Mul(r_top, taylor_scale), hn::Set(d, T(0.25))));
+  x = hn::IfThenElse(start_top, hn::Max(hn::Sub(mu, r_top), lo), x);
 
   // Safeguarded Newton on log F (sign = 1) or log U (sign = -1).
-  for (int step = 0; step < kBeckmannNewtonSteps; ++step) {
+  for (int step = 0; step < kNewtonSteps; ++step) {
     V f, v, e, r;
     BeckmannSlopeCdf(d, c, s_pi, x, &f, &v, &e, &r);
     const V dist = hn::Sub(mu, x);
-    V series = b[kBeckmannTaylorTerms - 1];
-    for (int n = kBeckmannTaylorTerms - 2; n >= 0; --n) series = hn::MulAdd(series, dist, b[n]);
-    const auto near_top = hn::Lt(hn::Mul(dist, taylor_scale), hn::Set(d, 0.25f));
+    V series = b[kTaylorTerms - 1];
+    for (int n = kTaylorTerms - 2; n >= 0; --n) series = hn::MulAdd(series, dist, b[n]);
+    const auto near_top = hn::Lt(hn::Mul(dist, taylor_scale), hn::Set(d, T(0.25)));
     const V u_tail = hn::IfThenElse(near_top, hn::Mul(hn::Mul(dist, dist), series),
                                     hn::Sub(v, v_mu));
     const V val = hn::IfThenElse(upper, u_tail, f);
