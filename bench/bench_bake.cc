@@ -139,6 +139,14 @@ BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/qmc/simd, "ggx", true)
     ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
 BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/qmc/scalar, "ggx", false)
     ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/qmc/simd, "beckmann", true)
+    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/qmc/scalar, "beckmann", false)
+    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/qmc/simd, "std", true)
+    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
+BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/qmc/scalar, "std", false)
+    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
 BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/engine/simd, "ggx", true)
     ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
 BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/engine/scalar, "ggx", false)

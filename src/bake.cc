@@ -311,9 +311,7 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
     case IntegratorKind::kQmc:
     case IntegratorKind::kMc: {
       const bool plain_mc = spec.integrator == IntegratorKind::kMc;
-      if constexpr (!std::is_same_v<Ndf, StudentTNdf<double>>) {
-        if (spec.simd) return SimdQmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
-      }
+      if (spec.simd) return SimdQmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
       return QmcTexel(ndf, mu, spec.masking, n, texel_seed, plain_mc);
     }
     case IntegratorKind::kEngine: {

@@ -7,6 +7,7 @@
 // EngineRuleWith); only the sum over a point set runs in lanes.
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "sampling_simd.h"
@@ -318,6 +319,85 @@ QuadratureResult StdEngineTexel(const StudentTNdf<double>& ndf, double mu, Maski
             d, [&](DF64 d, VF64 a) { return StudentTLambdaF64(d, lc, a); }, alpha, x, y, z);
       });
 }
+
+// The STD's D (StudentTNdf::D, isotropic alpha): exp(-gamma log1p(r2 /
+// (gamma - 1)) - log(alpha^2 z^4)) / pi with r2 = |m_xy|^2 / (alpha^2 z^2),
+// one exponential of the whole exponent as the scalar twin; 0 for m.z <= 0.
+HWY_INLINE VF64 StudentTDF64(DF64 d, double alpha, double gamma, VF64 mx, VF64 my, VF64 mz) {
+  const VF64 z2 = hn::Mul(mz, mz);
+  const VF64 s2 = hn::Div(hn::MulAdd(mx, mx, hn::Mul(my, my)), hn::Set(d, alpha * alpha));
+  const VF64 r2 = hn::Div(s2, z2);
+  const VF64 ex = hn::MulAdd(hn::Set(d, -gamma), hn::Log1p(d, hn::Div(r2, hn::Set(d, gamma - 1))),
+                             hn::NegMulAdd(hn::Set(d, 2.0), hn::Log(d, z2),
+                                           hn::Set(d, -2 * std::log(alpha))));
+  const VF64 v = hn::Mul(hn::Exp(d, ex), hn::Set(d, 0.3183098861837907));
+  return hn::IfThenElseZero(hn::Gt(mz, hn::Zero(d)), v);
+}
+
+// QmcTexel for the STD with the pseudo visible-normal sampler of Algorithm
+// 1 (VisibleSampler<StudentTNdf>): the branch is the material's
+// (PseudoVnisBranch); the weight D G2 (wo.m) / (wo.z pdf) with the branch's
+// density (GGX's or Beckmann's visible normals), and for NDF sampling
+// (pdf = D m.z) G2 (wo.m) / (wo.z m.z), D cancelled.
+TexelEstimate StdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking, int samples,
+                          uint64_t seed, bool plain_mc) {
+  const double alpha = ndf.alpha_x(), g = ndf.gamma();
+  const bool inf = std::isinf(g);
+  const DF64 d;
+  const LanesView v(d, SamplingView(mu), ndf.Lambda(SamplingView(mu)));
+  const GgxSamplingConsts<DF64> gc(d, alpha, alpha);
+  const BeckmannConsts<DF64> bc(d, alpha, alpha, 1.0);
+  std::unique_ptr<StudentTLambdaF64Consts> lc;
+  if (!inf) lc = std::make_unique<StudentTLambdaF64Consts>(g);
+  auto lambda = [&](DF64 d, VF64 x, VF64 y, VF64 z) {
+    if (inf) return BeckmannLambda(d, bc, x, y, z);
+    return IsotropicLambda(
+        d, [&](DF64 d, VF64 a) { return StudentTLambdaF64(d, *lc, a); }, alpha, x, y, z);
+  };
+  const int branch = ndf.PseudoVnisBranch();
+  TexelEstimate out;
+  WithMasking(masking, [&](auto separable) {
+    auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
+      const VF64 zero = hn::Zero(d);
+      VF64 mx, my, mz, ratio;  // ratio = D / pdf times m.z's share
+      if (branch == 0) {
+        VF64 r2;
+        if (inf) {
+          r2 = BeckmannR2(d, u2);
+        } else {
+          const VF64 e = hn::Neg(hn::Log1p(d, hn::Neg(ClampBelowOne(d, u2))));
+          r2 = hn::Mul(hn::Set(d, g - 1), hn::Expm1(d, hn::Div(e, hn::Set(d, g - 1))));
+        }
+        SlopeNormal(d, alpha, r2, u1, &mx, &my, &mz);
+        ratio = hn::Div(hn::Set(d, 1.0), mz);
+      } else {
+        VF64 pdf;
+        if (branch == 1) {
+          GgxSampleVisible(d, gc, v.wx, zero, v.wz, u1, u2, &mx, &my, &mz);
+          pdf = GgxPdfVisible(d, gc, v.wx, zero, v.wz, mx, my, mz);
+        } else {
+          BeckmannSampleVisible(d, bc, v.wx, zero, v.wz, u1, u2, &mx, &my, &mz);
+          pdf = BeckmannPdfVisible(d, bc, v.wx, zero, v.wz, mx, my, mz);
+        }
+        const VF64 dm = inf ? BeckmannD(d, bc, mx, my, mz) : StudentTDF64(d, alpha, g, mx, my, mz);
+        ratio = hn::IfThenElseZero(hn::Gt(pdf, zero),
+                                   hn::Div(dm, hn::IfThenElse(hn::Gt(pdf, zero), pdf,
+                                                              hn::Set(d, 1.0))));
+      }
+      const VF64 wo_m = hn::MulAdd(v.wx, mx, hn::Mul(v.wz, mz));
+      VF64 ix, iy, iz;
+      ReflectView(v, mx, my, mz, wo_m, &ix, &iy, &iz);
+      const VF64 g2 = G2FromLambdaI<decltype(separable)::value>(d, v, lambda(d, ix, iy, iz), iz,
+                                                                 wo_m);
+      *w = hn::Div(hn::Mul(hn::Mul(ratio, g2), wo_m), v.wz);
+      *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_m));
+    };
+    out = QmcTexelWith(samples, seed, plain_mc,
+                       [&](const double* u1, const double* u2, int n, double* acc,
+                           double* acc_fc) { SumInLanes(weights, u1, u2, n, acc, acc_fc); });
+  });
+  return out;
+}
 #endif
 
 }  // namespace HWY_NAMESPACE
@@ -354,6 +434,12 @@ QuadratureResult SimdEngineRule(const BeckmannNdf<double>& ndf, double mu, Maski
 #endif
 
 #if BRDFBAKE_WITH_STD
+HWY_EXPORT(StdQmcTexel);
+TexelEstimate SimdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking,
+                           int samples, uint64_t seed, bool plain_mc) {
+  return HWY_DYNAMIC_DISPATCH(StdQmcTexel)(ndf, mu, masking, samples, seed, plain_mc);
+}
+
 HWY_EXPORT(StdEngineTexel);
 QuadratureResult SimdEngineRule(const StudentTNdf<double>& ndf, double mu, Masking masking,
                                 int samples) {

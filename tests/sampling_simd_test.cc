@@ -2,12 +2,13 @@
 // (src/sampling_simd.h) against their double scalar references
 // (src/sampling_integrators.h), texel by texel, on every compiled target
 // the CPU runs. Both draw the same points in the same order; they differ
-// only in the rounding of each sample's normal and weight (the GGX samplers
-// are within 1e-14 of the reference, CheckGgxSamplingF64; Lambda within
-// 2e-15, simd_math_f64_test and simd_std_f64_test) and in the order of the
-// sums. The NDF samplers of Beckmann and STD in double lanes (sampling_simd.cc)
-// are checked through the engine rule's sums: a sampler off by more than
-// rounding moves them far beyond the bound here.
+// only in the rounding of each sample's normal and weight (the GGX and
+// Beckmann visible-normal samplers are within 1e-14 of the reference,
+// CheckGgxSamplingF64 and CheckBeckmannSamplingF64; Lambda within 2e-15,
+// simd_math_f64_test and simd_std_f64_test) and in the order of the sums.
+// The NDF samplers of Beckmann and STD and the STD's D in double lanes
+// (sampling_simd.cc) are checked through these sums: a sampler or a
+// density off by more than rounding moves them far beyond the bound here.
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ namespace {
 
 // |lanes - scalar| of a texel value in [0, 1] (a sum of up to 2^20 terms
 // of at most 1 in the lanes' order against the scalar order, plus each
-// weight's rounding): measured below 7e-15 on every target.
+// weight's rounding): measured below 8e-15 on every target.
 constexpr double kRoundingBound = 1e-13;
 
 const std::vector<double> kAlphas = {1e-4, 1e-3, 0.02, 0.1, 0.4, 1.0};
@@ -92,6 +93,19 @@ TEST(SamplingSimdTest, GgxQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
 #if BRDFBAKE_WITH_BECKMANN
 TEST(SamplingSimdTest, BeckmannQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
   CheckQmc<BeckmannNdf<double>>("beckmann", [](double a) { return BeckmannNdf<double>(a); });
+}
+#endif
+
+#if BRDFBAKE_WITH_STD
+// Every branch of the pseudo visible-normal sampler (alpha 1e-4 and 1e-3:
+// NDF sampling; gamma 1.501 and 2: GGX's visible normals; 30 and inf:
+// Beckmann's; 7 at alpha 0.02 and 0.1: NDF sampling between the bands).
+TEST(SamplingSimdTest, StdQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
+  for (double gamma : {1.501, 2.0, 7.0, 30.0, std::numeric_limits<double>::infinity()}) {
+    const std::string what = "std, gamma " + std::to_string(gamma);
+    CheckQmc<StudentTNdf<double>>(what.c_str(),
+                                  [&](double a) { return StudentTNdf<double>(a, a, gamma); });
+  }
 }
 #endif
 
