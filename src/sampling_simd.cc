@@ -7,7 +7,6 @@
 // EngineRuleWith); only the sum over a point set runs in lanes.
 
 #include <cmath>
-#include <memory>
 #include <vector>
 
 #include "sampling_simd.h"
@@ -24,7 +23,7 @@
 #include "simd/ggx_sampling-inl.h"
 #include "simd/math_f64-inl.h"
 #if BRDFBAKE_WITH_STD
-#include "simd/std_f64-inl.h"
+#include "simd/std-inl.h"
 #endif
 
 HWY_BEFORE_NAMESPACE();
@@ -95,12 +94,13 @@ HWY_INLINE VF64 SchlickWeightF64(DF64 d, VF64 c) {
 
 // The view wo = (sx, 0, wz) of SamplingView and its Lambda, as lanes.
 struct LanesView {
-  VF64 wx, wz, lambda_o, g1_o;
+  VF64 wx, wz, lambda_o, g1_o, inv_g1_o;
   LanesView(DF64 d, const Vec3<double>& wo, double lambda) {
     wx = hn::Set(d, wo.x);
     wz = hn::Set(d, wo.z);
     lambda_o = hn::Set(d, lambda);
     g1_o = hn::Set(d, 1 / (1 + lambda));
+    inv_g1_o = hn::Set(d, 1 + lambda);
   }
 };
 
@@ -113,18 +113,6 @@ HWY_INLINE VF64 G2FromLambdaI(DF64 d, const LanesView& v, VF64 lambda_i, VF64 wi
   const VF64 g2 = kSeparable ? hn::Mul(hn::Div(one, hn::Add(one, lambda_i)), v.g1_o)
                              : hn::Div(one, hn::Add(hn::Add(one, lambda_i), v.lambda_o));
   return hn::IfThenElseZero(hn::And(hn::Gt(wiz, hn::Zero(d)), hn::Gt(wo_m, hn::Zero(d))), g2);
-}
-
-// Lambda of an isotropic slope model from a = cot(theta) / alpha: the
-// model's `lambda_of_a(d, a)` (+inf for a = 0, the horizon; a = +inf at
-// the pole gives 0), +inf below the horizon.
-template <class LambdaOfA>
-HWY_INLINE VF64 IsotropicLambda(DF64 d, const LambdaOfA& lambda_of_a, double alpha, VF64 wx,
-                                VF64 wy, VF64 wz) {
-  const VF64 s = hn::Sqrt(hn::MulAdd(wx, wx, hn::Mul(wy, wy)));
-  const auto above = hn::Gt(wz, hn::Zero(d));
-  const VF64 a = hn::IfThenElseZero(above, hn::Div(wz, hn::Mul(hn::Set(d, alpha), s)));
-  return hn::IfThenElse(above, lambda_of_a(d, a), hn::Inf(d));
 }
 
 // The reflection wi = 2 (wo.m) m - wo of the view about m.
@@ -150,25 +138,6 @@ HWY_INLINE void EngineWeight(DF64 d, const LanesView& v, const Lambda& lambda, V
   *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_h));
 }
 
-// NDF sampling of an isotropic slope model (slope_ndf.h SampleNdf): radial
-// slope r = sqrt(r2(u2)) along 2 pi u1 (SinCos2Pi), times alpha, and m =
-// normalize(-slope, 1).
-HWY_INLINE void SlopeNormal(DF64 d, double alpha, VF64 r2, VF64 u1, VF64* mx, VF64* my,
-                            VF64* mz) {
-  VF64 sn, cs;
-  SinCos2Pi(d, u1, &sn, &cs);
-  const VF64 r = hn::Mul(hn::Sqrt(r2), hn::Set(d, alpha));
-  const VF64 px = hn::Mul(r, cs), py = hn::Mul(r, sn);
-  const VF64 inv = hn::Div(hn::Set(d, 1.0), hn::Sqrt(hn::MulAdd(px, px, hn::MulAdd(py, py,
-                                                                               hn::Set(d, 1.0)))));
-  *mx = hn::Neg(hn::Mul(px, inv));
-  *my = hn::Neg(hn::Mul(py, inv));
-  *mz = inv;
-}
-
-// The scalar models' clamp of u before the inverse radial CDF: 1 - 2^-53.
-HWY_INLINE VF64 ClampBelowOne(DF64 d, VF64 u) { return hn::Min(u, hn::Set(d, 1 - 0x1p-53)); }
-
 // ---- GGX ----
 
 struct GgxLanesLambda {
@@ -178,24 +147,24 @@ struct GgxLanesLambda {
   }
 };
 
-// QMC and MC with a model's exact visible-normal sampler `sample(d, wx,
-// wy, wz, u1, u2, &m)`: f cos_i / pdf = G2 / G1(wo) (VisibleSampler).
-template <class Sample, class Lambda>
-TexelEstimate VisibleQmcInLanes(double mu, double lambda_o, Masking masking, int samples,
-                                uint64_t seed, bool plain_mc, const Sample& sample,
-                                const Lambda& lambda) {
-  const LanesView v(DF64(), SamplingView(mu), lambda_o);
+// QMC and MC with the weight f cos_i / pdf = G2 factor(m, wo.m) at the
+// normal m = sample(d, u1, u2) (VisibleSampler): for an exact visible-normal
+// sampler factor = 1 / G1(wo) = 1 + Lambda(wo) (ExactVisible).
+template <class Sample, class Factor, class Lambda>
+TexelEstimate QmcInLanes(const LanesView& v, Masking masking, int samples, uint64_t seed,
+                         bool plain_mc, const Sample& sample, const Factor& factor,
+                         const Lambda& lambda) {
   TexelEstimate out;
   WithMasking(masking, [&](auto separable) {
     auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
       VF64 mx, my, mz;
-      sample(d, v.wx, hn::Zero(d), v.wz, u1, u2, &mx, &my, &mz);
+      sample(d, u1, u2, &mx, &my, &mz);
       const VF64 wo_m = hn::MulAdd(v.wx, mx, hn::Mul(v.wz, mz));
       VF64 ix, iy, iz;
       ReflectView(v, mx, my, mz, wo_m, &ix, &iy, &iz);
       const VF64 g2 = G2FromLambdaI<decltype(separable)::value>(d, v, lambda(d, ix, iy, iz), iz,
                                                                  wo_m);
-      *w = hn::Div(g2, v.g1_o);
+      *w = hn::Mul(g2, factor(d, mx, my, mz, wo_m));
       *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_m));
     };
     out = QmcTexelWith(samples, seed, plain_mc,
@@ -205,15 +174,27 @@ TexelEstimate VisibleQmcInLanes(double mu, double lambda_o, Masking masking, int
   return out;
 }
 
+// QmcInLanes' factor for an exact visible-normal sampler.
+struct ExactVisible {
+  VF64 inv_g1_o;
+  HWY_INLINE VF64 operator()(DF64, VF64, VF64, VF64, VF64) const { return inv_g1_o; }
+};
+
+// The view's lanes.
+inline LanesView ViewOf(double mu, double lambda_o) {
+  return LanesView(DF64(), SamplingView(mu), lambda_o);
+}
+
 TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
                           uint64_t seed, bool plain_mc) {
   const GgxSamplingConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y());
-  return VisibleQmcInLanes(
-      mu, ndf.Lambda(SamplingView(mu)), masking, samples, seed, plain_mc,
-      [&](DF64 d, VF64 wx, VF64 wy, VF64 wz, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-        GgxSampleVisible(d, c, wx, wy, wz, u1, u2, x, y, z);
+  const LanesView v = ViewOf(mu, ndf.Lambda(SamplingView(mu)));
+  return QmcInLanes(
+      v, masking, samples, seed, plain_mc,
+      [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+        GgxSampleVisible(d, c, v.wx, hn::Zero(d), v.wz, u1, u2, x, y, z);
       },
-      GgxLanesLambda{&c.ggx});
+      ExactVisible{v.inv_g1_o}, GgxLanesLambda{&c.ggx});
 }
 
 // The engine rule for a model with NDF sampler `normal(d, u1, u2, &m)` and
@@ -253,33 +234,18 @@ QuadratureResult GgxEngineTexel(const GgxNdf<double>& ndf, double mu, Masking ma
 // ---- Beckmann ----
 
 #if BRDFBAKE_WITH_BECKMANN || BRDFBAKE_WITH_STD
-// Beckmann's radial inverse CDF r2 = -log(1 - u) (BeckmannNdf::UnitSampleR2).
-HWY_INLINE VF64 BeckmannR2(DF64 d, VF64 u) {
-  return hn::Neg(hn::Log1p(d, hn::Neg(ClampBelowOne(d, u))));
-}
 struct BeckmannLanesLambda {
   const BeckmannConsts<DF64>* c;
   HWY_INLINE VF64 operator()(DF64 d, VF64 x, VF64 y, VF64 z) const {
     return BeckmannLambda(d, *c, x, y, z);
   }
 };
-QuadratureResult BeckmannEngineInLanes(double alpha, double mu, double lambda_o, Masking masking,
-                                       int samples) {
-  const BeckmannConsts<DF64> c(DF64(), alpha, alpha, 1.0);
+QuadratureResult BeckmannEngineInLanes(const BeckmannConsts<DF64>& c, double mu, double lambda_o,
+                                       Masking masking, int samples) {
   return EngineInLanes(
       mu, lambda_o, masking, samples,
       [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-        SlopeNormal(d, alpha, BeckmannR2(d, u2), u1, x, y, z);
-      },
-      BeckmannLanesLambda{&c});
-}
-TexelEstimate BeckmannQmcInLanes(double alpha, double mu, double lambda_o, Masking masking,
-                                 int samples, uint64_t seed, bool plain_mc) {
-  const BeckmannConsts<DF64> c(DF64(), alpha, alpha, 1.0);
-  return VisibleQmcInLanes(
-      mu, lambda_o, masking, samples, seed, plain_mc,
-      [&](DF64 d, VF64 wx, VF64 wy, VF64 wz, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-        BeckmannSampleVisible(d, c, wx, wy, wz, u1, u2, x, y, z);
+        BeckmannSampleNdf(d, c, u1, u2, x, y, z);
       },
       BeckmannLanesLambda{&c});
 }
@@ -288,50 +254,48 @@ TexelEstimate BeckmannQmcInLanes(double alpha, double mu, double lambda_o, Maski
 #if BRDFBAKE_WITH_BECKMANN
 QuadratureResult BeckmannEngineTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
                                      int samples) {
-  return BeckmannEngineInLanes(ndf.alpha_x(), mu, ndf.Lambda(SamplingView(mu)), masking, samples);
+  const BeckmannConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y(), 1.0);
+  return BeckmannEngineInLanes(c, mu, ndf.Lambda(SamplingView(mu)), masking, samples);
 }
 TexelEstimate BeckmannQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
                                int samples, uint64_t seed, bool plain_mc) {
-  return BeckmannQmcInLanes(ndf.alpha_x(), mu, ndf.Lambda(SamplingView(mu)), masking, samples,
-                            seed, plain_mc);
+  const BeckmannConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y(), 1.0);
+  const LanesView v = ViewOf(mu, ndf.Lambda(SamplingView(mu)));
+  return QmcInLanes(
+      v, masking, samples, seed, plain_mc,
+      [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+        BeckmannSampleVisible(d, c, v.wx, hn::Zero(d), v.wz, u1, u2, x, y, z);
+      },
+      ExactVisible{v.inv_g1_o}, BeckmannLanesLambda{&c});
 }
 #endif
 
 // ---- STD ----
 
 #if BRDFBAKE_WITH_STD
+struct StudentTLanesLambda {
+  const StudentTConsts<DF64>* c;
+  HWY_INLINE VF64 operator()(DF64 d, VF64 x, VF64 y, VF64 z) const {
+    return StudentTLambda(d, *c, x, y, z);
+  }
+};
+
+// The STD's kernels in double lanes (std-inl.h), over its Beckmann
+// constants from gamma = 1e10 on (StudentTConsts::beckmann), as the batch
+// calls do: the Beckmann limit is within about r2^2 / (2 gamma) <= 7e-8 of
+// the STD's radial slope there, which moves a texel by far less than the
+// sampling error.
 QuadratureResult StdEngineTexel(const StudentTNdf<double>& ndf, double mu, Masking masking,
                                 int samples) {
-  const double alpha = ndf.alpha_x(), g = ndf.gamma();
+  const StudentTConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y(), 1.0, ndf.gamma());
   const double lambda_o = ndf.Lambda(SamplingView(mu));
-  if (std::isinf(g)) return BeckmannEngineInLanes(alpha, mu, lambda_o, masking, samples);
-  // StudentTNdf::UnitSampleR2: r2 = (gamma - 1) expm1(-log1p(-u) / (gamma - 1)).
-  const StudentTLambdaF64Consts lc(g);
+  if (c.beckmann) return BeckmannEngineInLanes(c.b, mu, lambda_o, masking, samples);
   return EngineInLanes(
       mu, lambda_o, masking, samples,
       [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
-        const VF64 e = hn::Neg(hn::Log1p(d, hn::Neg(ClampBelowOne(d, u2))));
-        const VF64 r2 = hn::Mul(hn::Set(d, g - 1), hn::Expm1(d, hn::Div(e, hn::Set(d, g - 1))));
-        SlopeNormal(d, alpha, r2, u1, x, y, z);
+        StudentTSampleNdf(d, c, u1, u2, x, y, z);
       },
-      [&](DF64 d, VF64 x, VF64 y, VF64 z) {
-        return IsotropicLambda(
-            d, [&](DF64 d, VF64 a) { return StudentTLambdaF64(d, lc, a); }, alpha, x, y, z);
-      });
-}
-
-// The STD's D (StudentTNdf::D, isotropic alpha): exp(-gamma log1p(r2 /
-// (gamma - 1)) - log(alpha^2 z^4)) / pi with r2 = |m_xy|^2 / (alpha^2 z^2),
-// one exponential of the whole exponent as the scalar twin; 0 for m.z <= 0.
-HWY_INLINE VF64 StudentTDF64(DF64 d, double alpha, double gamma, VF64 mx, VF64 my, VF64 mz) {
-  const VF64 z2 = hn::Mul(mz, mz);
-  const VF64 s2 = hn::Div(hn::MulAdd(mx, mx, hn::Mul(my, my)), hn::Set(d, alpha * alpha));
-  const VF64 r2 = hn::Div(s2, z2);
-  const VF64 ex = hn::MulAdd(hn::Set(d, -gamma), hn::Log1p(d, hn::Div(r2, hn::Set(d, gamma - 1))),
-                             hn::NegMulAdd(hn::Set(d, 2.0), hn::Log(d, z2),
-                                           hn::Set(d, -2 * std::log(alpha))));
-  const VF64 v = hn::Mul(hn::Exp(d, ex), hn::Set(d, 0.3183098861837907));
-  return hn::IfThenElseZero(hn::Gt(mz, hn::Zero(d)), v);
+      StudentTLanesLambda{&c});
 }
 
 // QmcTexel for the STD with the pseudo visible-normal sampler of Algorithm
@@ -339,64 +303,48 @@ HWY_INLINE VF64 StudentTDF64(DF64 d, double alpha, double gamma, VF64 mx, VF64 m
 // (PseudoVnisBranch); the weight D G2 (wo.m) / (wo.z pdf) with the branch's
 // density (GGX's or Beckmann's visible normals), and for NDF sampling
 // (pdf = D m.z) G2 (wo.m) / (wo.z m.z), D cancelled.
+template <class Lambda>
+TexelEstimate StdQmcInLanes(const StudentTNdf<double>& ndf, const StudentTConsts<DF64>& c,
+                            double mu, Masking masking, int samples, uint64_t seed,
+                            bool plain_mc, const Lambda& lambda) {
+  const GgxSamplingConsts<DF64> gc(DF64(), ndf.alpha_x(), ndf.alpha_y());
+  const LanesView v = ViewOf(mu, ndf.Lambda(SamplingView(mu)));
+  const int branch = ndf.PseudoVnisBranch();
+  auto sample = [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
+    if (branch == 1) {
+      GgxSampleVisible(d, gc, v.wx, hn::Zero(d), v.wz, u1, u2, x, y, z);
+    } else if (branch == 2) {
+      BeckmannSampleVisible(d, c.b, v.wx, hn::Zero(d), v.wz, u1, u2, x, y, z);
+    } else if (c.beckmann) {
+      BeckmannSampleNdf(d, c.b, u1, u2, x, y, z);
+    } else {
+      StudentTSampleNdf(d, c, u1, u2, x, y, z);
+    }
+  };
+  auto factor = [&](DF64 d, VF64 mx, VF64 my, VF64 mz, VF64 wo_m) {
+    const VF64 zero = hn::Zero(d), one = hn::Set(d, 1.0);
+    VF64 ratio;  // D / pdf, or 1 / m.z for NDF sampling
+    if (branch == 0) {
+      ratio = hn::Div(one, mz);
+    } else {
+      const VF64 pdf = branch == 1 ? GgxPdfVisible(d, gc, v.wx, zero, v.wz, mx, my, mz)
+                                   : BeckmannPdfVisible(d, c.b, v.wx, zero, v.wz, mx, my, mz);
+      const VF64 dm = c.beckmann ? BeckmannD(d, c.b, mx, my, mz) : StudentTD(d, c, mx, my, mz);
+      const auto ok = hn::Gt(pdf, zero);
+      ratio = hn::IfThenElseZero(ok, hn::Div(dm, hn::IfThenElse(ok, pdf, one)));
+    }
+    return hn::Div(hn::Mul(ratio, wo_m), v.wz);
+  };
+  return QmcInLanes(v, masking, samples, seed, plain_mc, sample, factor, lambda);
+}
+
 TexelEstimate StdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking, int samples,
                           uint64_t seed, bool plain_mc) {
-  const double alpha = ndf.alpha_x(), g = ndf.gamma();
-  const bool inf = std::isinf(g);
-  const DF64 d;
-  const LanesView v(d, SamplingView(mu), ndf.Lambda(SamplingView(mu)));
-  const GgxSamplingConsts<DF64> gc(d, alpha, alpha);
-  const BeckmannConsts<DF64> bc(d, alpha, alpha, 1.0);
-  std::unique_ptr<StudentTLambdaF64Consts> lc;
-  if (!inf) lc = std::make_unique<StudentTLambdaF64Consts>(g);
-  auto lambda = [&](DF64 d, VF64 x, VF64 y, VF64 z) {
-    if (inf) return BeckmannLambda(d, bc, x, y, z);
-    return IsotropicLambda(
-        d, [&](DF64 d, VF64 a) { return StudentTLambdaF64(d, *lc, a); }, alpha, x, y, z);
-  };
-  const int branch = ndf.PseudoVnisBranch();
-  TexelEstimate out;
-  WithMasking(masking, [&](auto separable) {
-    auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
-      const VF64 zero = hn::Zero(d);
-      VF64 mx, my, mz, ratio;  // ratio = D / pdf times m.z's share
-      if (branch == 0) {
-        VF64 r2;
-        if (inf) {
-          r2 = BeckmannR2(d, u2);
-        } else {
-          const VF64 e = hn::Neg(hn::Log1p(d, hn::Neg(ClampBelowOne(d, u2))));
-          r2 = hn::Mul(hn::Set(d, g - 1), hn::Expm1(d, hn::Div(e, hn::Set(d, g - 1))));
-        }
-        SlopeNormal(d, alpha, r2, u1, &mx, &my, &mz);
-        ratio = hn::Div(hn::Set(d, 1.0), mz);
-      } else {
-        VF64 pdf;
-        if (branch == 1) {
-          GgxSampleVisible(d, gc, v.wx, zero, v.wz, u1, u2, &mx, &my, &mz);
-          pdf = GgxPdfVisible(d, gc, v.wx, zero, v.wz, mx, my, mz);
-        } else {
-          BeckmannSampleVisible(d, bc, v.wx, zero, v.wz, u1, u2, &mx, &my, &mz);
-          pdf = BeckmannPdfVisible(d, bc, v.wx, zero, v.wz, mx, my, mz);
-        }
-        const VF64 dm = inf ? BeckmannD(d, bc, mx, my, mz) : StudentTDF64(d, alpha, g, mx, my, mz);
-        ratio = hn::IfThenElseZero(hn::Gt(pdf, zero),
-                                   hn::Div(dm, hn::IfThenElse(hn::Gt(pdf, zero), pdf,
-                                                              hn::Set(d, 1.0))));
-      }
-      const VF64 wo_m = hn::MulAdd(v.wx, mx, hn::Mul(v.wz, mz));
-      VF64 ix, iy, iz;
-      ReflectView(v, mx, my, mz, wo_m, &ix, &iy, &iz);
-      const VF64 g2 = G2FromLambdaI<decltype(separable)::value>(d, v, lambda(d, ix, iy, iz), iz,
-                                                                 wo_m);
-      *w = hn::Div(hn::Mul(hn::Mul(ratio, g2), wo_m), v.wz);
-      *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_m));
-    };
-    out = QmcTexelWith(samples, seed, plain_mc,
-                       [&](const double* u1, const double* u2, int n, double* acc,
-                           double* acc_fc) { SumInLanes(weights, u1, u2, n, acc, acc_fc); });
-  });
-  return out;
+  const StudentTConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y(), 1.0, ndf.gamma());
+  if (c.beckmann) {
+    return StdQmcInLanes(ndf, c, mu, masking, samples, seed, plain_mc, BeckmannLanesLambda{&c.b});
+  }
+  return StdQmcInLanes(ndf, c, mu, masking, samples, seed, plain_mc, StudentTLanesLambda{&c});
 }
 #endif
 

@@ -344,9 +344,22 @@ void CheckBeckmannSamplingF64() {
       ASSERT_LE(pe, 1.0) << "pdf i=" << i << " got " << pdf[i] << " ref " << pref;
     }
   }
+  double worst_ndf = 0;
+  for (const auto& a : kSamplingAlphas) {
+    const BeckmannNdf<double> ndf(a[0], a[1]);
+    const BeckmannConsts<DD> c(dd, a[0], a[1], 1.0);
+    worst_ndf = std::max(
+        worst_ndf, CheckNdfSamplerF64(
+                       [&](DD d, auto v1, auto v2, auto* x, auto* y, auto* z) {
+                         BeckmannSampleNdf(d, c, v1, v2, x, y, z);
+                       },
+                       [&](double v1, double v2) { return ndf.SampleNdf(v1, v2); },
+                       "Beckmann SampleNdf, double lanes"));
+  }
   std::printf("%s: double lanes: erf^-1 error / bound %.3g; Beckmann SampleVisible max error "
-              "%.3g (bound %.0e), PdfVisible error / bound %.3g\n",
-              Target(), worst_inv, worst, kF64VisibleAbs, worst_pdf);
+              "%.3g (bound %.0e), PdfVisible error / bound %.3g, SampleNdf max error %.3g "
+              "(bound %.0e)\n",
+              Target(), worst_inv, worst, kF64VisibleAbs, worst_pdf, worst_ndf, kF64NdfSampleAbs);
 }
 
 // Every branch of Algorithm 1: sigma <= 0.01 (NDF), gamma > 10 (Beckmann),

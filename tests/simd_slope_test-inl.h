@@ -207,6 +207,51 @@ inline void SampleUs(size_t n, std::vector<float>* u1, std::vector<float>* u2) {
   }
 }
 
+// An NDF sampler in double lanes, `sample(d, u1, u2, &mx, &my, &mz)`,
+// against its scalar twin `ref(u1, u2)` (slope_ndf.h SampleNdf) at the
+// SampleUs points with 30 more random low bits, plus u2 from 1 - 2^-53 to 1
+// and u1 at the quadrant edges: returns the largest |m - m_ref| (max
+// component) and asserts `bound` (kF64NdfSampleAbs unless stated).
+constexpr double kF64NdfSampleAbs = 1e-14;
+template <class Sample, class Ref>
+double CheckNdfSamplerF64(const Sample& sample, const Ref& ref, const char* what,
+                          double bound = kF64NdfSampleAbs) {
+  using DD = hn::ScalableTag<double>;
+  const DD dd;
+  const size_t N = hn::Lanes(dd);
+  std::vector<float> f1, f2;
+  SampleUs(20000, &f1, &f2);
+  std::vector<double> u1, u2;
+  for (size_t i = 0; i < f1.size(); ++i) {
+    u1.push_back(std::min(f1[i] + 0x1p-30 * f2[i], 1.0));
+    u2.push_back(std::min(f2[i] + 0x1p-30 * f1[i], 1.0));
+  }
+  for (double a : {0.0, 0.125, 0.25, 0.5, 0.75, 1 - 0x1p-53}) {
+    for (double b : {0.0, 1e-300, 0.5, 1 - 0x1p-40, 1 - 0x1p-53, 1.0}) {
+      u1.push_back(a);
+      u2.push_back(b);
+    }
+  }
+  const size_t n = u1.size();
+  while (u1.size() % N) u1.push_back(0.5), u2.push_back(0.5);
+  double worst = 0;
+  for (size_t i = 0; i < n; i += N) {
+    hn::Vec<DD> x, y, z;
+    sample(dd, hn::LoadU(dd, &u1[i]), hn::LoadU(dd, &u2[i]), &x, &y, &z);
+    HWY_ALIGN double mx[HWY_MAX_BYTES / 8], my[HWY_MAX_BYTES / 8], mz[HWY_MAX_BYTES / 8];
+    hn::Store(x, dd, mx);
+    hn::Store(y, dd, my);
+    hn::Store(z, dd, mz);
+    for (size_t k = 0; k < N && i + k < n; ++k) {
+      const Vec3<double> r = ref(u1[i + k], u2[i + k]);
+      const double e = std::max({std::abs(mx[k] - r.x), std::abs(my[k] - r.y), std::abs(mz[k] - r.z)});
+      worst = std::max(worst, e);
+      EXPECT_LE(e, bound) << what << " u " << u1[i + k] << "," << u2[i + k];
+    }
+  }
+  return worst;
+}
+
 // Documented bounds (src/simd/beckmann_sampling-inl.h, std_sampling-inl.h,
 // and the kernels these reuse), against the double reference at the same
 // float inputs.

@@ -176,28 +176,30 @@ HWY_INLINE V BeckmannBrdf(D d, const BeckmannConsts<D>& c, bool separable, V ix,
   return hn::IfThenElseZero(valid, val);
 }
 
-// cos(2 pi u), sin(2 pi u) for any float u. u is reduced exactly, in turns,
-// to v = u - k/4 with |v| <= 1/8 and k in {-2..2}, so that Cos and Sin only
-// see |2 pi v| <= pi/4 and the quadrant is a swap and sign flips: near the
-// zeros of cos and sin the result keeps its relative accuracy (with 2 pi u
-// rounded to float, cos(2 pi u) near u = 1/4 would be off by 1e-7 absolute,
-// which the stretch by alpha_x / alpha_y = 1000 amplifies).
+// cos(2 pi u), sin(2 pi u) for any u (float or double lanes). u is reduced
+// exactly, in turns, to v = u - k/4 with |v| <= 1/8 and k in {-2..2}, so
+// that Cos and Sin only see |2 pi v| <= pi/4 and the quadrant is a swap
+// and sign flips: near the zeros of cos and sin the result keeps its
+// relative accuracy (with 2 pi u rounded to float, cos(2 pi u) near u =
+// 1/4 would be off by 1e-7 absolute, which the stretch by alpha_x /
+// alpha_y = 1000 amplifies).
 // Error: 4 ulp relative per component.
 template <class D, class V>
 HWY_INLINE void CosSinTurns(D d, V u, V* cos_out, V* sin_out) {
+  using T = hn::TFromD<D>;
   const V w = hn::Sub(u, hn::Round(u));                                  // [-1/2, 1/2]
-  const V k = hn::Round(hn::Mul(w, hn::Set(d, 4.0f)));                   // -2..2
-  const V v = hn::NegMulAdd(k, hn::Set(d, 0.25f), w);                    // exact
-  const V phi = hn::Mul(v, hn::Set(d, 6.283185307179586f));
+  const V k = hn::Round(hn::Mul(w, hn::Set(d, T(4))));                   // -2..2
+  const V v = hn::NegMulAdd(k, hn::Set(d, T(0.25)), w);                  // exact
+  const V phi = hn::Mul(v, hn::Set(d, T(6.283185307179586)));
   const V c = hn::Cos(d, phi), s = hn::Sin(d, phi);
   const V ak = hn::Abs(k);
-  const auto swap = hn::Eq(ak, hn::Set(d, 1.0f));                        // odd quadrant
+  const auto swap = hn::Eq(ak, hn::Set(d, T(1)));                        // odd quadrant
   const V c1 = hn::IfThenElse(swap, s, c), s1 = hn::IfThenElse(swap, c, s);
   // Quadrant q = k mod 4: cos flips for q = 1, 2 (k = 1, +-2), sin for
   // q = 2, 3 (k = +-2, -1).
-  const auto two = hn::Eq(ak, hn::Set(d, 2.0f));
-  const auto cos_neg = hn::Or(two, hn::Eq(k, hn::Set(d, 1.0f)));
-  const auto sin_neg = hn::Or(two, hn::Eq(k, hn::Set(d, -1.0f)));
+  const auto two = hn::Eq(ak, hn::Set(d, T(2)));
+  const auto cos_neg = hn::Or(two, hn::Eq(k, hn::Set(d, T(1))));
+  const auto sin_neg = hn::Or(two, hn::Eq(k, hn::Set(d, T(-1))));
   *cos_out = hn::IfThenElse(cos_neg, hn::Neg(c1), c1);
   *sin_out = hn::IfThenElse(sin_neg, hn::Neg(s1), s1);
 }
@@ -205,26 +207,35 @@ HWY_INLINE void CosSinTurns(D d, V u, V* cos_out, V* sin_out) {
 // NDF sampling (slope_ndf.h SampleNdf with BeckmannNdf::UnitSampleR2): the
 // standard radial slope r^2 = -log(1 - u2), azimuth 2 pi u1, stretch by
 // (ax, ay), m = normalize(-slope, 1). Writes the three components.
-// Error: 1e-6 absolute per component (measured in the test).
+// Error: 1e-6 absolute per component in float lanes, 1e-15 in double lanes
+// (measured in the tests: CheckBeckmannSampleNdf, CheckBeckmannSamplingF64).
 template <class D, class V>
 HWY_INLINE void SampleSlopeNormal(D d, V ax, V ay, V r2, V u1, V* mx, V* my, V* mz) {
+  using T = hn::TFromD<D>;
   V cos_phi, sin_phi;
   CosSinTurns(d, u1, &cos_phi, &sin_phi);
   const V r = hn::Sqrt(r2);
   const V px = hn::Mul(hn::Mul(r, ax), cos_phi);
   const V py = hn::Mul(hn::Mul(r, ay), sin_phi);
-  const V inv = hn::Div(hn::Set(d, 1.0f),
-                        hn::Sqrt(hn::MulAdd(px, px, hn::MulAdd(py, py, hn::Set(d, 1.0f)))));
+  const V inv = hn::Div(hn::Set(d, T(1)),
+                        hn::Sqrt(hn::MulAdd(px, px, hn::MulAdd(py, py, hn::Set(d, T(1))))));
   *mx = hn::Neg(hn::Mul(px, inv));
   *my = hn::Neg(hn::Mul(py, inv));
   *mz = inv;
 }
 
+// The largest u2 the radial inverse CDFs take, as the scalar clamp at
+// 1 - 2^-53 does in double: 1 - 2^-24 in float lanes (r^2 <= 16.6 for
+// Beckmann), 1 - 2^-53 in double lanes (r^2 <= 36.7).
+template <class T>
+constexpr T SlopeSampleMaxU() {
+  return sizeof(T) == 8 ? T(1 - 0x1p-53) : T(0.99999994f);
+}
+
 template <class D, class V>
 HWY_INLINE void BeckmannSampleNdf(D d, const BeckmannConsts<D>& c, V u1, V u2, V* mx, V* my,
                                   V* mz) {
-  // u2 < 1 - 2^-24 keeps r^2 <= 16.6 (as the scalar clamp does in double).
-  const V uc = hn::Min(u2, hn::Set(d, 0.99999994f));
+  const V uc = hn::Min(u2, hn::Set(d, SlopeSampleMaxU<hn::TFromD<D>>()));
   const V r2 = hn::Neg(hn::Log1p(d, hn::Neg(uc)));
   SampleSlopeNormal(d, c.ax, c.ay, r2, u1, mx, my, mz);
 }

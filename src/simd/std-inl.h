@@ -257,12 +257,14 @@ HWY_INLINE V StudentTBrdf(D d, const StudentTConsts<D>& c, bool separable, V ix,
 // NDF sampling (slope_ndf.h SampleNdf with StudentTNdf::UnitSampleR2): the
 // inverse radial CDF r^2 = (gamma - 1) expm1(-log1p(-u2) / (gamma - 1))
 // (seed 004 eq. 42, sigma = 1), then the stretch of beckmann-inl.h.
-// Error: 2e-6 absolute per component (log1p near u2 = 1 is amplified by
-// expm1's exponent, up to 33 at gamma = 1.501).
+// Error: 2e-6 absolute per component in float lanes (log1p near u2 = 1 is
+// amplified by expm1's exponent, up to 33 at gamma = 1.501); 1e-14 times
+// alpha_x / alpha_y in double lanes (CheckStudentTSampleNdfF64: 5e-13 at
+// 1000:1, where the reference's rounding of 2 pi u1 dominates).
 template <class D, class V>
 HWY_INLINE void StudentTSampleNdf(D d, const StudentTConsts<D>& c, V u1, V u2, V* mx, V* my,
                                   V* mz) {
-  const V uc = hn::Min(u2, hn::Set(d, 0.99999994f));
+  const V uc = hn::Min(u2, hn::Set(d, SlopeSampleMaxU<hn::TFromD<D>>()));
   const V e = hn::Neg(hn::Log1p(d, hn::Neg(uc)));
   const V r2 = hn::Mul(c.gm1, hn::Expm1(d, hn::Mul(e, c.inv_gm1)));
   SampleSlopeNormal(d, c.b.ax, c.b.ay, r2, u1, mx, my, mz);
