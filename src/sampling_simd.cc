@@ -6,10 +6,10 @@
 // estimates are those of sampling_integrators.h (QmcTexelWith,
 // EngineRuleWith); only the sum over a point set runs in lanes.
 
+#include "sampling_simd.h"
+
 #include <cmath>
 #include <vector>
-
-#include "sampling_simd.h"
 
 #include "sampling_integrators.h"
 
@@ -36,10 +36,10 @@ using VF64 = hn::Vec<DF64>;
 
 // The sum over n points of `weights(d, u1, u2, &w, &w_fc)`: lane-wise
 // partial sums, folded into a double total every kFold vectors (so that no
-// lane sums more than kFold terms before it is added up: at most 2^20
-// samples per replica leave a relative rounding error below 1e-12, far
-// below a sampling integrator's statistical error). The tail's lanes are
-// masked off.
+// lane sums more than kFold terms before it is added up: the most samples
+// per replica, 2^21 (--samples 2^24 over 8 replicas), leave a relative
+// rounding error below 1e-12, far below a sampling integrator's
+// statistical error). The tail's lanes are masked off.
 template <class Weights>
 void SumInLanes(const Weights& weights, const double* u1, const double* u2, int n, double* acc,
                 double* acc_fc) {
@@ -138,15 +138,6 @@ HWY_INLINE void EngineWeight(DF64 d, const LanesView& v, const Lambda& lambda, V
   *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_h));
 }
 
-// ---- GGX ----
-
-struct GgxLanesLambda {
-  const GgxConsts<DF64>* c;
-  HWY_INLINE VF64 operator()(DF64 d, VF64 x, VF64 y, VF64 z) const {
-    return GgxLambda(d, *c, x, y, z);
-  }
-};
-
 // QMC and MC with the weight f cos_i / pdf = G2 factor(m, wo.m) at the
 // normal m = sample(d, u1, u2) (VisibleSampler): for an exact visible-normal
 // sampler factor = 1 / G1(wo) = 1 + Lambda(wo) (ExactVisible).
@@ -162,14 +153,15 @@ TexelEstimate QmcInLanes(const LanesView& v, Masking masking, int samples, uint6
       const VF64 wo_m = hn::MulAdd(v.wx, mx, hn::Mul(v.wz, mz));
       VF64 ix, iy, iz;
       ReflectView(v, mx, my, mz, wo_m, &ix, &iy, &iz);
-      const VF64 g2 = G2FromLambdaI<decltype(separable)::value>(d, v, lambda(d, ix, iy, iz), iz,
-                                                                 wo_m);
+      const VF64 g2 =
+          G2FromLambdaI<decltype(separable)::value>(d, v, lambda(d, ix, iy, iz), iz, wo_m);
       *w = hn::Mul(g2, factor(d, mx, my, mz, wo_m));
       *w_fc = hn::Mul(*w, SchlickWeightF64(d, wo_m));
     };
     out = QmcTexelWith(samples, seed, plain_mc,
-                       [&](const double* u1, const double* u2, int n, double* acc,
-                           double* acc_fc) { SumInLanes(weights, u1, u2, n, acc, acc_fc); });
+                       [&](const double* u1, const double* u2, int n, double* acc, double* acc_fc) {
+                         SumInLanes(weights, u1, u2, n, acc, acc_fc);
+                       });
   });
   return out;
 }
@@ -185,6 +177,36 @@ inline LanesView ViewOf(double mu, double lambda_o) {
   return LanesView(DF64(), SamplingView(mu), lambda_o);
 }
 
+// The engine rule for a model with NDF sampler `normal(d, u1, u2, &m)` and
+// Lambda kernel `lambda`.
+template <class Normal, class Lambda>
+QuadratureResult EngineInLanes(double mu, double lambda_o, Masking masking, int samples,
+                               const Normal& normal, const Lambda& lambda) {
+  const LanesView v = ViewOf(mu, lambda_o);
+  QuadratureResult out;
+  WithMasking(masking, [&](auto separable) {
+    auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
+      VF64 hx, hy, hz;
+      normal(d, u1, u2, &hx, &hy, &hz);
+      EngineWeight<decltype(separable)::value>(d, v, lambda, hx, hy, hz, w, w_fc);
+    };
+    out = EngineRuleWith(
+        samples, [&](const double* u1, const double* u2, int n, double* acc, double* acc_fc) {
+          SumInLanes(weights, u1, u2, n, acc, acc_fc);
+        });
+  });
+  return out;
+}
+
+// ---- GGX ----
+
+struct GgxLanesLambda {
+  const GgxConsts<DF64>* c;
+  HWY_INLINE VF64 operator()(DF64 d, VF64 x, VF64 y, VF64 z) const {
+    return GgxLambda(d, *c, x, y, z);
+  }
+};
+
 TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
                           uint64_t seed, bool plain_mc) {
   const GgxSamplingConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y());
@@ -197,32 +219,9 @@ TexelEstimate GgxQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking,
       ExactVisible{v.inv_g1_o}, GgxLanesLambda{&c.ggx});
 }
 
-// The engine rule for a model with NDF sampler `normal(d, u1, u2, &m)` and
-// Lambda kernel `lambda`.
-template <class Normal, class Lambda>
-QuadratureResult EngineInLanes(double mu, double lambda_o, Masking masking, int samples,
-                               const Normal& normal, const Lambda& lambda) {
-  const DF64 d;
-  const LanesView v(d, SamplingView(mu), lambda_o);
-  QuadratureResult out;
-  WithMasking(masking, [&](auto separable) {
-    auto weights = [&](DF64 d, VF64 u1, VF64 u2, VF64* w, VF64* w_fc) {
-      VF64 hx, hy, hz;
-      normal(d, u1, u2, &hx, &hy, &hz);
-      EngineWeight<decltype(separable)::value>(d, v, lambda, hx, hy, hz, w, w_fc);
-    };
-    out = EngineRuleWith(samples, [&](const double* u1, const double* u2, int n, double* acc,
-                                      double* acc_fc) {
-      SumInLanes(weights, u1, u2, n, acc, acc_fc);
-    });
-  });
-  return out;
-}
-
 QuadratureResult GgxEngineTexel(const GgxNdf<double>& ndf, double mu, Masking masking,
                                 int samples) {
-  const DF64 d;
-  const GgxSamplingConsts<DF64> c(d, ndf.alpha_x(), ndf.alpha_y());
+  const GgxSamplingConsts<DF64> c(DF64(), ndf.alpha_x(), ndf.alpha_y());
   return EngineInLanes(
       mu, ndf.Lambda(SamplingView(mu)), masking, samples,
       [&](DF64 d, VF64 u1, VF64 u2, VF64* x, VF64* y, VF64* z) {
@@ -305,8 +304,8 @@ QuadratureResult StdEngineTexel(const StudentTNdf<double>& ndf, double mu, Maski
 // (pdf = D m.z) G2 (wo.m) / (wo.z m.z), D cancelled.
 template <class Lambda>
 TexelEstimate StdQmcInLanes(const StudentTNdf<double>& ndf, const StudentTConsts<DF64>& c,
-                            double mu, Masking masking, int samples, uint64_t seed,
-                            bool plain_mc, const Lambda& lambda) {
+                            double mu, Masking masking, int samples, uint64_t seed, bool plain_mc,
+                            const Lambda& lambda) {
   const GgxSamplingConsts<DF64> gc(DF64(), ndf.alpha_x(), ndf.alpha_y());
   const LanesView v = ViewOf(mu, ndf.Lambda(SamplingView(mu)));
   const int branch = ndf.PseudoVnisBranch();
@@ -369,8 +368,8 @@ QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking ma
 
 #if BRDFBAKE_WITH_BECKMANN
 HWY_EXPORT(BeckmannQmcTexel);
-TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
-                           int samples, uint64_t seed, bool plain_mc) {
+TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking, int samples,
+                           uint64_t seed, bool plain_mc) {
   return HWY_DYNAMIC_DISPATCH(BeckmannQmcTexel)(ndf, mu, masking, samples, seed, plain_mc);
 }
 
@@ -383,8 +382,8 @@ QuadratureResult SimdEngineRule(const BeckmannNdf<double>& ndf, double mu, Maski
 
 #if BRDFBAKE_WITH_STD
 HWY_EXPORT(StdQmcTexel);
-TexelEstimate SimdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking,
-                           int samples, uint64_t seed, bool plain_mc) {
+TexelEstimate SimdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking, int samples,
+                           uint64_t seed, bool plain_mc) {
   return HWY_DYNAMIC_DISPATCH(StdQmcTexel)(ndf, mu, masking, samples, seed, plain_mc);
 }
 

@@ -30,18 +30,17 @@ namespace brdfbake {
 TexelEstimate SimdQmcTexel(const GgxNdf<double>& ndf, double mu, Masking masking, int samples,
                            uint64_t seed, bool plain_mc);
 #if BRDFBAKE_WITH_BECKMANN
-TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking,
-                           int samples, uint64_t seed, bool plain_mc);
+TexelEstimate SimdQmcTexel(const BeckmannNdf<double>& ndf, double mu, Masking masking, int samples,
+                           uint64_t seed, bool plain_mc);
 #endif
 #if BRDFBAKE_WITH_STD
 // With the pseudo visible-normal sampler of seed 004 Algorithm 1.
-TexelEstimate SimdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking,
-                           int samples, uint64_t seed, bool plain_mc);
+TexelEstimate SimdQmcTexel(const StudentTNdf<double>& ndf, double mu, Masking masking, int samples,
+                           uint64_t seed, bool plain_mc);
 #endif
 
 // EngineRule with NDF sampling of the half vector in lanes.
-QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking masking,
-                                int samples);
+QuadratureResult SimdEngineRule(const GgxNdf<double>& ndf, double mu, Masking masking, int samples);
 #if BRDFBAKE_WITH_BECKMANN
 QuadratureResult SimdEngineRule(const BeckmannNdf<double>& ndf, double mu, Masking masking,
                                 int samples);
