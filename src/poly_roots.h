@@ -44,11 +44,15 @@ inline double PolyRootBracketed(const double* c, int n, double a, double b, doub
     } else {
       b = x;
     }
-    const double newton = x - v / dv;
+    const double step = v / dv;
+    // A converged Newton step: the root is within |step| of x. (Tested
+    // before the bracket: once x is within rounding of the root, v's sign
+    // is noise and x - step can fall just outside [a, b], which used to
+    // send the loop through ~40 bisections instead.)
+    if (std::abs(step) <= 0.5 * tol) return std::clamp(x - step, a, b);
+    const double newton = x - step;
     const bool inside = newton > a && newton < b;
     x = inside ? newton : 0.5 * (a + b);
-    // A converged Newton step: the root is within |step| of x.
-    if (inside && std::abs(v / dv) <= 0.5 * tol) return x;
   }
   return x;
 }
