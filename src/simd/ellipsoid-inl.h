@@ -67,7 +67,10 @@
 // times the same factors, and PdfVisible within 2e-14 kappa + 1e-15 /
 // (u.m), against the double reference at the same (unit, double) inputs;
 // measured 2.0e-15, 9.3e-16, 8.6e-16, 8.6e-16 and 0.58 of the pdf's bound
-// on every target (CheckEllipsoidF64). SampleVisible is float only.
+// on every target (CheckEllipsoidF64); SampleVisible in double lanes within
+// 2e-14 kappa in sphere space plus 4.4e-16 / lift, the reference's own
+// cancellation of its lift at the rim of the disk (measured 0.43 of that
+// bound, CheckEllipsoidF64).
 
 #if defined(BRDFBAKE_SIMD_ELLIPSOID_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef BRDFBAKE_SIMD_ELLIPSOID_INL_H_
@@ -312,15 +315,19 @@ HWY_INLINE V EllipsoidPdfVisible(D d, const EllipsoidConsts<D>& c, V ux, V uy, V
 template <class D, class V>
 HWY_INLINE void EllipsoidSampleVisible(D d, const EllipsoidConsts<D>& c, V ux, V uy, V uz, V u1,
                                        V u2, V* mx, V* my, V* mz) {
-  const V zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+  using T = hn::TFromD<D>;
+  // Floors of |Au|^2 and of |k x w|^2 (the pole) in the lanes' range.
+  constexpr T kTinyLen2 = sizeof(T) == 8 ? T(1e-300) : T(1e-30f);
+  constexpr T kPoleKw2 = sizeof(T) == 8 ? T(1e-300) : T(1e-36f);
+  const V zero = hn::Zero(d), one = hn::Set(d, T(1));
   const V ax = Row(c.a, 0, ux, uy, uz), ay = Row(c.a, 1, ux, uy, uz), az = Row(c.a, 2, ux, uy, uz);
-  const V ra = RsqrtNewton(d, hn::Max(Dot3(ax, ay, az, ax, ay, az), hn::Set(d, 1e-30f)));
+  const V ra = RsqrtNewton(d, hn::Max(Dot3(ax, ay, az, ax, ay, az), hn::Set(d, kTinyLen2)));
   const V wx = hn::Mul(ax, ra), wy = hn::Mul(ay, ra), wz = hn::Mul(az, ra);
   // t1 = normalize(k x w) = normalize((k x A) u).
   V kx, ky, kz;
   KCrossA(c, ux, uy, &kx, &ky, &kz);
   const V kw2 = Dot3(kx, ky, kz, kx, ky, kz);
-  const auto off_pole = hn::Gt(kw2, hn::Set(d, 1e-36f));
+  const auto off_pole = hn::Gt(kw2, hn::Set(d, kPoleKw2));
   const V inv_kw = RsqrtNewton(d, hn::IfThenElse(off_pole, kw2, one));
   const V t1x = hn::IfThenElse(off_pole, hn::Mul(kx, inv_kw), c.t1_pole[0]);
   const V t1y = hn::IfThenElse(off_pole, hn::Mul(ky, inv_kw), c.t1_pole[1]);
@@ -334,10 +341,10 @@ HWY_INLINE void EllipsoidSampleVisible(D d, const EllipsoidConsts<D>& c, V ux, V
   // so that both keep their relative precision (thin lunes, w near -k, and
   // views near the cut normal, w near k).
   const V wk = Dot3(wx, wy, wz, c.k[0], c.k[1], c.k[2]);
-  const V big = hn::Min(hn::MulAdd(hn::Set(d, 0.5f), hn::Abs(wk), hn::Set(d, 0.5f)), one);
+  const V big = hn::Min(hn::MulAdd(hn::Set(d, T(0.5)), hn::Abs(wk), hn::Set(d, T(0.5))), one);
   const V rb = RsqrtNewton(d, big);
   const V small = hn::Min(hn::Mul(hn::Mul(hn::Mul(kw2, hn::Mul(ra, ra)), hn::Mul(rb, rb)),
-                                  hn::Set(d, 0.25f)),
+                                  hn::Set(d, T(0.25))),
                           big);
   const auto wk_pos = hn::Ge(wk, zero);
   const V s = hn::IfThenElse(wk_pos, big, small);
@@ -351,7 +358,7 @@ HWY_INLINE void EllipsoidSampleVisible(D d, const EllipsoidConsts<D>& c, V ux, V
   const V qx = Dot3(c.a[0][0], c.a[1][0], c.a[2][0], px, py, pz);
   const V qy = Dot3(c.a[0][1], c.a[1][1], c.a[2][1], px, py, pz);
   const V qz = hn::Max(Dot3(c.a[0][2], c.a[1][2], c.a[2][2], px, py, pz), zero);
-  const V inv_q = RsqrtNewton(d, hn::Max(Dot3(qx, qy, qz, qx, qy, qz), hn::Set(d, 1e-30f)));
+  const V inv_q = RsqrtNewton(d, hn::Max(Dot3(qx, qy, qz, qx, qy, qz), hn::Set(d, kTinyLen2)));
   const auto valid = hn::Gt(uz, zero);
   *mx = hn::IfThenElseZero(valid, hn::Mul(qx, inv_q));
   *my = hn::IfThenElseZero(valid, hn::Mul(qy, inv_q));
