@@ -617,7 +617,13 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // Rays tangent to the clamp's edge (ClampTangents), each splitting its
   // segment, singular on both sides.
   // The cut at psi: singular on both sides (a tangent ray), or graded
-  // towards from both sides down to `feature` (a glancing ray).
+  // towards from both sides down to `feature` (a glancing ray). A feature
+  // at an end of the segment cut (the grazing feature rays above) reaches
+  // across a cut nearer to it than its width: the far side is graded
+  // towards the cut as well. (Without that, at alpha 0.05 x 0.3, theta_x
+  // 70, theta_z 20 degrees, mu 0.21277, phi 1.60422, a tangent ray 0.0067
+  // from a feature ray of width 0.106 left the next quarter turn one
+  // Kronrod piece, which missed by 4.6e-8 against a claim of 2.8e-8.)
   auto cut = [&](double psi, bool singular, double feature) {
     const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
     for (size_t i = 0; i < segments.size(); ++i) {
@@ -626,10 +632,10 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
         PsiSegment right = g;
         right.a = t;
         right.singular_a = singular;
-        right.feature_a = feature;
+        right.feature_a = t - g.a < g.feature_a ? std::max(feature, g.feature_a) : feature;
+        g.feature_b = g.b - t < g.feature_b ? std::max(feature, g.feature_b) : feature;
         g.b = t;
         g.singular_b = singular;
-        g.feature_b = feature;
         segments.insert(segments.begin() + i + 1, right);
         return;
       }
