@@ -46,6 +46,9 @@ auto ScalarVisibleSum(const Ndf& ndf, const Vec3<double>& wo, Masking masking) {
   };
 }
 
+// Points per call of a sum (QmcTexelWith, EngineRuleWith).
+inline constexpr int kSamplingBlock = 2048;
+
 // The view of the sampling integrators: azimuth 0, mu at least kMuMin.
 inline Vec3<double> SamplingView(double mu) { return FromMuPhi(std::max(mu, kMuMin), 0.0); }
 
@@ -59,25 +62,32 @@ TexelEstimate QmcTexelWith(int samples, uint64_t seed, bool plain_mc, const Sum&
   constexpr int replicas = 8;
   const int n = std::max(1, samples / replicas);
   Rng rng(seed);
-  thread_local std::vector<double> u1, u2;
-  u1.resize(n);
-  u2.resize(n);
+  // The points go to `sum` in blocks of kSamplingBlock (memory bounded at
+  // any sample count and thread count), in the order drawn.
+  double u1[kSamplingBlock], u2[kSamplingBlock];
   double e[replicas], b[replicas], s[replicas];
   for (int r = 0; r < replicas; ++r) {
     const double shift1 = rng.Uniform(), shift2 = rng.Uniform();
-    for (int i = 0; i < n; ++i) {
-      if (plain_mc) {
-        u1[i] = rng.Uniform();
-        u2[i] = rng.Uniform();
-      } else {
-        const double a = (i + 0.5) / n + shift1;
-        const double b = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
-        u1[i] = a - std::floor(a);
-        u2[i] = b - std::floor(b);
-      }
-    }
     double acc = 0, acc_fc = 0;
-    sum(u1.data(), u2.data(), n, &acc, &acc_fc);
+    for (int i0 = 0; i0 < n; i0 += kSamplingBlock) {
+      const int m = std::min(kSamplingBlock, n - i0);
+      for (int k = 0; k < m; ++k) {
+        const int i = i0 + k;
+        if (plain_mc) {
+          u1[k] = rng.Uniform();
+          u2[k] = rng.Uniform();
+        } else {
+          const double a = (i + 0.5) / n + shift1;
+          const double c = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
+          u1[k] = a - std::floor(a);
+          u2[k] = c - std::floor(c);
+        }
+      }
+      double block = 0, block_fc = 0;
+      sum(u1, u2, m, &block, &block_fc);
+      acc += block;
+      acc_fc += block_fc;
+    }
     e[r] = acc / n;
     b[r] = acc_fc / n;
     s[r] = e[r] - b[r];
@@ -117,15 +127,19 @@ TexelEstimate QmcTexel(const Ndf& ndf, double mu, Masking masking, int samples, 
 // u1 = i / N the azimuth's and u2 the radius's variable of SampleNdf.
 template <class Sum>
 QuadratureResult EngineRuleWith(int samples, const Sum& sum) {
-  thread_local std::vector<double> u1, u2;
-  u1.resize(samples);
-  u2.resize(samples);
-  for (int i = 0; i < samples; ++i) {
-    u1[i] = static_cast<double>(i) / samples;
-    u2[i] = RadicalInverse2(static_cast<uint32_t>(i));
-  }
+  double u1[kSamplingBlock], u2[kSamplingBlock];
   QuadratureResult r;
-  sum(u1.data(), u2.data(), samples, &r.e, &r.fc);
+  for (int i0 = 0; i0 < samples; i0 += kSamplingBlock) {
+    const int m = std::min(kSamplingBlock, samples - i0);
+    for (int k = 0; k < m; ++k) {
+      u1[k] = static_cast<double>(i0 + k) / samples;
+      u2[k] = RadicalInverse2(static_cast<uint32_t>(i0 + k));
+    }
+    double block = 0, block_fc = 0;
+    sum(u1, u2, m, &block, &block_fc);
+    r.e += block;
+    r.fc += block_fc;
+  }
   r.e /= samples;
   r.fc /= samples;
   return r;

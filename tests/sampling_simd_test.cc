@@ -110,10 +110,16 @@ TEST(SamplingSimdTest, StdQmcAndMcAgreeWithTheScalarReferenceOnEveryTarget) {
 #endif
 
 // Every count of points per replica from 1 to 2 vectors and a few more:
-// each tail length of every target, against the scalar sum.
+// each tail length of every target, against the scalar sum; and counts
+// across the blocks of kSamplingBlock points.
 TEST(SamplingSimdTest, EveryTailLengthSumsTheSamePoints) {
   const GgxNdf<double> ndf(0.3);
-  for (int n = 1; n <= 20; ++n) {
+  std::vector<int> counts;
+  for (int n = 1; n <= 20; ++n) counts.push_back(n);
+  for (int n : {kSamplingBlock - 1, kSamplingBlock, kSamplingBlock + 5, 3 * kSamplingBlock + 7}) {
+    counts.push_back(n);
+  }
+  for (int n : counts) {
     const TexelEstimate ref = QmcTexel(ndf, 0.4, Masking::kHeightCorrelated, 8 * n, 5, false);
     const TexelEstimate got = SimdQmcTexel(ndf, 0.4, Masking::kHeightCorrelated, 8 * n, 5, false);
     EXPECT_LE(Differs(got, ref), kRoundingBound) << n << " points per replica";
