@@ -71,16 +71,19 @@ TexelEstimate QmcTexelWith(int samples, uint64_t seed, bool plain_mc, const Sum&
     double acc = 0, acc_fc = 0;
     for (int i0 = 0; i0 < n; i0 += kSamplingBlock) {
       const int m = std::min(kSamplingBlock, n - i0);
-      for (int k = 0; k < m; ++k) {
-        const int i = i0 + k;
-        if (plain_mc) {
+      if (plain_mc) {
+        for (int k = 0; k < m; ++k) {
           u1[k] = rng.Uniform();
           u2[k] = rng.Uniform();
-        } else {
+        }
+      } else {
+        for (int k = 0; k < m; ++k) {
+          const int i = i0 + k;
           const double a = (i + 0.5) / n + shift1;
           const double c = RadicalInverse2(static_cast<uint32_t>(i)) + shift2;
-          u1[k] = a - std::floor(a);
-          u2[k] = c - std::floor(c);
+          // x - floor(x) for x in [0, 2): a subtraction of 1 at most.
+          u1[k] = a >= 1 ? a - 1 : a;
+          u2[k] = c >= 1 ? c - 1 : c;
         }
       }
       double block = 0, block_fc = 0;
