@@ -138,8 +138,9 @@ HWY_INLINE V ErfInvCentered(D d, V u) {
     // (exact), y >= 0: y += (sqrt(pi) / 2) (erfcx(y) - 2q / exp(-y^2)),
     // with ErfcxF64 and ExpNegSquareF64 (simd/math_f64-inl.h; exp(-y^2) >=
     // 1e-15 for y <= 5.86). Two steps square the error twice (3e-7 ->
-    // 1e-13 -> below rounding); the result is within 2e-16 (1 + |y|) of
-    // erf^-1 (CheckErfInvF64).
+    // 1e-13 -> below rounding); the result is within 1e-15 |y| + 4e-16 of
+    // erf^-1 (CheckBeckmannSamplingF64; the absolute part is erfc's
+    // rounding near y = 0).
     const V two_q = hn::Add(q, q);
     for (int step = 0; step < 2; ++step) {
       const V corr = hn::Sub(ErfcxF64(d, y), hn::Div(two_q, ExpNegSquareF64(d, y)));
@@ -208,10 +209,11 @@ HWY_INLINE void BeckmannSampleVisible(D d, const BeckmannConsts<D>& k, V wx, V w
   constexpr int kNewtonSteps = BeckmannNewtonSteps<T>();
   constexpr int kTaylorTerms = BeckmannTaylorTerms<T>();
   // Floors and clamps in the lanes' range: the smallest normal's order
-  // (float 1e-38, double 1e-300) and the largest u1 below 1.
+  // (float 1e-38, double 1e-300) and the largest u1 below 1
+  // (SlopeSampleMaxU, beckmann-inl.h).
   constexpr T kTiny = sizeof(T) == 8 ? T(1e-300) : T(1.2e-38f);
   constexpr T kTargetFloor = sizeof(T) == 8 ? T(1e-300) : T(1e-37f);
-  constexpr T kBelowOne = sizeof(T) == 8 ? T(1 - 0x1p-53) : T(0.99999994f);
+  constexpr T kBelowOne = SlopeSampleMaxU<T>();
   const V zero = hn::Zero(d), one = hn::Set(d, T(1.0)), half = hn::Set(d, T(0.5));
   const V inv_sqrt_pi = hn::Set(d, T(0.56418958354775628));
   const V slope_max = hn::Set(d, T(kBeckmannSlopeMax));

@@ -165,7 +165,7 @@ HWY_INLINE V BeckmannLambdaF64(D d, V a) {
 // Range: any a >= 0 (+inf gives 0); NaN for NaN. Error: |err| <= 1e-15
 // erfcx(a) on every target (tests/simd_math_f64_test.cc, CheckErfcxF64,
 // 40k points against 50-digit values: measured 4.4e-16, the same on AVX3,
-// AVX2, SSE4, SSSE3 and SCALAR). Cost: one hn::Exp, two divisions and
+// AVX2, SSE4, SSSE3 and SCALAR). Cost: one hn::Exp, four divisions and
 // ~50 FMA (all three forms are computed and selected per lane).
 template <class D, class V>
 HWY_INLINE V ErfcxF64(D d, V a) {
