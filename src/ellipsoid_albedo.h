@@ -40,7 +40,9 @@
 // the disk, or the range between the two rays tangent to it when s0 is
 // outside; each split again at the rays tangent to the clamp's edge. At a
 // tangent ray the ray integral goes like |psi - tangent|^(3/2), and the
-// segment is mapped (SegmentRule) so that it is smooth. The worst piece is
+// segment is mapped (SegmentRule) so that it is smooth. Narrow smooth
+// features (glancing rays, rays whose horizon end nears the clamp) get a
+// cut and a grading towards them. The worst piece is
 // bisected until the total meets the tolerance.
 
 #ifndef BRDFBAKE_SRC_ELLIPSOID_ALBEDO_H_

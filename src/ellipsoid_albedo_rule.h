@@ -517,6 +517,64 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f) {
   return rays;
 }
 
+// Rays whose horizon end comes close to G1's clamp. On the horizon the
+// clamp's margin m (ClampMargin, N of seed eq. 6 over ||h||) stays
+// positive: N = ||Au|| ||An|| + Au.An > 0 at u.n = 0. But a tilted thin
+// ellipsoid brings it near 0 at some horizon directions beta, and the rise
+// width c of G2 at the horizon end of the ray through there
+// (EllipsoidRay::RiseWidth) is proportional to m. The ray integral holds
+// a term like c log c (the layer's deficit, integral of c / (y + c)), so
+// where m(beta) has a small minimum m0 with curvature m2, c ~ m0 + m2
+// (beta - beta*)^2 / 2 puts singularities of the ray integral at
+// psi* +- i w: a smooth feature of width w over psi, w the half change of
+// psi over beta* +- sqrt(2 m0 / m2). (At alpha 0.05 x 0.3, theta_x 70,
+// theta_z 20 degrees, mu 0.41270, phi 2.29386 it is 0.042 wide, 0.034
+// from a tangent ray, and the one Kronrod piece over it missed by 1.5e-7
+// against a claim of 5.3e-8.)
+struct HorizonApproach {
+  double psi, width;
+};
+inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  auto margin = [&](double beta) {
+    return f.ndf.ClampMargin(Vec3<double>(std::cos(beta), std::sin(beta), 0));
+  };
+  // The ray through the horizon point wi(beta): its half vector's slope
+  // s = s0 + L v, v along (cos psi, sin psi).
+  auto psi_at = [&](double beta) {
+    const Vec3<double> m(std::cos(beta) + f.wx, std::sin(beta) + f.wy, f.wz);
+    const double sx = -m.x / m.z, sy = -m.y / m.z;
+    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    return std::atan2(vy, vx);
+  };
+  double probe[kClampProbes];
+  for (int k = 0; k < kClampProbes; ++k) probe[k] = margin(kTwoPi * k / kClampProbes);
+  std::vector<HorizonApproach> out;
+  for (int k = 0; k < kClampProbes; ++k) {
+    const double v = probe[k];
+    if (!(v < probe[(k + kClampProbes - 1) % kClampProbes] &&
+          v <= probe[(k + 1) % kClampProbes])) {
+      continue;
+    }
+    const double beta = MaximizeGolden([&](double b) { return -margin(b); },
+                                       kTwoPi * (k - 1) / kClampProbes,
+                                       kTwoPi * (k + 1) / kClampProbes);
+    const double m0 = margin(beta);
+    constexpr double kStep = 1e-3;
+    const double m2 = (margin(beta + kStep) - 2 * m0 + margin(beta - kStep)) / (kStep * kStep);
+    if (!(m0 > 0) || !(m2 > 0)) continue;
+    // A minimum broader than half a radian of beta is left alone: it made
+    // the bench material (0.3 x 0.6, 20, 30 degrees) 5% more pieces and
+    // none of the texels measured needed it.
+    const double d = std::sqrt(2 * m0 / m2);
+    if (!(d < 0.5)) continue;
+    const double w = 0.5 * std::abs(std::remainder(psi_at(beta + d) - psi_at(beta - d), kTwoPi));
+    const double psi = psi_at(beta);
+    out.push_back({psi, w});
+  }
+  return out;
+}
+
 template <class Nodes>
 AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta_x, double theta_y,
                                     double theta_z, double mu, double phi, Masking masking,
@@ -648,6 +706,24 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     for (double t : rays.tangents) cut(t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
       cut(rays.glancing[i], false, rays.glancing_width[i]);
+    }
+  }
+  // Horizon approaches (HorizonApproaches) narrower than half their
+  // segment's initial piece (at most a quarter turn): cut there and graded
+  // towards from both sides down to their width (`feature` 4 w), so that
+  // the singularities at psi* +- i w are no nearer to a piece than its
+  // width. Measured on 64 x 64 views of 13 materials against the rule at
+  // 1e-12: without them the worst texels of four (thin lobes tilted 60 to
+  // 85 degrees) missed by 2.8x to 5.6x their claims; with them every
+  // texel is within 0.85 of its claim. A cut without the grading left one
+  // at 1.03x. The cost is in thin lobes: none on the bench material, up
+  // to 1.7x the psi pieces (0.01 x 0.1 at 50 degrees).
+  for (const HorizonApproach& h : HorizonApproaches(f)) {
+    const double t = lo + std::remainder(h.psi - lo - kPi<double>, kTwoPi) + kPi<double>;
+    for (const PsiSegment& g : segments) {
+      if (!(g.a < t && t < g.b)) continue;
+      if (h.width < 0.5 * std::min(g.b - g.a, 0.25 * kTwoPi)) cut(h.psi, false, 4 * h.width);
+      break;
     }
   }
   return SegmentRule(ray_batch, segments, tol, max_pieces);

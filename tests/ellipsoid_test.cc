@@ -627,6 +627,20 @@ TEST(EllipsoidAlbedoTest, ClaimBoundsAFeatureReachingAcrossATangentCut) {
   ExpectClaimBounds(0.05, 0.3, 70, 20, 0.2127659574468085, 1.604218936412311);
 }
 
+// Rays whose horizon end comes close to G1's clamp (HorizonApproaches in
+// ellipsoid_albedo_rule.h): a feature over psi as narrow as 0.01. Before
+// the rule cut and graded there, these texels of 47 x 47 and 63 x 63 views
+// (mu = i / n, phi = 2 pi j / n) missed by 1.6x to 5.6x their claims.
+TEST(EllipsoidAlbedoTest, ClaimBoundsFeaturesWhereTheHorizonNearsTheClamp) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  ExpectClaimBounds(0.05, 0.3, 70, 20, 26.0 / 63, kTwoPi * 23 / 63);  // was 2.8x
+  ExpectClaimBounds(0.1, 0.4, 75, 50, 6.0 / 63, kTwoPi * 54 / 63);    // 5.6x
+  ExpectClaimBounds(0.1, 0.4, 75, 50, 18.0 / 47, kTwoPi * 16 / 47);   // 1.6x
+  ExpectClaimBounds(0.2, 0.8, 60, 45, 30.0 / 63, kTwoPi * 26 / 63);   // 2.8x
+  ExpectClaimBounds(0.2, 0.8, 60, 45, 59.0 / 63, kTwoPi * 20 / 63);   // 2.1x
+  ExpectClaimBounds(0.1, 0.1, 85, 0, 38.0 / 63, kTwoPi * 23 / 63);    // 2.9x
+}
+
 // Stiff cases (widths 1e-4 to 1, tilts to 86 degrees, mu from 0 to 1):
 // finite, in [0, 1], and within the tolerance.
 TEST(EllipsoidAlbedoTest, StiffCasesFiniteInRangeAndWithinTolerance) {
