@@ -158,8 +158,9 @@ struct PsiSegment {
 // 1 - (1 - t)^2 (only b) or t^2 (3 - 2 t) (both); each segment starts
 // with one piece per quarter turn (at least one) plus geometric grading
 // (ratio 8, measured to need 17% fewer rays than PsiRule's 4 for the same
-// errors) towards a featured end down to a quarter of the feature; then
-// the worst piece of all is bisected with PsiRule's stopping rule.
+// errors) towards a featured end down to half the feature (the caller
+// scales `feature` to the grading its kind needs); then the worst piece
+// of all is bisected with PsiRule's stopping rule.
 // A piece's |K15 - G7| counts three times (kSegmentErrorSafety): on a
 // segment between two tangent rays (ellipsoid_albedo_rule.h) an unsplit
 // piece was measured to miss by 2.15 times its |K15 - G7| (alpha 0.3 x
@@ -224,12 +225,12 @@ AzimuthalResult SegmentRule(const Rays& rays, const std::vector<PsiSegment>& seg
     const int n = std::clamp(static_cast<int>(std::ceil(w / (kTwoPi / 4) - 1e-9)), 1, 8);
     for (int i = 0; i <= n; ++i) cuts.push_back(static_cast<double>(i) / n);
     if (g.feature_a > 0) {
-      for (double d = w * 0.125; d > 0.25 * g.feature_a && cuts.size() < 40; d *= 0.125) {
+      for (double d = w * 0.125; d > 0.5 * g.feature_a && cuts.size() < 40; d *= 0.125) {
         cuts.push_back(t_near(d, g.singular_a));
       }
     }
     if (g.feature_b > 0) {
-      for (double d = w * 0.125; d > 0.25 * g.feature_b && cuts.size() < 80; d *= 0.125) {
+      for (double d = w * 0.125; d > 0.5 * g.feature_b && cuts.size() < 80; d *= 0.125) {
         cuts.push_back(1 - t_near(d, g.singular_b));
       }
     }

@@ -656,7 +656,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   } else {
     // Quarter turns from the rays where d.e = 0; at grazing the rule grades
     // towards them as in aniso_ggx.h, with delta = |e| sqrt(R^2 - |d|^2) /
-    // |d(d.e)/dpsi| (the width of the feature there).
+    // |d(d.e)/dpsi| (the width of the feature there), down to delta / 2.
     const double psi0 = std::atan2(ca, -cb);
     const double e0x = f.l11 * std::cos(psi0) + f.l12 * std::sin(psi0),
                  e0y = f.l22 * std::sin(psi0);
@@ -673,9 +673,15 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     }
   }
   // Rays tangent to the clamp's edge (ClampTangents), each splitting its
-  // segment, singular on both sides.
+  // segment, singular on both sides. Glancing rays are graded towards
+  // down to their width, the grazing ones above to half theirs: on 64 x 64
+  // views of 13 materials every texel stays within 0.85 of its claim, as
+  // with the quarter widths used before, for 2% to 9% fewer psi pieces
+  // (9% on the bench material). Grading the grazing ones only to their
+  // width left a texel at 1.31x (0.1 x 0.1, theta_x 85 degrees, mu
+  // 0.03175, phi 2.39359).
   // The cut at psi: singular on both sides (a tangent ray), or graded
-  // towards from both sides down to `feature` (a glancing ray). A feature
+  // towards from both sides down to half of `feature` (SegmentRule). A feature
   // at an end of the segment cut (the grazing feature rays above) reaches
   // across a cut nearer to it than its width: the far side is graded
   // towards the cut as well. (Without that, at alpha 0.05 x 0.3, theta_x
@@ -705,12 +711,12 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     f.kink_psi_range = rays.range;
     for (double t : rays.tangents) cut(t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
-      cut(rays.glancing[i], false, rays.glancing_width[i]);
+      cut(rays.glancing[i], false, 2 * rays.glancing_width[i]);
     }
   }
   // Horizon approaches (HorizonApproaches) narrower than half their
   // segment's initial piece (at most a quarter turn): cut there and graded
-  // towards from both sides down to their width (`feature` 4 w), so that
+  // towards from both sides down to their width (`feature` 2 w), so that
   // the singularities at psi* +- i w are no nearer to a piece than its
   // width. Measured on 64 x 64 views of 13 materials against the rule at
   // 1e-12: without them the worst texels of four (thin lobes tilted 60 to
@@ -722,7 +728,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     const double t = lo + std::remainder(h.psi - lo - kPi<double>, kTwoPi) + kPi<double>;
     for (const PsiSegment& g : segments) {
       if (!(g.a < t && t < g.b)) continue;
-      if (h.width < 0.5 * std::min(g.b - g.a, 0.25 * kTwoPi)) cut(h.psi, false, 4 * h.width);
+      if (h.width < 0.5 * std::min(g.b - g.a, 0.25 * kTwoPi)) cut(h.psi, false, 2 * h.width);
       break;
     }
   }
