@@ -647,6 +647,37 @@ EavgEstimate AnisoEavg(const BakeSpec& spec, double r, double s) {
       spec.tolerance);
 }
 
+// For an E table over (mu, phi_o) (ellipsoid) or (mu, phi_o, r, s)
+// (ggx-aniso, phi_o fastest of the rows): each texel's first texel of the
+// same view and material. Where mu = 1 wo is the normal whatever phi_o;
+// phi_o values within 1e-12 modulo 2 pi are one azimuth.
+std::vector<int64_t> SameViewTexels(const BakeSpec& spec, const Axis& ax_mu, int width,
+                                    int64_t total) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  const int n_phi = spec.phi.size;
+  std::vector<int> phi_first(n_phi);
+  for (int y = 0; y < n_phi; ++y) {
+    phi_first[y] = y;
+    // (Quadratic in the phi_o count: skipped for very long axes.)
+    for (int z = 0; z < y && n_phi <= 4096; ++z) {
+      if (std::abs(std::remainder(spec.phi.Value(y) - spec.phi.Value(z), kTwoPi)) <= 1e-12) {
+        phi_first[y] = z;
+        break;
+      }
+    }
+  }
+  std::vector<int64_t> same(static_cast<size_t>(total));
+  for (int64_t idx = 0; idx < total; ++idx) {
+    const int x = static_cast<int>(idx % width);
+    const int64_t y = idx / width;
+    const int yp = static_cast<int>(y % n_phi);
+    const int64_t rest = y / n_phi;
+    const int first = ax_mu.Value(x) >= 1 ? 0 : phi_first[yp];
+    same[idx] = (rest * n_phi + first) * width + x;
+  }
+  return same;
+}
+
 // ellipsoid: E at (mu, phi_o) by the slope-plane rule (ellipsoid_albedo.h)
 // for the material in spec.model.
 // `tolerance` (default: the spec's) for E_avg's weighted nodes.
@@ -1077,7 +1108,15 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       if (progress) progress(++done, total);
     });
   } else {
+    // Texels whose views coincide are computed once: where mu = 1 every
+    // phi_o is the same view, and phi_o values equal modulo 2 pi (0 and
+    // 2 pi on an edges axis) are too. same_as[idx] is the first texel of
+    // idx's view.
+    const std::vector<int64_t> same_as =
+        (ellipsoid || aniso) && spec.table == TableKind::kE ? SameViewTexels(spec, ax_mu, t.width, total)
+                                                            : std::vector<int64_t>();
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
+      if (!same_as.empty() && same_as[idx] != idx) return;
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
       const double mu = std::max(ax_mu.Value(x), ax_mu.clamp_min);
       TexelEstimate v;
@@ -1109,6 +1148,12 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       }
       if (progress) progress(++done, total);
     });
+    for (int64_t idx = 0; idx < total && !same_as.empty(); ++idx) {
+      if (same_as[idx] == idx) continue;
+      v0[idx] = v0[same_as[idx]];
+      error[idx] = error[same_as[idx]];
+      if (progress) progress(++done, total);
+    }
   }
   for (double e : error) t.integration_error = std::max(t.integration_error, e);
   if (spec.error_channel) t.channels.back().values = error;

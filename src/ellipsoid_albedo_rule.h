@@ -370,14 +370,19 @@ void IntegrateRays(const EllipsoidRay* rays, int count, const Nodes& nodes, doub
 // tangent to it where the ray's angle psi(theta) (in the frame of L) is
 // extremal: bracketed on kClampProbes points of theta and refined by
 // golden-section search (psi is then exact to second order).
-// The argument in [a, b] of the maximum of g (unimodal there), by 40 steps
-// of golden-section search (the bracket shrinks to 4e-9 of its width).
+// The argument in [a, b] of the maximum of g (unimodal there), by 26 steps
+// of golden-section search: the bracket shrinks to 3.7e-6 of its width
+// (2 probe steps, 0.2 rad at most), so the maximum's value is exact to
+// about 1e-12 times g's curvature. (Further steps compare values that
+// differ by rounding alone: g varies by curvature x step^2 < 1e-16 once
+// the step is below ~1e-8. 26 steps instead of 40 took the edge's
+// geometry from 9.0% to 7.8% of an ellipsoid texel's time, by perf.)
 template <class G>
 double MaximizeGolden(const G& g, double a, double b) {
   constexpr double kGolden = 0.6180339887498949;
   double c = b - kGolden * (b - a), d = a + kGolden * (b - a);
   double gc = g(c), gd = g(d);
-  for (int it = 0; it < 40; ++it) {
+  for (int it = 0; it < 26; ++it) {
     if (gc > gd) {
       b = d, d = c, gd = gc;
       c = b - kGolden * (b - a);

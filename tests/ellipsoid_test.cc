@@ -665,6 +665,40 @@ TEST(EllipsoidAlbedoTest, StiffCasesFiniteInRangeAndWithinTolerance) {
   }
 }
 
+// Texels of one view are baked once (SameViewTexels in bake.cc): the
+// mu = 1 column and the phi_o = 2 pi row hold the values of their first
+// texel, and those agree with the rule evaluated at the texel's own
+// (mu, phi_o) within the claims.
+TEST(EllipsoidAlbedoTest, TexelsOfOneViewShareTheirValue) {
+  BakeSpec spec;
+  spec.model.kind = ModelKind::kEllipsoid;
+  spec.model.alpha_x = 0.2;
+  spec.model.alpha_y = 0.5;
+  spec.model.theta_x = 0.6;
+  spec.model.theta_z = 0.4;
+  spec.mu.size = 5;
+  spec.phi.size = 7;
+  spec.phi.max = 2 * kPi<double>;
+  const Table t = Bake(spec);
+  const std::vector<double>& v = t.channels[0].values;
+  for (int y = 0; y < 7; ++y) {
+    EXPECT_EQ(v[y * 5 + 4], v[4]) << y;  // mu = 1
+    const double direct =
+        EllipsoidAlbedo(0.2, 0.5, 0.6, 0, 0.4, 1.0, spec.phi.Value(y), Masking::kHeightCorrelated,
+                        spec.tolerance, 512)
+            .value;
+    EXPECT_NEAR(v[y * 5 + 4], direct, 2 * t.integration_error) << y;
+  }
+  for (int x = 0; x < 5; ++x) {
+    EXPECT_EQ(v[6 * 5 + x], v[x]) << x;  // phi_o = 2 pi
+    const double direct = EllipsoidAlbedo(0.2, 0.5, 0.6, 0, 0.4, std::max(spec.mu.Value(x), 1e-7),
+                                          2 * kPi<double>, Masking::kHeightCorrelated,
+                                          spec.tolerance, 512)
+                              .value;
+    EXPECT_NEAR(v[6 * 5 + x], direct, 2 * t.integration_error) << x;
+  }
+}
+
 // A tilted ellipsoid's E is not even in phi_o; the table says so.
 TEST(EllipsoidAlbedoTest, TableHasNoAzimuthalSymmetry) {
   BakeSpec spec;
