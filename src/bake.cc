@@ -728,7 +728,13 @@ EavgEstimate EllipsoidEavg(const BakeSpec& spec) {
       edge_points.push_back({kTwoPi * k / kEdgeProbes, probe[k]});
     }
     for (const EdgeExtreme& e : ExtremesOnEdge(mu_at, probe, [](double v, double) { return v; })) {
-      if (e.value > 0 && e.value < 1) s_cuts.push_back(std::sqrt(e.value));
+      // The edge passes through the normal (N of seed eq. 6 vanishes at
+      // u = n), so one extreme is mu = 1, which golden-section search
+      // returns as 1 or just below: either way a cut at s = 1, where the
+      // arc of clamped views appears. (Dropping a value that rounded to 1
+      // cost the s rule 4x the nodes: E_avg of the bench material took
+      // 2.0 s instead of 0.7 s, and erred by 5.9e-10 instead of 1.6e-11.)
+      if (e.value > 0) s_cuts.push_back(std::sqrt(std::min(e.value, 1.0)));
       // (t is within a probe step of [0, 2 pi).)
       const double t =
           e.theta < 0 ? e.theta + kTwoPi : e.theta >= kTwoPi ? e.theta - kTwoPi : e.theta;

@@ -262,6 +262,17 @@ TEST(EllipsoidTest, G1ClampIsReachedForTiltedShapes) {
   EXPECT_EQ(e.G1(FromMuPhi(0.5, 1.0), FromMuPhi(0.5, 1.0 + kPi<double>)), 0.0);
 }
 
+// The clamp's edge passes through the normal: N of eq. 6 is ||An||^2 +
+// An.An - 2 ||An||^2 = 0 at u = n, for every shape. (E_avg's rule cuts s at
+// 1 because of it.)
+TEST(EllipsoidTest, ClampEdgePassesThroughTheNormal) {
+  for (const auto& shape : kShapes) {
+    const Ell e = shape.Make();
+    const Vec3<double> an = e.shape_matrix() * kN;
+    EXPECT_LE(std::abs(e.ClampMargin(kN)), 1e-14 * Length(an));
+  }
+}
+
 // ---------------------------------------------------------------------------
 // R = I: the ellipsoid NDF is anisotropic GGX (seed 000 section 1, seed 001).
 TEST(EllipsoidTest, UnrotatedEqualsAnisotropicGgx) {
