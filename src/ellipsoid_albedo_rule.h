@@ -536,9 +536,6 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f) {
 // theta_z 20 degrees, mu 0.41270, phi 2.29386 it is 0.042 wide, 0.034
 // from a tangent ray, and the one Kronrod piece over it missed by 1.5e-7
 // against a claim of 5.3e-8.)
-struct HorizonApproach {
-  double psi, width;
-};
 inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f) {
   constexpr double kTwoPi = 2 * kPi<double>;
   auto margin = [&](double beta) {
@@ -685,30 +682,8 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // (9% on the bench material). Grading the grazing ones only to their
   // width left a texel at 1.31x (0.1 x 0.1, theta_x 85 degrees, mu
   // 0.03175, phi 2.39359).
-  // The cut at psi: singular on both sides (a tangent ray), or graded
-  // towards from both sides down to half of `feature` (SegmentRule). A feature
-  // at an end of the segment cut (the grazing feature rays above) reaches
-  // across a cut nearer to it than its width: the far side is graded
-  // towards the cut as well. (Without that, at alpha 0.05 x 0.3, theta_x
-  // 70, theta_z 20 degrees, mu 0.21277, phi 1.60422, a tangent ray 0.0067
-  // from a feature ray of width 0.106 left the next quarter turn one
-  // Kronrod piece, which missed by 4.6e-8 against a claim of 2.8e-8.)
   auto cut = [&](double psi, bool singular, double feature) {
-    const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
-    for (size_t i = 0; i < segments.size(); ++i) {
-      PsiSegment& g = segments[i];
-      if (g.a < t && t < g.b) {
-        PsiSegment right = g;
-        right.a = t;
-        right.singular_a = singular;
-        right.feature_a = t - g.a < g.feature_a ? std::max(feature, g.feature_a) : feature;
-        g.feature_b = g.b - t < g.feature_b ? std::max(feature, g.feature_b) : feature;
-        g.b = t;
-        g.singular_b = singular;
-        segments.insert(segments.begin() + i + 1, right);
-        return;
-      }
-    }
+    SplitSegment(&segments, lo, psi, singular, feature);
   };
   if (f.clamped) {
     const ClampRays rays = ClampTangents(f);
@@ -730,12 +705,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // at 1.03x. The cost is in thin lobes: none on the bench material, up
   // to 1.7x the psi pieces (0.01 x 0.1 at 50 degrees).
   for (const HorizonApproach& h : HorizonApproaches(f)) {
-    const double t = lo + std::remainder(h.psi - lo - kPi<double>, kTwoPi) + kPi<double>;
-    for (const PsiSegment& g : segments) {
-      if (!(g.a < t && t < g.b)) continue;
-      if (h.width < 0.5 * std::min(g.b - g.a, 0.25 * kTwoPi)) cut(h.psi, false, 2 * h.width);
-      break;
-    }
+    CutAtNarrowFeature(&segments, lo, h.psi, h.width);
   }
   return SegmentRule(ray_batch, segments, tol, max_pieces);
 }
