@@ -94,51 +94,6 @@ AzimuthalResult SumOfPieces(const std::vector<Piece>& pieces, double err) {
   return out;
 }
 
-// The integral over psi in [psi0, psi0 + 2 pi) of ray(psi, &err) / (2 pi).
-// Quarter turns from psi0 (and psi0 + pi, the two "feature" rays), graded
-// geometrically (ratio 4, from pi/8) towards those two rays down to
-// delta / 4, so that a feature of width delta next to them cannot fall
-// between Kronrod nodes; then the worst piece is bisected until the summed
-// |K15 - G7| plus the rays' own errors meets `tol`, or bisection stops
-// helping (the worst piece below 1/20 of the tolerance per piece), or
-// max_pieces.
-template <class Ray>
-AzimuthalResult PsiRule(const Ray& ray, double psi0, double delta, double tol, int max_pieces) {
-  constexpr double kTwoPi = 2 * kPi<double>;
-  auto piece = [&](double a, double b) { return KronrodPiece(a, b, 1 / kTwoPi, ray); };
-  std::vector<double> cuts = {0.25 * kTwoPi};  // offsets from a feature ray
-  for (double d = kTwoPi / 16; d > 0.25 * delta && cuts.size() < 40; d *= 0.25) cuts.push_back(d);
-  cuts.push_back(0);
-  std::vector<GkPiece> pieces;
-  for (int k = 0; k < 4; ++k) {
-    // Quarter k runs from psi0 + k pi/2; even quarters start at a feature
-    // ray, odd ones end at one.
-    const double base = psi0 + k * 0.25 * kTwoPi;
-    for (size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const double near = cuts[i + 1], far = cuts[i];
-      if (k % 2 == 0) {
-        pieces.push_back(piece(base + near, base + far));
-      } else {
-        pieces.push_back(piece(base + 0.25 * kTwoPi - far, base + 0.25 * kTwoPi - near));
-      }
-    }
-  }
-  auto total_error = [&] {
-    double e = 0;
-    for (const GkPiece& p : pieces) e += p.err + p.prop;
-    return e;
-  };
-  double err = total_error();
-  while (err > tol && static_cast<int>(pieces.size()) < std::max(4, max_pieces)) {
-    double worst = 0;
-    for (const GkPiece& p : pieces) worst = std::max(worst, p.err);
-    if (worst <= 0.05 * tol / pieces.size()) break;
-    BisectWorst(&pieces, piece);
-    err = total_error();
-  }
-  return SumOfPieces(pieces, err);
-}
-
 // One interval [a, b] of psi for SegmentRule. An end is `singular` where
 // the ray there is tangent to a curve on which the ray integrand ends or
 // has a kink (the horizon, G1's clamp edge): the ray integral then behaves
@@ -210,10 +165,12 @@ inline void CutAtNarrowFeature(std::vector<PsiSegment>* segments, double lo, dou
 // psi = a + (b - a) m(t), where m(t) = t (no singular end), t^2 (only a),
 // 1 - (1 - t)^2 (only b) or t^2 (3 - 2 t) (both); each segment starts
 // with one piece per quarter turn (at least one) plus geometric grading
-// (ratio 8, measured to need 17% fewer rays than PsiRule's 4 for the same
-// errors) towards a featured end down to half the feature (the caller
+// (ratio 8, measured to need 17% fewer rays than a ratio of 4 for the
+// same errors) towards a featured end down to half the feature (the caller
 // scales `feature` to the grading its kind needs); then the worst piece
-// of all is bisected with PsiRule's stopping rule.
+// of all is bisected until the summed |K15 - G7| (below) plus the rays'
+// own errors meets `tol`, or bisection stops helping (the worst piece
+// below 1/20 of the tolerance per piece), or max_pieces.
 // A piece's |K15 - G7| counts three times (kSegmentErrorSafety): on a
 // segment between two tangent rays (ellipsoid_albedo_rule.h) an unsplit
 // piece was measured to miss by 2.15 times its |K15 - G7| (alpha 0.3 x

@@ -23,14 +23,16 @@
 //   wi.z = wo.z |e|^2 (rho_b - rho) (rho + 1 / (S + c.e)) / N^2.
 //
 // Rule: over psi, Gauss-Kronrod 15 on pieces (first cut where c.e = 0, the
-// rays along which the edge comes nearest at grazing), the worst bisected
-// until the summed error estimate meets the tolerance; along each ray,
+// rays along which the edge comes nearest at grazing, and where G2's rise
+// at the rays' horizon end is narrowest), the worst bisected until the
+// summed error estimate meets the tolerance; along each ray,
 // Gauss-Kronrod 15 on pieces in w = u_b - u graded geometrically (ratio 4)
 // from u_b down to the edge layer, whose width is estimated from wi.z's
 // slope at the edge, then the ray's worst piece bisected until the ray
 // meets a fifth of the tolerance; the last piece next to the edge is left
 // out where its contribution is bounded below 1/20 of the tolerance, and
-// its bound added to the error. The psi rule is PsiRule (adaptive_rule.h).
+// its bound added to the error. The psi rule is SegmentRule
+// (adaptive_rule.h).
 
 #ifndef BRDFBAKE_SRC_ANISO_GGX_H_
 #define BRDFBAKE_SRC_ANISO_GGX_H_

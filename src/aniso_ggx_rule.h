@@ -211,7 +211,7 @@ AzimuthalResult AnisoGgxAlbedoWith(double alpha_x, double alpha_y, double mu, do
   // First cuts where c.e = 0 (cos psi alpha_x c_x + sin psi alpha_y c_y = 0).
   // Near those two rays the edge's distance 1 / (S - c.e) turns from about
   // 1 / |e| to 1 / (2 |c.e|) over delta = |e| / |d(c.e)/dpsi| (about mu at
-  // grazing), to which PsiRule grades its first pieces.
+  // grazing), to which the psi rule grades its first pieces.
   const double psi0 = std::atan2(f.cx * f.ax, -f.cy * f.ay);
   const double e0x = f.ax * std::cos(psi0), e0y = f.ay * std::sin(psi0);
   const double dce = std::abs(-f.cx * f.ax * std::sin(psi0) + f.cy * f.ay * std::cos(psi0));
