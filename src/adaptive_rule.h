@@ -116,8 +116,8 @@ struct PsiSegment {
 // degrees, mu 0.21277, phi 1.60422 had a tangent ray 0.0067 from a
 // feature ray of width 0.106, and the next quarter turn stayed one
 // Kronrod piece, which missed by 4.6e-8 against a claim of 2.8e-8.)
-inline void SplitSegment(std::vector<PsiSegment>* segments, double lo, double psi,
-                         bool singular, double feature) {
+inline void SplitSegment(std::vector<PsiSegment>* segments, double lo, double psi, bool singular,
+                         double feature) {
   constexpr double kTwoPi = 2 * kPi<double>;
   const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
   for (size_t i = 0; i < segments->size(); ++i) {
@@ -148,8 +148,7 @@ struct HorizonApproach {
 // segment (at most a quarter turn): a cut there, graded towards from both
 // sides down to w (`feature` 2 w), so that the singularities are no
 // nearer to a piece than its width. Wider ones are left to the pieces.
-inline void CutAtNarrowFeature(std::vector<PsiSegment>* segments, double lo, double psi,
-                               double w) {
+inline void CutAtNarrowFeature(std::vector<PsiSegment>* segments, double lo, double psi, double w) {
   constexpr double kTwoPi = 2 * kPi<double>;
   const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
   for (const PsiSegment& g : *segments) {

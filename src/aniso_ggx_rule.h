@@ -15,8 +15,8 @@
 #include <cmath>
 #include <vector>
 
-#include "aniso_ggx.h"
 #include "adaptive_rule.h"
+#include "aniso_ggx.h"
 #include "azimuthal.h"
 #include "brdfbake/ggx.h"
 
@@ -93,8 +93,8 @@ struct AnisoRay {
     const double kb = 2 * f.wz * lin_b / n2b;
     const double wxb = -kb * pb - f.wx, wyb = -kb * qb - f.wy;
     const double a_b = std::sqrt((f.ax * wxb) * (f.ax * wxb) + (f.ay * wyb) * (f.ay * wyb));
-    const double slope = f.wz * ee * (rho_b + inv_s_plus_ce) /
-                         (n2b * 2 * rho_b * one_minus_ub * one_minus_ub);
+    const double slope =
+        f.wz * ee * (rho_b + inv_s_plus_ce) / (n2b * 2 * rho_b * one_minus_ub * one_minus_ub);
     const double lambda_scale = f.separable ? 1.0 : 1 + f.lambda_o;
     const double w_layer = slope > 0 ? a_b / (2 * lambda_scale * slope) : u_b;
     // The integrand is at most G2(0) (1 + rho_b max(c.e, 0)) <= that / (1 + Lambda(wo)).
@@ -184,8 +184,7 @@ inline std::vector<HorizonApproach> GgxHorizonApproaches(const AnisoFrame& f) {
   };
   const double b0 = f.ay < f.ax ? 0.5 * kPi<double> : 0.0;
   for (double b : {b0, b0 + kPi<double>}) {
-    const double w =
-        0.5 * std::abs(std::remainder(psi_at(b + d) - psi_at(b - d), 2 * kPi<double>));
+    const double w = 0.5 * std::abs(std::remainder(psi_at(b + d) - psi_at(b - d), 2 * kPi<double>));
     out.push_back({psi_at(b), w});
   }
   return out;

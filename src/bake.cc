@@ -1118,9 +1118,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     // phi_o is the same view, and phi_o values equal modulo 2 pi (0 and
     // 2 pi on an edges axis) are too. same_as[idx] is the first texel of
     // idx's view.
+    const bool views = (ellipsoid || aniso) && spec.table == TableKind::kE;
     const std::vector<int64_t> same_as =
-        (ellipsoid || aniso) && spec.table == TableKind::kE ? SameViewTexels(spec, ax_mu, t.width, total)
-                                                            : std::vector<int64_t>();
+        views ? SameViewTexels(spec, ax_mu, t.width, total) : std::vector<int64_t>();
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
       if (!same_as.empty() && same_as[idx] != idx) return;
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);

@@ -554,13 +554,12 @@ inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f) {
   std::vector<HorizonApproach> out;
   for (int k = 0; k < kClampProbes; ++k) {
     const double v = probe[k];
-    if (!(v < probe[(k + kClampProbes - 1) % kClampProbes] &&
-          v <= probe[(k + 1) % kClampProbes])) {
+    if (!(v < probe[(k + kClampProbes - 1) % kClampProbes] && v <= probe[(k + 1) % kClampProbes])) {
       continue;
     }
-    const double beta = MaximizeGolden([&](double b) { return -margin(b); },
-                                       kTwoPi * (k - 1) / kClampProbes,
-                                       kTwoPi * (k + 1) / kClampProbes);
+    const double beta =
+        MaximizeGolden([&](double b) { return -margin(b); }, kTwoPi * (k - 1) / kClampProbes,
+                       kTwoPi * (k + 1) / kClampProbes);
     const double m0 = margin(beta);
     constexpr double kStep = 1e-3;
     const double m2 = (margin(beta + kStep) - 2 * m0 + margin(beta - kStep)) / (kStep * kStep);
@@ -682,16 +681,13 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // (9% on the bench material). Grading the grazing ones only to their
   // width left a texel at 1.31x (0.1 x 0.1, theta_x 85 degrees, mu
   // 0.03175, phi 2.39359).
-  auto cut = [&](double psi, bool singular, double feature) {
-    SplitSegment(&segments, lo, psi, singular, feature);
-  };
   if (f.clamped) {
     const ClampRays rays = ClampTangents(f);
     f.kink_psi0 = rays.psi0;
     f.kink_psi_range = rays.range;
-    for (double t : rays.tangents) cut(t, true, 0);
+    for (double t : rays.tangents) SplitSegment(&segments, lo, t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
-      cut(rays.glancing[i], false, 2 * rays.glancing_width[i]);
+      SplitSegment(&segments, lo, rays.glancing[i], false, 2 * rays.glancing_width[i]);
     }
   }
   // Horizon approaches (HorizonApproaches) narrower than half their
