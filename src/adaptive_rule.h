@@ -106,6 +106,19 @@ struct PsiSegment {
   double feature_a = 0, feature_b = 0;
 };
 
+// The index of the segment of `segments` (ascending, covering [lo, lo +
+// 2 pi)) whose interior holds psi taken modulo 2 pi, that angle in *t; -1
+// where psi falls on a segment's end.
+inline int SegmentHolding(const std::vector<PsiSegment>& segments, double lo, double psi,
+                          double* t) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  *t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
+  for (size_t i = 0; i < segments.size(); ++i) {
+    if (segments[i].a < *t && *t < segments[i].b) return static_cast<int>(i);
+  }
+  return -1;
+}
+
 // Splits the segment of `segments` (ascending, covering [lo, lo + 2 pi))
 // that holds psi (taken modulo 2 pi) at psi: both sides singular there (a
 // ray tangent to a curve where the integrand ends or has a kink), or
@@ -118,22 +131,18 @@ struct PsiSegment {
 // Kronrod piece, which missed by 4.6e-8 against a claim of 2.8e-8.)
 inline void SplitSegment(std::vector<PsiSegment>* segments, double lo, double psi, bool singular,
                          double feature) {
-  constexpr double kTwoPi = 2 * kPi<double>;
-  const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
-  for (size_t i = 0; i < segments->size(); ++i) {
-    PsiSegment& g = (*segments)[i];
-    if (g.a < t && t < g.b) {
-      PsiSegment right = g;
-      right.a = t;
-      right.singular_a = singular;
-      right.feature_a = t - g.a < g.feature_a ? std::max(feature, g.feature_a) : feature;
-      g.feature_b = g.b - t < g.feature_b ? std::max(feature, g.feature_b) : feature;
-      g.b = t;
-      g.singular_b = singular;
-      segments->insert(segments->begin() + i + 1, right);
-      return;
-    }
-  }
+  double t;
+  const int i = SegmentHolding(*segments, lo, psi, &t);
+  if (i < 0) return;
+  PsiSegment& g = (*segments)[i];
+  PsiSegment right = g;
+  right.a = t;
+  right.singular_a = singular;
+  right.feature_a = t - g.a < g.feature_a ? std::max(feature, g.feature_a) : feature;
+  g.feature_b = g.b - t < g.feature_b ? std::max(feature, g.feature_b) : feature;
+  g.b = t;
+  g.singular_b = singular;
+  segments->insert(segments->begin() + i + 1, right);
 }
 
 // A ray psi where G2's rise at the horizon end is narrowest
@@ -149,12 +158,12 @@ struct HorizonApproach {
 // sides down to w (`feature` 2 w), so that the singularities are no
 // nearer to a piece than its width. Wider ones are left to the pieces.
 inline void CutAtNarrowFeature(std::vector<PsiSegment>* segments, double lo, double psi, double w) {
-  constexpr double kTwoPi = 2 * kPi<double>;
-  const double t = lo + std::remainder(psi - lo - kPi<double>, kTwoPi) + kPi<double>;
-  for (const PsiSegment& g : *segments) {
-    if (!(g.a < t && t < g.b)) continue;
-    if (w < 0.5 * std::min(g.b - g.a, 0.25 * kTwoPi)) SplitSegment(segments, lo, psi, false, 2 * w);
-    return;
+  double t;
+  const int i = SegmentHolding(*segments, lo, psi, &t);
+  if (i < 0) return;
+  const PsiSegment& g = (*segments)[i];
+  if (w < 0.5 * std::min(g.b - g.a, 0.5 * kPi<double>)) {  // half of at most a quarter turn
+    SplitSegment(segments, lo, psi, false, 2 * w);
   }
 }
 
