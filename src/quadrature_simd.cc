@@ -373,7 +373,6 @@ struct SimdEllipsoidNodes {
     static const SimdAnisoNodes::Rule rule;
     const EllipsoidFrame &f = rays[0]->f_;  // the same for every ray
     const DF64 d;
-    const size_t N = hn::Lanes(d);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
     const V two_wz = hn::Set(d, 2 * f.wz);
     const V s0x = hn::Set(d, f.s0x), s0y = hn::Set(d, f.s0y);
@@ -390,9 +389,14 @@ struct SimdEllipsoidNodes {
     const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
     const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
     const V tiny = hn::Set(d, std::numeric_limits<double>::min());
-    // Piece by piece; the pieces (of up to 15 rays) are independent, so
-    // their dependency chains (two square roots and two divisions deep)
-    // overlap.
+    // The kK vectors of a piece's nodes advance together, stage by stage:
+    // each one's dependency chain (an expm1, two square roots and a
+    // division deep) is longer than the core can look ahead within one
+    // vector's instructions, and interleaving the chains lets it overlap
+    // them.
+    constexpr size_t kN = hn::MaxLanes(DF64());
+    constexpr size_t kK = 16 / kN;
+    using M = hn::Mask<DF64>;
     for (int j = 0; j < n; ++j) {
       const EllipsoidRay &ray = *rays[j];
       const V lenv = hn::Set(d, ray.len_);
@@ -407,70 +411,98 @@ struct SimdEllipsoidNodes {
       const bool upper = a[j] + b[j] >= 0;
       const double c_piece = upper ? ray.c_hi_ : ray.c_lo_;
       const bool mapped = c_piece > 0;
+      const bool lo_edge = ray.lo_edge_;
       const V c = hn::Set(d, c_piece);
-      V ks = zero, gsum = zero;
-      for (size_t i = 0; i < 16; i += N) {
-        const V o = hn::MulAdd(hv, hn::Load(d, rule.x + i), cv);
-        const V tau = hn::Abs(o);
-        const V off = mapped ? hn::Mul(c, hn::Expm1(d, tau)) : tau;
-        const V y = upper ? off : hn::Sub(lenv, off);  // x_hi - x
-        const V t = upper ? hn::Sub(lenv, off) : off;  // x - x_lo
-        const V x = hn::Sub(x_hi, y);
-        const V omx2 =
-            hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, x_hi), y), omx2_hi),
-                           hn::NegMulAdd(t, hn::MulAdd(two, x_lo, t), omx2_lo));
-        const auto ok1 = hn::And(hn::Gt(x, zero), hn::Gt(omx2, zero));
-        const V omx2s = hn::IfThenElse(ok1, omx2, one);
-        const V rho_n = hn::Div(x, hn::Sqrt(omx2s));
-        // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz lin /
-        // N^2 as in EllipsoidRay::WiAt, the differences as quotients
-        // num / den: r = 1 / (den_hi den_lo N^2) is their common factor.
-        const V num_hi = hn::Mul(y, hn::Sub(hn::Mul(two, x_hi), y));
-        const V den_hi = hn::Mul(hn::Mul(omx2_hi, omx2s), hn::Add(rho_plus, rho_n));
-        const V num_lo =
-            ray.lo_edge_ ? hn::Mul(t, hn::MulAdd(two, x_lo, t)) : hn::Sub(rho_n, rho_minus);
-        const V den_lo =
-            ray.lo_edge_ ? hn::Mul(hn::Mul(omx2_lo, omx2s), hn::Add(rho_n, rho_minus)) : one;
-        const V p = hn::MulAdd(rho_n, ex, s0x), q = hn::MulAdd(rho_n, ey, s0y);
-        const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, one));
-        const V lin = hn::MulAdd(q, cy, hn::MulAdd(p, cx, one));
-        // wi times 1 / r = den_hi den_lo N^2 > 0, without a division:
-        // Lambda is homogeneous of degree 0 in wi, and so is G2 below in
-        // (wi.z dd, nn), so the scale drops out.
-        const V dens = hn::Mul(den_hi, den_lo);
+      V off[kK], y[kK], t[kK], x[kK], omx2s[kK], sr[kK];
+      M ok1[kK];
+      for (size_t u = 0; u < kK; ++u) {
+        const V tau = hn::Abs(hn::MulAdd(hv, hn::Load(d, rule.x + u * kN), cv));
+        off[u] = mapped ? hn::Mul(c, hn::Expm1(d, tau)) : tau;
+      }
+      for (size_t u = 0; u < kK; ++u) {
+        y[u] = upper ? off[u] : hn::Sub(lenv, off[u]);  // x_hi - x
+        t[u] = upper ? hn::Sub(lenv, off[u]) : off[u];  // x - x_lo
+        x[u] = hn::Sub(x_hi, y[u]);
+        const V omx2 = hn::IfThenElse(
+            hn::Le(y[u], t[u]), hn::MulAdd(y[u], hn::Sub(hn::Mul(two, x_hi), y[u]), omx2_hi),
+            hn::NegMulAdd(t[u], hn::MulAdd(two, x_lo, t[u]), omx2_lo));
+        ok1[u] = hn::And(hn::Gt(x[u], zero), hn::Gt(omx2, zero));
+        omx2s[u] = hn::IfThenElse(ok1[u], omx2, one);
+        // rho = x / sr, sr = sqrt(1 - x^2), is never formed: every quantity
+        // of EllipsoidRay::WiAt below is written over a power of sr (p sr,
+        // (1 + s.c) sr, ...), and wi is homogeneous: w = sr^3 wi, times sr
+        // once more on a ray whose lower end is a horizon crossing. That
+        // saves a division per node.
+        sr[u] = hn::Sqrt(omx2s[u]);
+      }
+      V wix[kK], wiy[kK], wiz[kK], lin[kK];
+      M ok[kK];
+      for (size_t u = 0; u < kK; ++u) {
+        // rho_+ - rho = num_hi / den_hi and rho - rho_- = num_lo / den_lo
+        // as in EllipsoidRay::WiAt, here with den_hi = dh / sr, den_lo =
+        // dl / sr (a crossing at the lower end) or num_lo = nl / sr.
+        const V num_hi = hn::Mul(y[u], hn::Sub(hn::Mul(two, x_hi), y[u]));
+        const V dh = hn::Mul(hn::Mul(omx2_hi, omx2s[u]), hn::MulAdd(sr[u], rho_plus, x[u]));
+        const V nl = lo_edge ? hn::Mul(t[u], hn::MulAdd(two, x_lo, t[u]))
+                             : hn::NegMulAdd(sr[u], rho_minus, x[u]);
+        const V dens = lo_edge ? hn::Mul(dh, hn::Mul(hn::Mul(omx2_lo, omx2s[u]),
+                                                     hn::MulAdd(sr[u], rho_minus, x[u])))
+                               : dh;
+        // sr (p, q) with p = s0x + rho ex, q = s0y + rho ey; sr^2 N^2 and
+        // sr (1 + s.c).
+        const V p = hn::MulAdd(x[u], ex, hn::Mul(sr[u], s0x));
+        const V q = hn::MulAdd(x[u], ey, hn::Mul(sr[u], s0y));
+        const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, omx2s[u]));
+        lin[u] = hn::MulAdd(q, cy, hn::MulAdd(p, cx, sr[u]));
+        // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz
+        // (1 + s.c) / N^2 as in EllipsoidRay::WiAt, wi times den_hi den_lo
+        // N^2 > 0 (no division: Lambda is homogeneous of degree 0 in wi,
+        // and so is G2 below in (wi.z dd, nn)) and then times sr^4: wiz's
+        // sr^-1 (num_lo) or sr^2 (den_lo) makes up the rest.
         const V dn = hn::Mul(dens, n2);
-        const V wiz = hn::Mul(wz_ee, hn::Mul(num_hi, num_lo));
-        const auto ok = hn::And(ok1, hn::And(hn::Gt(wiz, zero), hn::Gt(lin, zero)));
-        const V kk = hn::Mul(hn::Mul(two_wz, lin), dens);
-        const V wix = hn::Neg(hn::MulAdd(kk, p, hn::Mul(wx, dn)));
-        const V wiy = hn::Neg(hn::MulAdd(kk, q, hn::Mul(wy, dn)));
-        // Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda
-        // (0 where nn <= 0, the clamp), and G2 from it with one division:
-        // 1 / (1 + Lambda_o + Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd +
-        // nn scale).
-        const V ax = hn::MulAdd(am[0][2], wiz, hn::MulAdd(am[0][1], wiy, hn::Mul(am[0][0], wix)));
-        const V ay = hn::MulAdd(am[1][2], wiz, hn::MulAdd(am[1][1], wiy, hn::Mul(am[1][0], wix)));
-        const V az = hn::MulAdd(am[2][2], wiz, hn::MulAdd(am[2][1], wiy, hn::Mul(am[2][0], wix)));
-        const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
-        const V ah = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
-        const V px = hn::NegMulAdd(hx, ah, ax), py = hn::NegMulAdd(hy, ah, ay),
-                pz = hn::NegMulAdd(hz, ah, az);
-        const V perp2 = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
-        const auto pos = hn::Gt(ah, zero);
-        const V nn = hn::IfThenElse(pos, hn::NegMulAdd(hn::Mul(omr2, ah), ah, hn::Mul(rho2, perp2)),
-                                    hn::NegMulAdd(one, ah, hn::Mul(rho_v, a_len)));
-        const V dd = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len, ah), one);
-        const V wiz_dd = hn::Mul(hn::IfThenElse(ok, wiz, one), dd);
+        wiz[u] = hn::Mul(hn::Mul(wz_ee, hn::Mul(num_hi, nl)),
+                         lo_edge ? hn::Mul(omx2s[u], omx2s[u]) : omx2s[u]);
+        ok[u] = hn::And(ok1[u], hn::And(hn::Gt(wiz[u], zero), hn::Gt(lin[u], zero)));
+        const V kk = hn::Mul(hn::Mul(two_wz, lin[u]), dens);
+        wix[u] = hn::Neg(hn::MulAdd(kk, p, hn::Mul(wx, dn)));
+        wiy[u] = hn::Neg(hn::MulAdd(kk, q, hn::Mul(wy, dn)));
+      }
+      // Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda (0
+      // where nn <= 0, the clamp), and G2 from it with one division: 1 / (1
+      // + Lambda_o + Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd + nn
+      // scale), which also takes lin's sr.
+      V a_len[kK], ah[kK], perp2[kK];
+      for (size_t u = 0; u < kK; ++u) {
+        const V ax =
+            hn::MulAdd(am[0][2], wiz[u], hn::MulAdd(am[0][1], wiy[u], hn::Mul(am[0][0], wix[u])));
+        const V ay =
+            hn::MulAdd(am[1][2], wiz[u], hn::MulAdd(am[1][1], wiy[u], hn::Mul(am[1][0], wix[u])));
+        const V az =
+            hn::MulAdd(am[2][2], wiz[u], hn::MulAdd(am[2][1], wiy[u], hn::Mul(am[2][0], wix[u])));
+        a_len[u] = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
+        ah[u] = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
+        const V px = hn::NegMulAdd(hx, ah[u], ax), py = hn::NegMulAdd(hy, ah[u], ay),
+                pz = hn::NegMulAdd(hz, ah[u], az);
+        perp2[u] = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
+      }
+      V ks = zero, gsum = zero;
+      for (size_t u = 0; u < kK; ++u) {
+        const M pos = hn::Gt(ah[u], zero);
+        const V nn =
+            hn::IfThenElse(pos, hn::NegMulAdd(hn::Mul(omr2, ah[u]), ah[u], hn::Mul(rho2, perp2[u])),
+                           hn::NegMulAdd(one, ah[u], hn::Mul(rho_v, a_len[u])));
+        const V dd = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len[u], ah[u]), one);
+        const V wiz_dd = hn::Mul(hn::IfThenElse(ok[u], wiz[u], one), dd);
         const V nn_scale = hn::Mul(hn::ZeroIfNegative(nn), lscale);
-        // (Kept off 0 / 0 where wi.z dd underflows.)
-        const V g2 = f.separable
-                         ? hn::Div(hn::Mul(g1o, wiz_dd), hn::Max(hn::Add(wiz_dd, nn_scale), tiny))
-                         : hn::Div(wiz_dd, hn::Max(hn::MulAdd(lambda_o1, wiz_dd, nn_scale), tiny));
-        const V f2 = hn::Mul(hn::Mul(g2, lin), hn::Mul(two, x));
+        // G2 (1 + s.c) 2 x; (kept off 0 / 0 where wi.z dd underflows).
+        const V num = hn::Mul(hn::Mul(wiz_dd, lin[u]), hn::Mul(two, x[u]));
+        const V den = f.separable ? hn::Mul(sr[u], hn::Add(wiz_dd, nn_scale))
+                                  : hn::Mul(sr[u], hn::MulAdd(lambda_o1, wiz_dd, nn_scale));
+        const V f2 = hn::Div(f.separable ? hn::Mul(g1o, num) : num, hn::Max(den, tiny));
         // Times the map's Jacobian, y + c or t + c.
-        const V v = hn::IfThenElseZero(ok, mapped ? hn::Mul(f2, hn::Add(off, c)) : f2);
-        ks = hn::MulAdd(hn::Load(d, rule.wk + i), v, ks);
-        gsum = hn::MulAdd(hn::Load(d, rule.wg + i), v, gsum);
+        const V v = hn::IfThenElseZero(ok[u], mapped ? hn::Mul(f2, hn::Add(off[u], c)) : f2);
+        ks = hn::MulAdd(hn::Load(d, rule.wk + u * kN), v, ks);
+        gsum = hn::MulAdd(hn::Load(d, rule.wg + u * kN), v, gsum);
       }
       k[j] = hn::GetLane(hn::SumOfLanes(d, ks));
       g[j] = hn::GetLane(hn::SumOfLanes(d, gsum));
