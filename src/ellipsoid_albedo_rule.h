@@ -13,6 +13,7 @@
 #define BRDFBAKE_SRC_ELLIPSOID_ALBEDO_RULE_H_
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -111,9 +112,10 @@ class EllipsoidRay {
   bool valid() const { return valid_; }
 
   // The initial pieces [a_j, b_j] of the integral over x = sqrt(u) in
-  // [x_lo, x_hi] of G2 (1 + s.c) 2 x (IntegrateRays); returns their count,
-  // at most 2 * kMaxHalfPieces + kMaxPolyDegree.
-  int Layout(double* a, double* b) const {
+  // [x_lo, x_hi] of G2 (1 + s.c) 2 x (IntegrateRays), given the ray's
+  // kinks[0..n_kinks) (EllipsoidKinks); returns their count, at most 2 *
+  // kMaxHalfPieces + kMaxPolyDegree.
+  int Layout(const double* kinks, int n_kinks, double* a, double* b) const {
     // Pieces in signed coordinates o (At): o >= 0 on the upper half, where
     // y = x_hi - x, and o <= 0 on the lower half, where t = x - x_lo; in
     // tau (y or t = c expm1(tau), RiseWidth) towards a horizon end, else
@@ -134,8 +136,6 @@ class EllipsoidRay {
     half(len_ - mid_, c_lo_, true);
     // Where G1(wi)'s clamp turns on or off along the ray, G2 has a kink:
     // the piece holding it is split there.
-    double kinks[kMaxPolyDegree];
-    const int n_kinks = Kinks(kinks);
     for (int i = 0; i < n_kinks; ++i) {
       const double xc = kinks[i] / std::sqrt(1 + kinks[i] * kinks[i]);
       if (!(xc > x_lo_ && xc < x_hi_)) continue;
@@ -175,20 +175,24 @@ class EllipsoidRay {
     return 0.5 * o * f_.ndf.Lambda(wi) / scale;
   }
 
-  // The rho in (max(0, rho_-), rho_+), ascending, where G1(wi)'s clamp
-  // turns on or off; returns their count (at most 4). With n = (-p, -q, 1)
+  // Where G1(wi)'s clamp turns on or off along the ray: the rho in
+  // (max(0, rho_-), rho_+) where it does are the roots t = rho / rho_+ in
+  // (max(0, rho_-) / rho_+, 1) of the quartic *q (set up here, solved by
+  // EllipsoidKinks) with a.h > 0, a.h = ah[0] + ah[1] t + ah[2] t^2;
+  // false where the ray cannot meet the clamp's edge. With n = (-p, -q, 1)
   // and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic in rho, so
-  // a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h (ellipsoid.h,
-  // ClampMargin) is a root of the quartic
+  // a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h
+  // (ellipsoid.h, ClampMargin) is a root of the quartic
   //   rho_c^2 |a - (a.h) h|^2 - (1 - rho_c^2) (a.h)^2
-  // with a.h > 0, found in t = rho / rho_+ by PolyRootsIn: all of them,
-  // however narrow the clamped stretch of the ray.
-  int Kinks(double* rho_out) const {
-    if (!valid_) return 0;
+  // with a.h > 0: all of them, however narrow the clamped stretch of the
+  // ray. (A kink off by d in t moves the integral by O(d^2); the roots
+  // are found to 1e-12.)
+  bool KinkQuartic(PolyRootsProblem* q, double* ah) const {
+    if (!valid_) return false;
     const EllipsoidFrame& f = f_;
     constexpr double kTwoPi = 2 * kPi<double>;
     const double from0 = psi_ - f.kink_psi0 - kTwoPi * std::floor((psi_ - f.kink_psi0) / kTwoPi);
-    if (from0 > f.kink_psi_range) return 0;
+    if (from0 > f.kink_psi_range) return false;
     const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y, l1 = -(f.wx * ex_ + f.wy * ey_);
     const Vec3<double> n0(-f.s0x, -f.s0y, 1), n1(-ex_, -ey_, 0), wo(f.wx, f.wy, f.wz);
     const double m0 = 1 + f.s0x * f.s0x + f.s0y * f.s0y, m1 = 2 * (f.s0x * ex_ + f.s0y * ey_);
@@ -199,25 +203,21 @@ class EllipsoidRay {
     const Vec3<double>& h = f.ndf.lambda_h_dir();
     const double rc = f.ndf.lambda_rho();
     const double rc2 = rc * rc, omr2 = (1 - rc) * (1 + rc);
-    double ah[3];
     Vec3<double> ap[3];
     for (int k = 0; k < 3; ++k) {
       const Vec3<double> a = f.ndf.shape_matrix() * w[k];
       ah[k] = Dot(a, h);
       ap[k] = a - h * ah[k];
     }
-    double c[5] = {0, 0, 0, 0, 0};
+    std::fill(q->c, q->c + 5, 0.0);
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) c[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * ah[i] * ah[j];
+      for (int j = 0; j < 3; ++j) q->c[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * ah[i] * ah[j];
     }
-    double t[kMaxPolyDegree];
-    // A kink off by d in t moves the integral by O(d^2).
-    const int n = PolyRootsIn(c, 4, std::max(0.0, rho_minus_) / sc, 1.0, 1e-12, t);
-    int m = 0;
-    for (int i = 0; i < n; ++i) {
-      if (ah[0] + t[i] * (ah[1] + t[i] * ah[2]) > 0) rho_out[m++] = t[i] * sc;
-    }
-    return m;
+    q->n = 4;
+    q->lo = std::max(0.0, rho_minus_) / sc;
+    q->hi = 1.0;
+    q->tol = 1e-12;
+    return true;
   }
 
   // The node evaluators (ScalarEllipsoidNodes, quadrature_simd.cc) read these.
@@ -281,6 +281,37 @@ struct ScalarEllipsoidNodes {
   }
 };
 
+// The kinks of rays[0..count) (EllipsoidRay::KinkQuartic), ascending in
+// rho: kinks[r][0..n_kinks[r]). The quartics' roots are found together
+// (PolyRootsInBatch), each as PolyRootsIn alone would find it.
+inline void EllipsoidKinks(const EllipsoidRay* rays, int count,
+                           std::array<double, kMaxPolyDegree>* kinks, int* n_kinks) {
+  struct Quartic {
+    int ray;
+    double ah[3];
+  };
+  thread_local std::vector<PolyRootsProblem> problems;
+  thread_local std::vector<Quartic> quartics;
+  problems.resize(count);
+  quartics.resize(count);
+  int m = 0;
+  for (int r = 0; r < count; ++r) {
+    n_kinks[r] = 0;
+    if (rays[r].KinkQuartic(&problems[m], quartics[m].ah)) quartics[m++].ray = r;
+  }
+  PolyRootsInBatch(problems.data(), m);
+  for (int i = 0; i < m; ++i) {
+    const PolyRootsProblem& q = problems[i];
+    const double* ah = quartics[i].ah;
+    const int r = quartics[i].ray;
+    const double sc = rays[r].rho_plus_;
+    for (int k = 0; k < q.count; ++k) {
+      const double t = q.roots[k];
+      if (ah[0] + t * (ah[1] + t * ah[2]) > 0) kinks[r][n_kinks[r]++] = t * sc;
+    }
+  }
+}
+
 // The integrals along rays[0..count) (EllipsoidRay::Layout) and their
 // error estimates: each ray's pieces bisected, worst first, until their
 // |K15 - G7| sum meets f.ray_tol. The rays advance together, so that every
@@ -318,11 +349,16 @@ void IntegrateRays(const EllipsoidRay* rays, int count, const Nodes& nodes, doub
           EllipsoidRayPiece{a[q], b[q], k[q] * h, std::abs(k[q] - g[q]) * h};
     }
   };
+  thread_local std::vector<std::array<double, kMaxPolyDegree>> kinks;
+  thread_local std::vector<int> n_kinks;
+  kinks.resize(count);
+  n_kinks.resize(count);
+  EllipsoidKinks(rays, count, kinks.data(), n_kinks.data());
   int m = 0;
   for (int r = 0; r < count; ++r) {
     work[r].n = 0;
     if (!rays[r].valid()) continue;
-    const int n = rays[r].Layout(a.data() + m, b.data() + m);
+    const int n = rays[r].Layout(kinks[r].data(), n_kinks[r], a.data() + m, b.data() + m);
     for (int j = 0; j < n; ++j) {
       owner[m + j] = &rays[r];
       slot[m + j] = r * kMaxRayPieces + j;

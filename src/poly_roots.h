@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace brdfbake {
 
@@ -26,19 +27,27 @@ inline double PolyAt(const double* c, int n, double t) {
   return v;
 }
 
-// The root of c in [a, b] (n >= 1), where c(a) = pa and c(b) = pb have
-// opposite signs, to within tol: Newton steps (quadratic near a simple
-// root) kept inside the bracket, which each step shrinks; bisection where
-// a Newton step would leave it or shrink it too little.
-inline double PolyRootBracketed(const double* c, int n, double a, double b, double pa, double tol) {
-  double x = 0.5 * (a + b);
-  for (int it = 0; it < 100 && b - a > tol; ++it) {
+// The search for the root of c in [a, b] (n >= 1), where c(a) = pa and
+// c(b) have opposite signs, to within tol: Newton steps (quadratic near a
+// simple root) kept inside the bracket, which each step shrinks;
+// bisection where a Newton step would leave it or shrink it too little.
+// Step() takes one step and returns false once x is the root.
+struct RootBracket {
+  double a, b, pa, tol, x;
+  int it = 0;
+
+  RootBracket(double a_, double b_, double pa_, double tol_)
+      : a(a_), b(b_), pa(pa_), tol(tol_), x(0.5 * (a_ + b_)) {}
+
+  bool Step(const double* c, int n) {
+    if (!(it < 100 && b - a > tol)) return false;
+    ++it;
     double v = c[n], dv = 0;
     for (int k = n - 1; k >= 0; --k) {
       dv = dv * x + v;
       v = v * x + c[k];
     }
-    if (v == 0) return x;
+    if (v == 0) return false;
     if ((v > 0) == (pa > 0)) {
       a = x;
     } else {
@@ -49,12 +58,52 @@ inline double PolyRootBracketed(const double* c, int n, double a, double b, doub
     // before the bracket: once x is within rounding of the root, v's sign
     // is noise and x - step can fall just outside [a, b], which used to
     // send the loop through ~40 bisections instead.)
-    if (std::abs(step) <= 0.5 * tol) return std::clamp(x - step, a, b);
+    if (std::abs(step) <= 0.5 * tol) {
+      x = std::clamp(x - step, a, b);
+      return false;
+    }
     const double newton = x - step;
     const bool inside = newton > a && newton < b;
     x = inside ? newton : 0.5 * (a + b);
+    return true;
   }
-  return x;
+};
+
+inline double PolyRootBracketed(const double* c, int n, double a, double b, double pa, double tol) {
+  RootBracket r(a, b, pa, tol);
+  while (r.Step(c, n)) {
+  }
+  return r.x;
+}
+
+// The roots in (lo, hi) of c[0] + c[1] t + c[2] t^2 with n <= 2 (its
+// degree, leading coefficient non-zero), ascending; returns their count.
+inline int PolyRootsLowDegree(const double* c, int n, double lo, double hi, double* roots) {
+  if (n <= 0) return 0;
+  if (n == 1) {
+    const double r = -c[0] / c[1];
+    if (!(r > lo && r < hi)) return 0;
+    roots[0] = r;
+    return 1;
+  }
+  // Without cancellation: q = -(c1 + sign(c1) sqrt(disc)) / 2, roots q / c2
+  // and c0 / q. A double root (disc = 0) is no sign change.
+  const double disc = c[1] * c[1] - 4 * c[0] * c[2];
+  if (!(disc > 0)) return 0;
+  const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
+  double r1 = q / c[2], r2 = c[0] / q;  // q != 0: disc > 0
+  if (r1 > r2) std::swap(r1, r2);
+  int m = 0;
+  for (double r : {r1, r2}) {
+    if (r > lo && r < hi) roots[m++] = r;
+  }
+  return m;
+}
+
+// The tolerance to which PolyRootsIn finds the derivative's roots, which
+// only isolate the polynomial's.
+inline double IsolationTol(double tol, double lo, double hi) {
+  return std::max(tol, 1e-7 * (hi - lo));
 }
 
 // The roots in (lo, hi) where c[0] + ... + c[n] t^n (n <= kMaxPolyDegree)
@@ -64,33 +113,13 @@ inline double PolyRootBracketed(const double* c, int n, double a, double b, doub
 // double root) may be missed.
 inline int PolyRootsIn(const double* c, int n, double lo, double hi, double tol, double* roots) {
   while (n > 0 && c[n] == 0) --n;
-  if (n <= 0) return 0;
-  if (n == 1) {
-    const double r = -c[0] / c[1];
-    if (!(r > lo && r < hi)) return 0;
-    roots[0] = r;
-    return 1;
-  }
-  if (n == 2) {
-    // Without cancellation: q = -(c1 + sign(c1) sqrt(disc)) / 2, roots q / c2
-    // and c0 / q. A double root (disc = 0) is no sign change.
-    const double disc = c[1] * c[1] - 4 * c[0] * c[2];
-    if (!(disc > 0)) return 0;
-    const double q = -0.5 * (c[1] + std::copysign(std::sqrt(disc), c[1]));
-    double r1 = q / c[2], r2 = c[0] / q;  // q != 0: disc > 0
-    if (r1 > r2) std::swap(r1, r2);
-    int m = 0;
-    for (double r : {r1, r2}) {
-      if (r > lo && r < hi) roots[m++] = r;
-    }
-    return m;
-  }
+  if (n <= 2) return PolyRootsLowDegree(c, n, lo, hi, roots);
   double ends[kMaxPolyDegree + 1];
   double derivative[kMaxPolyDegree];
   for (int k = 0; k < n; ++k) derivative[k] = (k + 1) * c[k + 1];
   int count = 0;
   ends[count++] = lo;
-  count += PolyRootsIn(derivative, n - 1, lo, hi, std::max(tol, 1e-7 * (hi - lo)), ends + 1);
+  count += PolyRootsIn(derivative, n - 1, lo, hi, IsolationTol(tol, lo, hi), ends + 1);
   ends[count++] = hi;
   int found = 0;
   for (int i = 0; i + 1 < count; ++i) {
@@ -100,6 +129,112 @@ inline int PolyRootsIn(const double* c, int n, double lo, double hi, double tol,
     roots[found++] = PolyRootBracketed(c, n, a, b, pa, tol);
   }
   return found;
+}
+
+// One polynomial for PolyRootsInBatch: c[0..n] on (lo, hi) to tol, and
+// its roots there (at most kMaxPolyDegree).
+struct PolyRootsProblem {
+  double c[kMaxPolyDegree + 1];
+  int n;
+  double lo, hi, tol;
+  int count;
+  double roots[kMaxPolyDegree];
+};
+
+// PolyRootsIn for each of m problems, with the same results bit for bit:
+// the same isolation by the derivatives' roots and the same steps, but the
+// brackets of all the problems searched together, a step of each in
+// turn, so that their dependency chains (a Horner loop and a division per
+// step) overlap instead of running one after the other.
+inline void PolyRootsInBatch(PolyRootsProblem* problems, int m) {
+  // Per problem its chain of derivatives as PolyRootsIn recurses: level 0
+  // the polynomial, each next one the derivative of the last, down to a
+  // degree of at most 2 (closed form).
+  struct Level {
+    double c[kMaxPolyDegree + 1];
+    int n;
+    double tol;
+    int count;
+    double roots[kMaxPolyDegree];
+  };
+  struct Chain {
+    Level level[kMaxPolyDegree];
+    int depth;
+  };
+  struct Task {
+    RootBracket r;
+    const Level* poly;
+    double* out;
+  };
+  thread_local std::vector<Chain> chains;
+  thread_local std::vector<Task> tasks;
+  thread_local std::vector<int> active;
+  chains.resize(m);
+  int height = 0;
+  for (int p = 0; p < m; ++p) {
+    const PolyRootsProblem& q = problems[p];
+    Chain& ch = chains[p];
+    Level* l = &ch.level[0];
+    std::copy(q.c, q.c + q.n + 1, l->c);
+    l->n = q.n;
+    l->tol = q.tol;
+    ch.depth = 1;
+    for (;;) {
+      while (l->n > 0 && l->c[l->n] == 0) --l->n;
+      if (l->n <= 2) break;
+      Level* next = l + 1;
+      for (int k = 0; k < l->n; ++k) next->c[k] = (k + 1) * l->c[k + 1];
+      next->n = l->n - 1;
+      next->tol = IsolationTol(l->tol, q.lo, q.hi);
+      l = next;
+      ++ch.depth;
+    }
+    l->count = PolyRootsLowDegree(l->c, l->n, q.lo, q.hi, l->roots);
+    height = std::max(height, ch.depth);
+  }
+  // Upwards from the closed forms, one level of every chain at a time.
+  for (int h = 1; h < height; ++h) {
+    tasks.clear();
+    for (int p = 0; p < m; ++p) {
+      Chain& ch = chains[p];
+      const int i = ch.depth - 1 - h;
+      if (i < 0) continue;
+      Level& l = ch.level[i];
+      const Level& below = ch.level[i + 1];
+      double ends[kMaxPolyDegree + 1];
+      int count = 0;
+      ends[count++] = problems[p].lo;
+      for (int k = 0; k < below.count; ++k) ends[count++] = below.roots[k];
+      ends[count++] = problems[p].hi;
+      l.count = 0;
+      for (int k = 0; k + 1 < count; ++k) {
+        const double a = ends[k], b = ends[k + 1];
+        const double pa = PolyAt(l.c, l.n, a), pb = PolyAt(l.c, l.n, b);
+        if (pa == 0 || pb == 0 || (pa > 0) == (pb > 0)) continue;
+        tasks.push_back({RootBracket(a, b, pa, l.tol), &l, &l.roots[l.count++]});
+      }
+    }
+    active.resize(tasks.size());
+    for (size_t t = 0; t < tasks.size(); ++t) active[t] = static_cast<int>(t);
+    size_t left = active.size();
+    while (left > 0) {
+      size_t kept = 0;
+      for (size_t k = 0; k < left; ++k) {
+        Task& t = tasks[active[k]];
+        if (t.r.Step(t.poly->c, t.poly->n)) {
+          active[kept++] = active[k];
+        } else {
+          *t.out = t.r.x;
+        }
+      }
+      left = kept;
+    }
+  }
+  for (int p = 0; p < m; ++p) {
+    const Level& top = chains[p].level[0];
+    problems[p].count = top.count;
+    std::copy(top.roots, top.roots + top.count, problems[p].roots);
+  }
 }
 
 }  // namespace brdfbake

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
 #include <vector>
 
 namespace brdfbake {
@@ -77,6 +78,42 @@ TEST(PolyRootsTest, ConstantAndVanishingLeadingTerms) {
   ASSERT_EQ(PolyRootsIn(c.data(), 4, 0.0, 1.0, 1e-15, got), 2);
   EXPECT_NEAR(got[0], 0.2, 1e-13);
   EXPECT_NEAR(got[1], 0.5, 1e-13);
+}
+
+// The batch gives each problem exactly PolyRootsIn's roots: random
+// quartics with 0 to 4 roots in the interval (some nearly double), cubics
+// and quadratics stored as quartics, constants, in batches of 1 to 40.
+TEST(PolyRootsTest, BatchMatchesOneByOneBitForBit) {
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> u(-0.2, 1.2);
+  std::uniform_int_distribution<int> degree(0, 4);
+  int roots_seen = 0;
+  for (int batch = 1; batch <= 40; ++batch) {
+    std::vector<PolyRootsProblem> problems(batch);
+    for (PolyRootsProblem& q : problems) {
+      const int deg = degree(rng);
+      std::vector<double> r;
+      for (int k = 0; k < deg; ++k) r.push_back(u(rng));
+      if (deg >= 2 && u(rng) < 0.2) r[1] = r[0] + 1e-6 * u(rng);
+      std::vector<double> c = deg == 0 ? std::vector<double>{u(rng) + 2} : FromRoots(r);
+      const double scale = u(rng) < 0.5 ? -3e-5 : 7e3;
+      std::fill(q.c, q.c + 5, 0.0);
+      for (size_t k = 0; k < c.size(); ++k) q.c[k] = scale * c[k];
+      q.n = 4;
+      q.lo = 0.05 * u(rng);
+      q.hi = 1 - 0.05 * u(rng);
+      q.tol = u(rng) < 0.5 ? 1e-12 : 1e-9;
+    }
+    PolyRootsInBatch(problems.data(), batch);
+    for (const PolyRootsProblem& q : problems) {
+      double want[kMaxPolyDegree];
+      const int n = PolyRootsIn(q.c, q.n, q.lo, q.hi, q.tol, want);
+      ASSERT_EQ(q.count, n);
+      for (int k = 0; k < n; ++k) EXPECT_EQ(q.roots[k], want[k]);
+      roots_seen += n;
+    }
+  }
+  EXPECT_GT(roots_seen, 200);
 }
 
 }  // namespace
