@@ -67,8 +67,8 @@ struct EllipsoidRayPiece {
 // The part of one ray s = s0 + rho e inside the horizon disk.
 class EllipsoidRay {
  public:
-  EllipsoidRay(const EllipsoidFrame& f, double psi) : f_(f), psi_(psi) {
-    const double cs = std::cos(psi), sn = std::sin(psi);
+  // The ray at angle psi, cs and sn its cosine and sine.
+  EllipsoidRay(const EllipsoidFrame& f, double psi, double cs, double sn) : f_(f), psi_(psi) {
     ex_ = f.l11 * cs + f.l12 * sn;
     ey_ = f.l22 * sn;
     ee_ = ex_ * ex_ + ey_ * ey_;
@@ -263,6 +263,13 @@ class EllipsoidRay {
 };
 
 struct ScalarEllipsoidNodes {
+  // The cosines and sines of the n rays' angles psi (EllipsoidRay).
+  void SinCos(const double* psi, int n, double* cs, double* sn) const {
+    for (int i = 0; i < n; ++i) {
+      cs[i] = std::cos(psi[i]);
+      sn[i] = std::sin(psi[i]);
+    }
+  }
   void operator()(const EllipsoidRay* const* rays, const double* a, const double* b, int n,
                   double* k, double* g) const {
     const KronrodRule& r = Kronrod15();
@@ -653,10 +660,14 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
 
   // The rays of a psi piece, integrated together (IntegrateRays).
   std::vector<EllipsoidRay> batch;
+  std::vector<double> cs, sn;
   batch.reserve(15);
   auto ray_batch = [&](const double* psi, int count, double* value, double* err) {
     batch.clear();
-    for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i]);
+    cs.resize(count);
+    sn.resize(count);
+    nodes.SinCos(psi, count, cs.data(), sn.data());
+    for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i], cs[i], sn[i]);
     IntegrateRays(batch.data(), count, nodes, value, err);
   };
   const double ca = f.dx * f.l11,
