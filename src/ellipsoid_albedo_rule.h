@@ -263,6 +263,8 @@ class EllipsoidRay {
 };
 
 struct ScalarEllipsoidNodes {
+  // The kinks' brackets (EllipsoidKinks), each root PolyRootIn's.
+  void SearchRoots(RootTask* tasks, int m) const { InterleavedRootSearch()(tasks, m); }
   // The cosines and sines of the n rays' angles psi (EllipsoidRay).
   void SinCos(const double* psi, int n, double* cs, double* sn) const {
     for (int i = 0; i < n; ++i) {
@@ -290,9 +292,10 @@ struct ScalarEllipsoidNodes {
 
 // The kinks of rays[0..count) (EllipsoidRay::KinkQuartic), ascending in
 // rho: kinks[r][0..n_kinks[r]). The quartics' roots are found together
-// (PolyRootsInBatch), each as PolyRootsIn alone would find it.
-inline void EllipsoidKinks(const EllipsoidRay* rays, int count,
-                           std::array<double, kMaxPolyDegree>* kinks, int* n_kinks) {
+// (PolyRootsInBatch), their brackets searched by nodes.SearchRoots.
+template <class Nodes>
+void EllipsoidKinks(const EllipsoidRay* rays, int count, const Nodes& nodes,
+                    std::array<double, kMaxPolyDegree>* kinks, int* n_kinks) {
   struct Quartic {
     int ray;
     double ah[3];
@@ -306,7 +309,8 @@ inline void EllipsoidKinks(const EllipsoidRay* rays, int count,
     n_kinks[r] = 0;
     if (rays[r].KinkQuartic(&problems[m], quartics[m].ah)) quartics[m++].ray = r;
   }
-  PolyRootsInBatch(problems.data(), m);
+  PolyRootsInBatch(problems.data(), m,
+                   [&](RootTask* tasks, int n) { nodes.SearchRoots(tasks, n); });
   for (int i = 0; i < m; ++i) {
     const PolyRootsProblem& q = problems[i];
     const double* ah = quartics[i].ah;
@@ -360,7 +364,7 @@ void IntegrateRays(const EllipsoidRay* rays, int count, const Nodes& nodes, doub
   thread_local std::vector<int> n_kinks;
   kinks.resize(count);
   n_kinks.resize(count);
-  EllipsoidKinks(rays, count, kinks.data(), n_kinks.data());
+  EllipsoidKinks(rays, count, nodes, kinks.data(), n_kinks.data());
   int m = 0;
   for (int r = 0; r < count; ++r) {
     work[r].n = 0;

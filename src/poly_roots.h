@@ -131,6 +131,40 @@ inline int PolyRootsIn(const double* c, int n, double lo, double hi, double tol,
   return found;
 }
 
+// A bracket to search (RootBracket) on the polynomial c[0..n] (3 <= n <=
+// kMaxPolyDegree), its root to be stored at *out.
+struct RootTask {
+  RootBracket r;
+  const double* c;
+  int n;
+  double* out;
+};
+
+// Searches tasks[0..m) to their ends, a step of each in turn, so that
+// their dependency chains (a Horner loop and a division per step) overlap
+// instead of running one after the other: each root is the one
+// PolyRootBracketed gives, bit for bit.
+struct InterleavedRootSearch {
+  void operator()(RootTask* tasks, int m) const {
+    thread_local std::vector<int> active;
+    active.resize(m);
+    for (int t = 0; t < m; ++t) active[t] = t;
+    int left = m;
+    while (left > 0) {
+      int kept = 0;
+      for (int k = 0; k < left; ++k) {
+        RootTask& t = tasks[active[k]];
+        if (t.r.Step(t.c, t.n)) {
+          active[kept++] = active[k];
+        } else {
+          *t.out = t.r.x;
+        }
+      }
+      left = kept;
+    }
+  }
+};
+
 // One polynomial for PolyRootsInBatch: c[0..n] on (lo, hi) to tol, and
 // its roots there (at most kMaxPolyDegree).
 struct PolyRootsProblem {
@@ -141,12 +175,14 @@ struct PolyRootsProblem {
   double roots[kMaxPolyDegree];
 };
 
-// PolyRootsIn for each of m problems, with the same results bit for bit:
-// the same isolation by the derivatives' roots and the same steps, but the
-// brackets of all the problems searched together, a step of each in
-// turn, so that their dependency chains (a Horner loop and a division per
-// step) overlap instead of running one after the other.
-inline void PolyRootsInBatch(PolyRootsProblem* problems, int m) {
+// PolyRootsIn for each of m problems: the same isolation by the
+// derivatives' roots, level by level, with the brackets of all the
+// problems at a level searched together by `search` (RootTask). With
+// InterleavedRootSearch the results are PolyRootsIn's bit for bit; a search
+// in SIMD lanes (quadrature_simd.cc) gives each root to the same
+// tolerance.
+template <class Search = InterleavedRootSearch>
+void PolyRootsInBatch(PolyRootsProblem* problems, int m, const Search& search = Search()) {
   // Per problem its chain of derivatives as PolyRootsIn recurses: level 0
   // the polynomial, each next one the derivative of the last, down to a
   // degree of at most 2 (closed form).
@@ -161,14 +197,8 @@ inline void PolyRootsInBatch(PolyRootsProblem* problems, int m) {
     Level level[kMaxPolyDegree];
     int depth;
   };
-  struct Task {
-    RootBracket r;
-    const Level* poly;
-    double* out;
-  };
   thread_local std::vector<Chain> chains;
-  thread_local std::vector<Task> tasks;
-  thread_local std::vector<int> active;
+  thread_local std::vector<RootTask> tasks;
   chains.resize(m);
   int height = 0;
   for (int p = 0; p < m; ++p) {
@@ -211,24 +241,10 @@ inline void PolyRootsInBatch(PolyRootsProblem* problems, int m) {
         const double a = ends[k], b = ends[k + 1];
         const double pa = PolyAt(l.c, l.n, a), pb = PolyAt(l.c, l.n, b);
         if (pa == 0 || pb == 0 || (pa > 0) == (pb > 0)) continue;
-        tasks.push_back({RootBracket(a, b, pa, l.tol), &l, &l.roots[l.count++]});
+        tasks.push_back({RootBracket(a, b, pa, l.tol), l.c, l.n, &l.roots[l.count++]});
       }
     }
-    active.resize(tasks.size());
-    for (size_t t = 0; t < tasks.size(); ++t) active[t] = static_cast<int>(t);
-    size_t left = active.size();
-    while (left > 0) {
-      size_t kept = 0;
-      for (size_t k = 0; k < left; ++k) {
-        Task& t = tasks[active[k]];
-        if (t.r.Step(t.poly->c, t.poly->n)) {
-          active[kept++] = active[k];
-        } else {
-          *t.out = t.r.x;
-        }
-      }
-      left = kept;
-    }
+    search(tasks.data(), static_cast<int>(tasks.size()));
   }
   for (int p = 0; p < m; ++p) {
     const Level& top = chains[p].level[0];

@@ -366,6 +366,67 @@ struct SimdAnisoNodes {
 // EllipsoidRay::WiAt and the ellipsoid's Lambda (ellipsoid.h), with both
 // sides of each other branch computed and selected per lane.
 struct SimdEllipsoidNodes {
+  // InterleavedRootSearch (poly_roots.h) in lanes, a task per lane: the same
+  // steps (Horner's rule with fused multiply-adds, so each root agrees
+  // with the scalar search's to the tasks' tolerance, not bit for bit),
+  // lanes masked off as their tasks end. Quartics and cubics alike, a
+  // cubic's c[4] being 0.
+  void SearchRoots(RootTask *tasks, int m) const {
+    const DF64 d;
+    using V = hn::Vec<DF64>;
+    using M = hn::Mask<DF64>;
+    constexpr size_t kN = hn::MaxLanes(DF64());
+    HWY_ALIGN double buf[kMaxPolyDegree + 5][kN];
+    const V zero = hn::Zero(d), half = hn::Set(d, 0.5), one = hn::Set(d, 1.0);
+    for (int t0 = 0; t0 < m; t0 += static_cast<int>(kN)) {
+      const int lanes = std::min(static_cast<int>(kN), m - t0);
+      // Rows: c[0..4], a, b, pa, tol, x; lanes past the tasks start done.
+      for (size_t i = 0; i < kN; ++i) {
+        const bool real = static_cast<int>(i) < lanes;
+        const RootTask &t = tasks[t0 + (real ? i : 0)];
+        for (int k = 0; k <= kMaxPolyDegree; ++k) buf[k][i] = k <= t.n ? t.c[k] : 0.0;
+        buf[5][i] = t.r.a;
+        buf[6][i] = t.r.b;
+        buf[7][i] = t.r.pa;
+        buf[8][i] = real ? t.r.tol : HUGE_VAL;
+      }
+      V c[kMaxPolyDegree + 1];
+      for (int k = 0; k <= kMaxPolyDegree; ++k) c[k] = hn::Load(d, buf[k]);
+      V a = hn::Load(d, buf[5]), b = hn::Load(d, buf[6]);
+      const M pa_pos = hn::Gt(hn::Load(d, buf[7]), zero);
+      const V tol = hn::Load(d, buf[8]), half_tol = hn::Mul(half, tol);
+      V x = hn::Mul(half, hn::Add(a, b));
+      V it = zero;
+      const V most = hn::Set(d, 100.0);
+      M done = hn::Not(hn::And(hn::Lt(it, most), hn::Gt(hn::Sub(b, a), tol)));
+      while (!hn::AllTrue(d, done)) {
+        V v = c[kMaxPolyDegree], dv = zero;
+        for (int k = kMaxPolyDegree - 1; k >= 0; --k) {
+          dv = hn::MulAdd(dv, x, v);
+          v = hn::MulAdd(v, x, c[k]);
+        }
+        it = hn::Add(it, one);
+        const M hit = hn::AndNot(done, hn::Eq(v, zero));
+        const M live = hn::Not(hn::Or(done, hit));
+        const M same = hn::Not(hn::Xor(hn::Gt(v, zero), pa_pos));
+        a = hn::IfThenElse(hn::And(live, same), x, a);
+        b = hn::IfThenElse(hn::AndNot(same, live), x, b);
+        const V step = hn::Div(v, dv);
+        const M converged = hn::And(live, hn::Le(hn::Abs(step), half_tol));
+        const V newton = hn::Sub(x, step);
+        const M inside = hn::And(hn::Gt(newton, a), hn::Lt(newton, b));
+        const V next = hn::IfThenElse(
+            converged, hn::Min(hn::Max(newton, a), b),
+            hn::IfThenElse(inside, newton, hn::Mul(half, hn::Add(a, b))));
+        x = hn::IfThenElse(live, next, x);
+        done = hn::Or(hn::Or(done, hit), converged);
+        done = hn::Or(done, hn::Not(hn::And(hn::Lt(it, most), hn::Gt(hn::Sub(b, a), tol))));
+      }
+      HWY_ALIGN double out[kN];
+      hn::Store(x, d, out);
+      for (int i = 0; i < lanes; ++i) *tasks[t0 + i].out = out[i];
+    }
+  }
   // ScalarEllipsoidNodes::SinCos with hn::Cos and hn::Sin (3 ulp in
   // double, against the C library's; |psi| < 4 pi here, in their range).
   void SinCos(const double *psi, int n, double *cs, double *sn) const {
@@ -528,6 +589,11 @@ struct SimdEllipsoidNodes {
     }
   }
 };
+
+void PolyRootsLanes(PolyRootsProblem *problems, int m) {
+  PolyRootsInBatch(problems, m,
+                   [](RootTask *tasks, int n) { SimdEllipsoidNodes().SearchRoots(tasks, n); });
+}
 
 AzimuthalResult EllipsoidAlbedoTexel(double alpha_x, double alpha_y, double theta_x,
                                      double theta_y, double theta_z, double mu, double phi,
@@ -875,6 +941,11 @@ namespace brdfbake {
 HWY_EXPORT(SelLobeTexel);
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol) {
   return HWY_DYNAMIC_DISPATCH(SelLobeTexel)(alpha_x, alpha_y, tol);
+}
+
+HWY_EXPORT(PolyRootsLanes);
+void SimdPolyRootsInBatch(PolyRootsProblem* problems, int m) {
+  HWY_DYNAMIC_DISPATCH(PolyRootsLanes)(problems, m);
 }
 
 HWY_EXPORT(EllipsoidAlbedoTexel);

@@ -20,6 +20,7 @@
 #include "azimuthal.h"
 #include "azimuthal_slope.h"
 #include "beckmann_azimuth.h"
+#include "poly_roots.h"
 #include "sel_norm.h"
 #include "std_azimuth.h"
 
@@ -31,6 +32,9 @@ AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, do
 
 // SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);
+// PolyRootsInBatch (poly_roots.h) with the brackets searched in lanes, as
+// the ellipsoid's kinks are: each root to its problem's tolerance.
+void SimdPolyRootsInBatch(PolyRootsProblem* problems, int m);
 // EllipsoidAlbedo (ellipsoid_albedo.h) with each ray piece's nodes in lanes.
 AzimuthalResult SimdEllipsoidAlbedo(double alpha_x, double alpha_y, double theta_x,
                                     double theta_y, double theta_z, double mu, double phi,

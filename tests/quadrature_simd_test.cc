@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -207,6 +208,66 @@ TEST(QuadratureSimdTest, SelAgreesWithTheScalarReferenceOnEveryTarget) {
       }
     }
     std::printf("%s: largest |simd - scalar| of the sel integral's ratio %.3g\n",
+                targets[k].c_str(), worst);
+  }
+  ForceTarget("best");
+}
+
+// The kinks' root search in lanes against PolyRootsIn on every target:
+// random polynomials of degree 0 to 4 (stored as quartics) with roots at
+// least 1e-3 apart, batches of 1 to 40 (whole vectors and tails). The
+// lanes' Horner steps use fused multiply-adds, so a root may differ from
+// the scalar one, within the two searches' tolerances.
+TEST(QuadratureSimdTest, PolyRootsInLanesAgreeWithTheScalarSearchOnEveryTarget) {
+  const std::vector<std::string> targets = AvailableTargets();
+  for (size_t k = 0; k < targets.size(); ++k) {
+    ForceTarget(targets[k]);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-0.2, 1.2);
+    std::uniform_int_distribution<int> degree(0, 4);
+    double worst = 0;
+    int roots_seen = 0;
+    for (int batch = 1; batch <= 40; ++batch) {
+      std::vector<PolyRootsProblem> problems(batch);
+      for (PolyRootsProblem& q : problems) {
+        const int deg = degree(rng);
+        std::vector<double> r;
+        while (static_cast<int>(r.size()) < deg) {
+          const double x = u(rng);
+          bool apart = true;
+          for (double y : r) apart = apart && std::abs(x - y) > 1e-3;
+          if (apart) r.push_back(x);
+        }
+        std::vector<double> c = {u(rng) < 0.5 ? -3e-5 : 7e3};
+        for (double x : r) {
+          std::vector<double> n(c.size() + 1, 0.0);
+          for (size_t i = 0; i < c.size(); ++i) {
+            n[i + 1] += c[i];
+            n[i] -= x * c[i];
+          }
+          c = n;
+        }
+        std::fill(q.c, q.c + 5, 0.0);
+        std::copy(c.begin(), c.end(), q.c);
+        q.n = 4;
+        q.lo = 0.05 * u(rng);
+        q.hi = 1 - 0.05 * u(rng);
+        q.tol = u(rng) < 0.5 ? 1e-12 : 1e-9;
+      }
+      SimdPolyRootsInBatch(problems.data(), batch);
+      for (const PolyRootsProblem& q : problems) {
+        double want[kMaxPolyDegree];
+        const int n = PolyRootsIn(q.c, q.n, q.lo, q.hi, q.tol, want);
+        ASSERT_EQ(q.count, n) << targets[k];
+        for (int i = 0; i < n; ++i) {
+          EXPECT_NEAR(q.roots[i], want[i], 2 * q.tol) << targets[k];
+          worst = std::max(worst, std::abs(q.roots[i] - want[i]) / q.tol);
+        }
+        roots_seen += n;
+      }
+    }
+    EXPECT_GT(roots_seen, 100);
+    std::printf("%s: largest |lanes - scalar| of the roots %.3g of their tolerance\n",
                 targets[k].c_str(), worst);
   }
   ForceTarget("best");
