@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "adaptive_rule.h"
@@ -505,20 +506,23 @@ struct ClampRays {
   std::vector<double> glancing, glancing_width;
   double psi0 = 0, range = 2 * kPi<double>;
 };
-inline ClampRays ClampTangents(const EllipsoidFrame& f) {
+// edge_probes: the edge's points ClampEdge::At(2 pi k / kClampProbes)
+// (EllipsoidMaterial).
+inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
+                               const std::vector<Vec3<double>>& edge_probes) {
   constexpr double kTwoPi = 2 * kPi<double>;
-  const ClampEdge edge(f.ndf);
-  auto psi_at = [&](double theta) {
-    const Vec3<double> wi = edge.At(theta);
+  // The psi of the ray through the clamp edge's point wi.
+  auto psi_of = [&](const Vec3<double>& wi) {
     const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
     const double sx = -m.x / m.z, sy = -m.y / m.z;
     const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
     return std::atan2(vy, vx);
   };
+  auto psi_at = [&](double theta) { return psi_of(edge.At(theta)); };
   // psi(theta) unwrapped relative to a reference angle.
   auto near = [&](double psi, double ref) { return ref + std::remainder(psi - ref, kTwoPi); };
   std::vector<double> psi(kClampProbes);
-  for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_at(kTwoPi * k / kClampProbes);
+  for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_of(edge_probes[k]);
   const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
   ClampRays rays;
   // Where psi(theta) does not wind around s0 (s0 outside the clamped
@@ -582,23 +586,20 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f) {
 // psi over beta* +- sqrt(2 m0 / m2). (At alpha 0.05 x 0.3, theta_x 70,
 // theta_z 20 degrees, mu 0.41270, phi 2.29386 it is 0.042 wide, 0.034
 // from a tangent ray, and the one Kronrod piece over it missed by 1.5e-7
-// against a claim of 5.3e-8.)
-inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f) {
+// against a claim of 5.3e-8.) HorizonMinima finds the minima, which
+// depend on the material alone; HorizonApproaches maps them to the view's
+// rays.
+struct HorizonMinimum {
+  double beta, d;  // its direction, and the half width sqrt(2 m0 / m2) in beta
+};
+inline std::vector<HorizonMinimum> HorizonMinima(const EllipsoidNdf<double>& ndf) {
   constexpr double kTwoPi = 2 * kPi<double>;
   auto margin = [&](double beta) {
-    return f.ndf.ClampMargin(Vec3<double>(std::cos(beta), std::sin(beta), 0));
-  };
-  // The ray through the horizon point wi(beta): its half vector's slope
-  // s = s0 + L v, v along (cos psi, sin psi).
-  auto psi_at = [&](double beta) {
-    const Vec3<double> m(std::cos(beta) + f.wx, std::sin(beta) + f.wy, f.wz);
-    const double sx = -m.x / m.z, sy = -m.y / m.z;
-    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
-    return std::atan2(vy, vx);
+    return ndf.ClampMargin(Vec3<double>(std::cos(beta), std::sin(beta), 0));
   };
   double probe[kClampProbes];
   for (int k = 0; k < kClampProbes; ++k) probe[k] = margin(kTwoPi * k / kClampProbes);
-  std::vector<HorizonApproach> out;
+  std::vector<HorizonMinimum> out;
   for (int k = 0; k < kClampProbes; ++k) {
     const double v = probe[k];
     if (!(v < probe[(k + kClampProbes - 1) % kClampProbes] && v <= probe[(k + 1) % kClampProbes])) {
@@ -616,11 +617,59 @@ inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f) {
     // none of the texels measured needed it.
     const double d = std::sqrt(2 * m0 / m2);
     if (!(d < 0.5)) continue;
-    const double w = 0.5 * std::abs(std::remainder(psi_at(beta + d) - psi_at(beta - d), kTwoPi));
-    const double psi = psi_at(beta);
-    out.push_back({psi, w});
+    out.push_back({beta, d});
   }
   return out;
+}
+
+// The margin's minima (HorizonMinima, of the material alone) as seen from
+// the view: the ray psi* through the horizon point of each, and the
+// feature's width w, the half change of psi over beta* +- d.
+inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f,
+                                                      const std::vector<HorizonMinimum>& minima) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  // The ray through the horizon point wi(beta): its half vector's slope
+  // s = s0 + L v, v along (cos psi, sin psi).
+  auto psi_at = [&](double beta) {
+    const Vec3<double> m(std::cos(beta) + f.wx, std::sin(beta) + f.wy, f.wz);
+    const double sx = -m.x / m.z, sy = -m.y / m.z;
+    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    return std::atan2(vy, vx);
+  };
+  std::vector<HorizonApproach> out;
+  for (const HorizonMinimum& h : minima) {
+    const double w =
+        0.5 * std::abs(std::remainder(psi_at(h.beta + h.d) - psi_at(h.beta - h.d), kTwoPi));
+    out.push_back({psi_at(h.beta), w});
+  }
+  return out;
+}
+
+// What the rule needs of a material alone: G1's clamp edge and its probe
+// points (ClampTangents), the margin's minima on the horizon
+// (HorizonMinima). A bake asks for one material texel after texel, so the
+// last one is kept per thread (EllipsoidMaterialFor); the values are
+// those computed afresh, bit for bit.
+struct EllipsoidMaterial {
+  double params[5];  // alpha_x, alpha_y, theta_x, theta_y, theta_z
+  ClampEdge edge;
+  std::vector<Vec3<double>> edge_probes;
+  std::vector<HorizonMinimum> horizon;
+
+  EllipsoidMaterial(const double (&p)[5], const EllipsoidNdf<double>& ndf)
+      : params{p[0], p[1], p[2], p[3], p[4]}, edge(ndf), horizon(HorizonMinima(ndf)) {
+    constexpr double kTwoPi = 2 * kPi<double>;
+    edge_probes.resize(kClampProbes);
+    for (int k = 0; k < kClampProbes; ++k) edge_probes[k] = edge.At(kTwoPi * k / kClampProbes);
+  }
+};
+inline const EllipsoidMaterial& EllipsoidMaterialFor(const double (&p)[5],
+                                                    const EllipsoidNdf<double>& ndf) {
+  thread_local std::unique_ptr<EllipsoidMaterial> last;
+  if (!last || !std::equal(p, p + 5, last->params)) {
+    last = std::make_unique<EllipsoidMaterial>(p, ndf);
+  }
+  return *last;
 }
 
 template <class Nodes>
@@ -632,6 +681,8 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   EllipsoidFrame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z), mu, phi);
   f.separable = masking == Masking::kSeparable;
   f.clamped = f.ndf.lambda_rho() < 1;
+  const double params[5] = {ax, ay, theta_x, theta_y, theta_z};
+  const EllipsoidMaterial& material = EllipsoidMaterialFor(params, f.ndf);
   f.lambda_o = f.ndf.Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.ray_tol = 0.2 * tol;
   // B = A^-T (= S^-1 R); its columns b1, b2, b3.
@@ -733,7 +784,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // width left a texel at 1.31x (0.1 x 0.1, theta_x 85 degrees, mu
   // 0.03175, phi 2.39359).
   if (f.clamped) {
-    const ClampRays rays = ClampTangents(f);
+    const ClampRays rays = ClampTangents(f, material.edge, material.edge_probes);
     f.kink_psi0 = rays.psi0;
     f.kink_psi_range = rays.range;
     for (double t : rays.tangents) SplitSegment(&segments, lo, t, true, 0);
@@ -751,7 +802,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   // texel is within 0.85 of its claim. A cut without the grading left one
   // at 1.03x. The cost is in thin lobes: none on the bench material, up
   // to 1.7x the psi pieces (0.01 x 0.1 at 50 degrees).
-  for (const HorizonApproach& h : HorizonApproaches(f)) {
+  for (const HorizonApproach& h : HorizonApproaches(f, material.horizon)) {
     CutAtNarrowFeature(&segments, lo, h.psi, h.width);
   }
   return SegmentRule(ray_batch, segments, tol, max_pieces);
