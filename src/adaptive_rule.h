@@ -34,6 +34,17 @@ struct SlopeView {
   }
 };
 
+// std::remainder(d, 2 pi): d less the nearest multiple of 2 pi, exactly.
+// Angle differences within 2.5 pi take a short path that gives the same
+// value (there d -+ 2 pi is exact, Sterbenz's lemma), without the C
+// library's general reduction.
+inline double WrapAngle(double d) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  if (d > kPi<double>) return d < 2.5 * kPi<double> ? d - kTwoPi : std::remainder(d, kTwoPi);
+  if (d < -kPi<double>) return d > -2.5 * kPi<double> ? d + kTwoPi : std::remainder(d, kTwoPi);
+  return d;
+}
+
 struct GkPiece {
   double a = 0, b = 0, value = 0, err = 0, prop = 0;
 };

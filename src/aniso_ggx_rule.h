@@ -184,7 +184,7 @@ inline std::vector<HorizonApproach> GgxHorizonApproaches(const AnisoFrame& f) {
   };
   const double b0 = f.ay < f.ax ? 0.5 * kPi<double> : 0.0;
   for (double b : {b0, b0 + kPi<double>}) {
-    const double w = 0.5 * std::abs(std::remainder(psi_at(b + d) - psi_at(b - d), 2 * kPi<double>));
+    const double w = 0.5 * std::abs(WrapAngle(psi_at(b + d) - psi_at(b - d)));
     out.push_back({psi_at(b), w});
   }
   return out;

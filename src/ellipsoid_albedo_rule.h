@@ -510,7 +510,6 @@ struct ClampRays {
 // (EllipsoidMaterial).
 inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
                                const std::vector<Vec3<double>>& edge_probes) {
-  constexpr double kTwoPi = 2 * kPi<double>;
   // The psi of the ray through the clamp edge's point wi.
   auto psi_of = [&](const Vec3<double>& wi) {
     const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
@@ -520,7 +519,7 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
   };
   auto psi_at = [&](double theta) { return psi_of(edge.At(theta)); };
   // psi(theta) unwrapped relative to a reference angle.
-  auto near = [&](double psi, double ref) { return ref + std::remainder(psi - ref, kTwoPi); };
+  auto near = [&](double psi, double ref) { return ref + WrapAngle(psi - ref); };
   std::vector<double> psi(kClampProbes);
   for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_of(edge_probes[k]);
   const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
@@ -531,7 +530,7 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
   double unwrapped[kClampProbes + 1];  // psi[k] - psi[0], continued
   unwrapped[0] = 0;
   for (int k = 0; k < kClampProbes; ++k) {
-    unwrapped[k + 1] = unwrapped[k] + std::remainder(psi[(k + 1) % kClampProbes] - psi[k], kTwoPi);
+    unwrapped[k + 1] = unwrapped[k] + WrapAngle(psi[(k + 1) % kClampProbes] - psi[k]);
   }
   if (std::abs(unwrapped[kClampProbes]) < kPi<double>) {
     double lo = 0, hi = 0;
@@ -540,7 +539,7 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
       hi = std::max(hi, unwrapped[k]);
     }
     for (const EdgeExtreme& e : extremes) {
-      const double o = unwrapped[e.probe] + std::remainder(e.value - psi[e.probe], kTwoPi);
+      const double o = unwrapped[e.probe] + WrapAngle(e.value - psi[e.probe]);
       lo = std::min(lo, o);
       hi = std::max(hi, o);
     }
@@ -627,7 +626,6 @@ inline std::vector<HorizonMinimum> HorizonMinima(const EllipsoidNdf<double>& ndf
 // feature's width w, the half change of psi over beta* +- d.
 inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f,
                                                       const std::vector<HorizonMinimum>& minima) {
-  constexpr double kTwoPi = 2 * kPi<double>;
   // The ray through the horizon point wi(beta): its half vector's slope
   // s = s0 + L v, v along (cos psi, sin psi).
   auto psi_at = [&](double beta) {
@@ -639,7 +637,7 @@ inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f,
   std::vector<HorizonApproach> out;
   for (const HorizonMinimum& h : minima) {
     const double w =
-        0.5 * std::abs(std::remainder(psi_at(h.beta + h.d) - psi_at(h.beta - h.d), kTwoPi));
+        0.5 * std::abs(WrapAngle(psi_at(h.beta + h.d) - psi_at(h.beta - h.d)));
     out.push_back({psi_at(h.beta), w});
   }
   return out;
