@@ -68,8 +68,14 @@ struct EllipsoidRayPiece {
 // The part of one ray s = s0 + rho e inside the horizon disk.
 class EllipsoidRay {
  public:
-  // The ray at angle psi, cs and sn its cosine and sine.
-  EllipsoidRay(const EllipsoidFrame& f, double psi, double cs, double sn) : f_(f), psi_(psi) {
+  // The ray at angle psi, to be set up by SetUp (or a node evaluator's
+  // SetUpRays, in lanes).
+  EllipsoidRay(const EllipsoidFrame& f, double psi) : f_(f), psi_(psi) {}
+
+  // The ray's geometry, cs and sn the cosine and sine of its angle, and
+  // the scales of the maps towards its horizon ends (RiseWidth).
+  void SetUp(double cs, double sn) {
+    const EllipsoidFrame& f = f_;
     ex_ = f.l11 * cs + f.l12 * sn;
     ey_ = f.l22 * sn;
     ee_ = ex_ * ex_ + ey_ * ey_;
@@ -266,12 +272,10 @@ class EllipsoidRay {
 struct ScalarEllipsoidNodes {
   // The kinks' brackets (EllipsoidKinks), each root PolyRootIn's.
   void SearchRoots(RootTask* tasks, int m) const { InterleavedRootSearch()(tasks, m); }
-  // The cosines and sines of the n rays' angles psi (EllipsoidRay).
-  void SinCos(const double* psi, int n, double* cs, double* sn) const {
-    for (int i = 0; i < n; ++i) {
-      cs[i] = std::cos(psi[i]);
-      sn[i] = std::sin(psi[i]);
-    }
+  // Sets up rays[0..n) (EllipsoidRay::SetUp), the C library's cosines and
+  // sines of their angles.
+  void SetUpRays(EllipsoidRay* rays, int n) const {
+    for (int i = 0; i < n; ++i) rays[i].SetUp(std::cos(rays[i].psi_), std::sin(rays[i].psi_));
   }
   void operator()(const EllipsoidRay* const* rays, const double* a, const double* b, int n,
                   double* k, double* g) const {
@@ -670,17 +674,16 @@ inline const EllipsoidMaterial& EllipsoidMaterialFor(const double (&p)[5],
   return *last;
 }
 
-template <class Nodes>
-AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta_x, double theta_y,
-                                    double theta_z, double mu, double phi, Masking masking,
-                                    double tol, int max_pieces, const Nodes& nodes) {
-  constexpr double kTwoPi = 2 * kPi<double>;
+// The rule's frame for the ellipsoid (widths clamped to [1e-4, 1e4]) seen
+// from (mu, phi): the slope density's peak s0 and its map L, the horizon
+// disk's offset d, Lambda(wo), the rays' tolerance.
+inline EllipsoidFrame MakeEllipsoidFrame(double alpha_x, double alpha_y, double theta_x,
+                                         double theta_y, double theta_z, double mu, double phi,
+                                         Masking masking, double tol) {
   const double ax = std::clamp(alpha_x, 1e-4, 1e4), ay = std::clamp(alpha_y, 1e-4, 1e4);
   EllipsoidFrame f(EllipsoidNdf<double>(ax, ay, theta_x, theta_y, theta_z), mu, phi);
   f.separable = masking == Masking::kSeparable;
   f.clamped = f.ndf.lambda_rho() < 1;
-  const double params[5] = {ax, ay, theta_x, theta_y, theta_z};
-  const EllipsoidMaterial& material = EllipsoidMaterialFor(params, f.ndf);
   f.lambda_o = f.ndf.Lambda(Vec3<double>(f.wx, f.wy, f.wz));
   f.ray_tol = 0.2 * tol;
   // B = A^-T (= S^-1 R); its columns b1, b2, b3.
@@ -710,17 +713,26 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
   f.dy = f.s0y - f.cy;
   // |d|^2 - R^2 = |s0|^2 - 2 s0.c + (|c|^2 - 1 / wo.z^2), the last term -1.
   f.d2_minus_r2 = f.s0x * f.s0x + f.s0y * f.s0y - 2 * (f.s0x * f.cx + f.s0y * f.cy) - 1;
+  return f;
+}
+
+template <class Nodes>
+AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta_x, double theta_y,
+                                    double theta_z, double mu, double phi, Masking masking,
+                                    double tol, int max_pieces, const Nodes& nodes) {
+  constexpr double kTwoPi = 2 * kPi<double>;
+  EllipsoidFrame f = MakeEllipsoidFrame(alpha_x, alpha_y, theta_x, theta_y, theta_z, mu, phi,
+                                        masking, tol);
+  const double params[5] = {f.ndf.alpha_x(), f.ndf.alpha_y(), theta_x, theta_y, theta_z};
+  const EllipsoidMaterial& material = EllipsoidMaterialFor(params, f.ndf);
 
   // The rays of a psi piece, integrated together (IntegrateRays).
   std::vector<EllipsoidRay> batch;
-  std::vector<double> cs, sn;
   batch.reserve(15);
   auto ray_batch = [&](const double* psi, int count, double* value, double* err) {
     batch.clear();
-    cs.resize(count);
-    sn.resize(count);
-    nodes.SinCos(psi, count, cs.data(), sn.data());
-    for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i], cs[i], sn[i]);
+    for (int i = 0; i < count; ++i) batch.emplace_back(f, psi[i]);
+    nodes.SetUpRays(batch.data(), count);
     IntegrateRays(batch.data(), count, nodes, value, err);
   };
   const double ca = f.dx * f.l11,

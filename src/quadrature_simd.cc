@@ -360,6 +360,129 @@ struct SimdAnisoNodes {
   }
 };
 
+// The ellipsoid rule's frame (EllipsoidFrame) in lanes, for the node
+// evaluator and the rays' set-up below.
+struct EllipsoidFrameLanes {
+  using V = hn::Vec<DF64>;
+  V zero, one, two, two_wz, s0x, s0y, cx, cy, wx, wy;
+  V am[3][3];
+  V hx, hy, hz, rho, rho2, omr2, lscale, lambda_o1, g1o, tiny;
+  explicit EllipsoidFrameLanes(const EllipsoidFrame &f) {
+    const DF64 d;
+    zero = hn::Zero(d);
+    one = hn::Set(d, 1.0);
+    two = hn::Set(d, 2.0);
+    two_wz = hn::Set(d, 2 * f.wz);
+    s0x = hn::Set(d, f.s0x);
+    s0y = hn::Set(d, f.s0y);
+    cx = hn::Set(d, f.cx);
+    cy = hn::Set(d, f.cy);
+    wx = hn::Set(d, f.wx);
+    wy = hn::Set(d, f.wy);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.ndf.shape_matrix().m[i][j]);
+    }
+    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
+    hx = hn::Set(d, h_dir.x);
+    hy = hn::Set(d, h_dir.y);
+    hz = hn::Set(d, h_dir.z);
+    const double r = f.ndf.lambda_rho();
+    rho = hn::Set(d, r);
+    rho2 = hn::Set(d, r * r);
+    omr2 = hn::Set(d, (1 - r) * (1 + r));
+    lscale = hn::Set(d, f.ndf.lambda_scale());
+    lambda_o1 = hn::Set(d, 1 + f.lambda_o);
+    g1o = hn::Set(d, 1 / (1 + f.lambda_o));
+    tiny = hn::Set(d, std::numeric_limits<double>::min());
+  }
+};
+
+// A ray's constants in lanes: one ray broadcast (the node evaluator) or a
+// ray per lane (SetUpRays).
+struct EllipsoidRayLanes {
+  hn::Vec<DF64> x_hi, x_lo, omx2_hi, omx2_lo, rho_plus, rho_minus, ex, ey, wz_ee;
+};
+
+// The lower end a horizon crossing, per piece (a bool) or per lane.
+HWY_INLINE hn::Vec<DF64> Pick(bool c, hn::Vec<DF64> a, hn::Vec<DF64> b) { return c ? a : b; }
+HWY_INLINE hn::Vec<DF64> Pick(hn::Mask<DF64> c, hn::Vec<DF64> a, hn::Vec<DF64> b) {
+  return hn::IfThenElse(c, a, b);
+}
+
+// EllipsoidRay::WiAt in lanes at y = x_hi - x, t = x - x_lo: x, sr =
+// sqrt(1 - x^2), wi times a positive factor (w below), sr (1 + s.c), and
+// whether wi is above the horizon (`ok`; WiAt's true).
+// rho = x / sr is never formed: every quantity of WiAt is written over a
+// power of sr (p sr, (1 + s.c) sr, ...), and wi is homogeneous: w = sr^3
+// den_hi den_lo N^2 wi, times sr once more on a ray whose lower end is a
+// horizon crossing. That saves a division per node.
+struct EllipsoidWiLanes {
+  hn::Vec<DF64> x, sr, wix, wiy, wiz, lin;
+  hn::Mask<DF64> ok;
+};
+template <class LoEdge>
+HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes &fr, const EllipsoidRayLanes &r,
+                                        LoEdge lo_edge, hn::Vec<DF64> y, hn::Vec<DF64> t) {
+  using V = hn::Vec<DF64>;
+  EllipsoidWiLanes w;
+  const V zero = fr.zero, two = fr.two;
+  w.x = hn::Sub(r.x_hi, y);
+  const V omx2 = hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, r.x_hi), y), r.omx2_hi),
+                                hn::NegMulAdd(t, hn::MulAdd(two, r.x_lo, t), r.omx2_lo));
+  const hn::Mask<DF64> ok1 = hn::And(hn::Gt(w.x, zero), hn::Gt(omx2, zero));
+  const V omx2s = hn::IfThenElse(ok1, omx2, fr.one);
+  w.sr = hn::Sqrt(omx2s);
+  // rho_+ - rho = num_hi / den_hi and rho - rho_- = num_lo / den_lo as in
+  // WiAt, here with den_hi = dh / sr, den_lo = dl / sr (a crossing at the
+  // lower end) or num_lo = nl / sr.
+  const V num_hi = hn::Mul(y, hn::Sub(hn::Mul(two, r.x_hi), y));
+  const V dh = hn::Mul(hn::Mul(r.omx2_hi, omx2s), hn::MulAdd(w.sr, r.rho_plus, w.x));
+  const V nl = Pick(lo_edge, hn::Mul(t, hn::MulAdd(two, r.x_lo, t)),
+                    hn::NegMulAdd(w.sr, r.rho_minus, w.x));
+  const V dens = Pick(lo_edge,
+                      hn::Mul(dh, hn::Mul(hn::Mul(r.omx2_lo, omx2s), hn::MulAdd(w.sr, r.rho_minus, w.x))),
+                      dh);
+  // sr (p, q) with p = s0x + rho ex, q = s0y + rho ey; sr^2 N^2 and sr (1 +
+  // s.c).
+  const V sp = hn::MulAdd(w.x, r.ex, hn::Mul(w.sr, fr.s0x));
+  const V sq = hn::MulAdd(w.x, r.ey, hn::Mul(w.sr, fr.s0y));
+  const V n2 = hn::MulAdd(sq, sq, hn::MulAdd(sp, sp, omx2s));
+  w.lin = hn::MulAdd(sq, fr.cy, hn::MulAdd(sp, fr.cx, w.sr));
+  // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz (1 +
+  // s.c) / N^2 as in WiAt, times den_hi den_lo N^2 > 0 (no division) and
+  // sr^4: wiz's sr^-1 (num_lo) or sr^2 (den_lo) makes up the rest.
+  const V dn = hn::Mul(dens, n2);
+  w.wiz = hn::Mul(hn::Mul(r.wz_ee, hn::Mul(num_hi, nl)), Pick(lo_edge, hn::Mul(omx2s, omx2s), omx2s));
+  w.ok = hn::And(ok1, hn::And(hn::Gt(w.wiz, zero), hn::Gt(w.lin, zero)));
+  const V kk = hn::Mul(hn::Mul(fr.two_wz, w.lin), dens);
+  w.wix = hn::Neg(hn::MulAdd(kk, sp, hn::Mul(fr.wx, dn)));
+  w.wiy = hn::Neg(hn::MulAdd(kk, sq, hn::Mul(fr.wy, dn)));
+  return w;
+}
+
+// Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda (0 where
+// nn <= 0, the clamp), as the pair wiz_dd = wi.z dd (wi.z taken as 1 where
+// wi is not above the horizon) and nn_scale = max(nn, 0) scale:
+// homogeneous in wi, so the scale of EllipsoidWi's w drops out.
+HWY_INLINE void EllipsoidLambdaParts(const EllipsoidFrameLanes &fr, const EllipsoidWiLanes &w,
+                                     hn::Vec<DF64> *wiz_dd, hn::Vec<DF64> *nn_scale) {
+  using V = hn::Vec<DF64>;
+  const V ax = hn::MulAdd(fr.am[0][2], w.wiz, hn::MulAdd(fr.am[0][1], w.wiy, hn::Mul(fr.am[0][0], w.wix)));
+  const V ay = hn::MulAdd(fr.am[1][2], w.wiz, hn::MulAdd(fr.am[1][1], w.wiy, hn::Mul(fr.am[1][0], w.wix)));
+  const V az = hn::MulAdd(fr.am[2][2], w.wiz, hn::MulAdd(fr.am[2][1], w.wiy, hn::Mul(fr.am[2][0], w.wix)));
+  const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
+  const V ah = hn::MulAdd(az, fr.hz, hn::MulAdd(ay, fr.hy, hn::Mul(ax, fr.hx)));
+  const V px = hn::NegMulAdd(fr.hx, ah, ax), py = hn::NegMulAdd(fr.hy, ah, ay),
+          pz = hn::NegMulAdd(fr.hz, ah, az);
+  const V perp2 = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
+  const hn::Mask<DF64> pos = hn::Gt(ah, fr.zero);
+  const V nn = hn::IfThenElse(pos, hn::NegMulAdd(hn::Mul(fr.omr2, ah), ah, hn::Mul(fr.rho2, perp2)),
+                              hn::NegMulAdd(fr.one, ah, hn::Mul(fr.rho, a_len)));
+  const V dd = hn::IfThenElse(pos, hn::MulAdd(fr.rho, a_len, ah), fr.one);
+  *wiz_dd = hn::Mul(hn::IfThenElse(w.ok, w.wiz, fr.one), dd);
+  *nn_scale = hn::Mul(hn::ZeroIfNegative(nn), fr.lscale);
+}
+
 // One piece of an ellipsoid ray (ellipsoid_albedo_rule.h,
 // ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::At (its
 // half and map chosen per piece; hn::Expm1, 4 ulp, for std::expm1),
@@ -427,48 +550,118 @@ struct SimdEllipsoidNodes {
       for (int i = 0; i < lanes; ++i) *tasks[t0 + i].out = out[i];
     }
   }
-  // ScalarEllipsoidNodes::SinCos with hn::Cos and hn::Sin (3 ulp in
-  // double, against the C library's; |psi| < 4 pi here, in their range).
-  void SinCos(const double *psi, int n, double *cs, double *sn) const {
+  // ScalarEllipsoidNodes::SetUpRays (EllipsoidRay::SetUp) with a ray per
+  // lane: hn::Cos and hn::Sin (3 ulp in double, against the C library's;
+  // |psi| < 4 pi here, in their range), the same steps with both sides of
+  // each branch selected per lane, and the rise widths' probes by
+  // EllipsoidWi and EllipsoidLambdaParts.
+  void SetUpRays(EllipsoidRay *rays, int n) const {
+    if (n == 0) return;
+    using V = hn::Vec<DF64>;
+    using M = hn::Mask<DF64>;
     const DF64 d;
-    const size_t N = hn::Lanes(d);
-    HWY_ALIGN double in[16], out_c[16], out_s[16];
-    for (int i0 = 0; i0 < n; i0 += 16) {
-      const int m = std::min(16, n - i0);
-      std::copy(psi + i0, psi + i0 + m, in);
-      std::fill(in + m, in + 16, 0.0);
-      for (size_t i = 0; i < static_cast<size_t>(m); i += N) {
-        const auto x = hn::Load(d, in + i);
-        hn::Store(hn::Cos(d, x), d, out_c + i);
-        hn::Store(hn::Sin(d, x), d, out_s + i);
+    constexpr size_t kN = hn::MaxLanes(DF64());
+    const EllipsoidFrame &f = rays[0].f_;
+    const EllipsoidFrameLanes fr(f);
+    const V zero = fr.zero, one = fr.one, half = hn::Set(d, 0.5);
+    const V l11 = hn::Set(d, f.l11), l12 = hn::Set(d, f.l12), l22 = hn::Set(d, f.l22);
+    const V dx = hn::Set(d, f.dx), dy = hn::Set(d, f.dy), d2r2 = hn::Set(d, f.d2_minus_r2);
+    const V wz = hn::Set(d, f.wz), probe = hn::Set(d, kLayerProbe);
+    // 0.5 o / scale, scale = 1 + Lambda(wo) (height-correlated) or 1.
+    const V rise_scale = hn::Set(d, 0.5 / (f.separable ? 1.0 : 1 + f.lambda_o));
+    enum Field { kEx, kEy, kEe, kRhoMinus, kRhoPlus, kOmx2Lo, kOmx2Hi, kXLo, kXHi, kLen, kMid,
+                 kCHi, kCLo, kLoEdge, kValid, kFields };
+    HWY_ALIGN double in[kN], out[kFields][kN];
+    for (int i0 = 0; i0 < n; i0 += static_cast<int>(kN)) {
+      const int lanes = std::min(static_cast<int>(kN), n - i0);
+      for (size_t i = 0; i < kN; ++i) in[i] = rays[i0 + std::min(static_cast<int>(i), lanes - 1)].psi_;
+      const V psi = hn::Load(d, in);
+      const V cs = hn::Cos(d, psi), sn = hn::Sin(d, psi);
+      EllipsoidRayLanes r;
+      r.ex = hn::MulAdd(l11, cs, hn::Mul(l12, sn));
+      r.ey = hn::Mul(l22, sn);
+      const V ee = hn::MulAdd(r.ex, r.ex, hn::Mul(r.ey, r.ey));
+      r.wz_ee = hn::Mul(wz, ee);
+      const V de = hn::MulAdd(dx, r.ex, hn::Mul(dy, r.ey));
+      const V disc = hn::NegMulAdd(ee, d2r2, hn::Mul(de, de));
+      const M has_roots = hn::Gt(disc, zero);
+      // The roots of ee rho^2 + 2 de rho + (|d|^2 - R^2), without
+      // cancellation: q = -(de + sign(de) sqrt(disc)).
+      const V root = hn::Sqrt(hn::IfThenElse(has_roots, disc, one));
+      const V q = hn::Neg(hn::Add(de, hn::CopySign(root, de)));
+      const V r1 = hn::Div(q, ee), r2 = hn::Div(d2r2, hn::IfThenElse(has_roots, q, one));
+      r.rho_minus = hn::Min(r1, r2);
+      r.rho_plus = hn::Max(r1, r2);
+      const M ahead = hn::And(has_roots, hn::Gt(r.rho_plus, zero));
+      const M lo_edge = hn::And(ahead, hn::Gt(r.rho_minus, zero));
+      const V lo = hn::ZeroIfNegative(r.rho_minus);
+      r.omx2_lo = hn::Div(one, hn::MulAdd(lo, lo, one));
+      r.omx2_hi = hn::Div(one, hn::MulAdd(r.rho_plus, r.rho_plus, one));
+      r.x_lo = hn::Mul(lo, hn::Sqrt(r.omx2_lo));
+      r.x_hi = hn::Mul(r.rho_plus, hn::Sqrt(r.omx2_hi));
+      const M valid = hn::And(ahead, hn::Gt(r.x_hi, r.x_lo));
+      const V len = hn::Sub(r.x_hi, r.x_lo), mid = hn::Mul(half, len);
+      // EllipsoidRay::RiseWidth: Lambda(wi) probed at kLayerProbe of each
+      // half from its end (0 where the probe fails); the upper one at most
+      // 0.5 omx2_hi / x_hi.
+      const V o_hi = hn::Mul(probe, mid), o_lo = hn::Mul(probe, hn::Sub(len, mid));
+      V c[2];
+      for (int lower = 0; lower < 2; ++lower) {
+        const V o = lower ? o_lo : o_hi;
+        const V y = lower ? hn::Sub(len, o) : o, t = lower ? o : hn::Sub(len, o);
+        const EllipsoidWiLanes w = EllipsoidWi(fr, r, lo_edge, y, t);
+        V wiz_dd, nn_scale;
+        EllipsoidLambdaParts(fr, w, &wiz_dd, &nn_scale);
+        const V lambda = hn::Div(nn_scale, wiz_dd);
+        c[lower] = hn::IfThenElseZero(w.ok, hn::Mul(hn::Mul(rise_scale, o), lambda));
       }
-      std::copy(out_c, out_c + m, cs + i0);
-      std::copy(out_s, out_s + m, sn + i0);
+      const V c_hi = hn::Min(c[0], hn::Div(hn::Mul(half, r.omx2_hi), r.x_hi));
+      const V c_lo = hn::IfThenElseZero(lo_edge, c[1]);
+      hn::Store(r.ex, d, out[kEx]);
+      hn::Store(r.ey, d, out[kEy]);
+      hn::Store(ee, d, out[kEe]);
+      hn::Store(r.rho_minus, d, out[kRhoMinus]);
+      hn::Store(r.rho_plus, d, out[kRhoPlus]);
+      hn::Store(r.omx2_lo, d, out[kOmx2Lo]);
+      hn::Store(r.omx2_hi, d, out[kOmx2Hi]);
+      hn::Store(r.x_lo, d, out[kXLo]);
+      hn::Store(r.x_hi, d, out[kXHi]);
+      hn::Store(len, d, out[kLen]);
+      hn::Store(mid, d, out[kMid]);
+      hn::Store(c_hi, d, out[kCHi]);
+      hn::Store(c_lo, d, out[kCLo]);
+      hn::Store(hn::IfThenElseZero(lo_edge, one), d, out[kLoEdge]);
+      hn::Store(hn::IfThenElseZero(valid, one), d, out[kValid]);
+      for (int i = 0; i < lanes; ++i) {
+        EllipsoidRay &ray = rays[i0 + i];
+        ray.ex_ = out[kEx][i];
+        ray.ey_ = out[kEy][i];
+        ray.ee_ = out[kEe][i];
+        ray.valid_ = out[kValid][i] > 0;
+        if (!ray.valid_) continue;
+        ray.rho_minus_ = out[kRhoMinus][i];
+        ray.rho_plus_ = out[kRhoPlus][i];
+        ray.lo_edge_ = out[kLoEdge][i] > 0;
+        ray.omx2_lo_ = out[kOmx2Lo][i];
+        ray.omx2_hi_ = out[kOmx2Hi][i];
+        ray.x_lo_ = out[kXLo][i];
+        ray.x_hi_ = out[kXHi][i];
+        ray.len_ = out[kLen][i];
+        ray.mid_ = out[kMid][i];
+        ray.c_hi_ = out[kCHi][i];
+        ray.c_lo_ = out[kCLo][i];
+      }
     }
   }
+
   void operator()(const EllipsoidRay *const *rays, const double *a, const double *b, int n,
                   double *k, double *g) const {
     if (n == 0) return;
     using V = hn::Vec<DF64>;
     static const SimdAnisoNodes::Rule rule;
     const EllipsoidFrame &f = rays[0]->f_;  // the same for every ray
+    const EllipsoidFrameLanes fr(f);
     const DF64 d;
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V two_wz = hn::Set(d, 2 * f.wz);
-    const V s0x = hn::Set(d, f.s0x), s0y = hn::Set(d, f.s0y);
-    const V cx = hn::Set(d, f.cx), cy = hn::Set(d, f.cy), wx = hn::Set(d, f.wx),
-            wy = hn::Set(d, f.wy);
-    V am[3][3];
-    for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.ndf.shape_matrix().m[i][j]);
-    }
-    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
-    const V hx = hn::Set(d, h_dir.x), hy = hn::Set(d, h_dir.y), hz = hn::Set(d, h_dir.z);
-    const double rho = f.ndf.lambda_rho();
-    const V rho_v = hn::Set(d, rho), rho2 = hn::Set(d, rho * rho);
-    const V omr2 = hn::Set(d, (1 - rho) * (1 + rho)), lscale = hn::Set(d, f.ndf.lambda_scale());
-    const V lambda_o1 = hn::Set(d, 1 + f.lambda_o), g1o = hn::Set(d, 1 / (1 + f.lambda_o));
-    const V tiny = hn::Set(d, std::numeric_limits<double>::min());
     // The kK vectors of a piece's nodes advance together, stage by stage:
     // each one's dependency chain (an expm1, two square roots and a
     // division deep) is longer than the core can look ahead within one
@@ -476,111 +669,50 @@ struct SimdEllipsoidNodes {
     // them.
     constexpr size_t kN = hn::MaxLanes(DF64());
     constexpr size_t kK = 16 / kN;
-    using M = hn::Mask<DF64>;
     for (int j = 0; j < n; ++j) {
       const EllipsoidRay &ray = *rays[j];
+      EllipsoidRayLanes r;
+      r.x_hi = hn::Set(d, ray.x_hi_);
+      r.x_lo = hn::Set(d, ray.x_lo_);
+      r.omx2_hi = hn::Set(d, ray.omx2_hi_);
+      r.omx2_lo = hn::Set(d, ray.omx2_lo_);
+      r.rho_plus = hn::Set(d, ray.rho_plus_);
+      r.rho_minus = hn::Set(d, ray.rho_minus_);
+      r.ex = hn::Set(d, ray.ex_);
+      r.ey = hn::Set(d, ray.ey_);
+      r.wz_ee = hn::Set(d, f.wz * ray.ee_);
       const V lenv = hn::Set(d, ray.len_);
-      const V x_hi = hn::Set(d, ray.x_hi_), x_lo = hn::Set(d, ray.x_lo_);
-      const V omx2_hi = hn::Set(d, ray.omx2_hi_), omx2_lo = hn::Set(d, ray.omx2_lo_);
-      const V rho_plus = hn::Set(d, ray.rho_plus_), rho_minus = hn::Set(d, ray.rho_minus_);
-      const V ex = hn::Set(d, ray.ex_), ey = hn::Set(d, ray.ey_);
-      const V wz_ee = hn::Set(d, f.wz * ray.ee_);
       const V cv = hn::Set(d, 0.5 * (a[j] + b[j])), hv = hn::Set(d, 0.5 * (b[j] - a[j]));
       // A piece lies in one half of its ray (Layout): its side, and
       // whether that half is mapped, hold for all its nodes.
       const bool upper = a[j] + b[j] >= 0;
       const double c_piece = upper ? ray.c_hi_ : ray.c_lo_;
       const bool mapped = c_piece > 0;
-      const bool lo_edge = ray.lo_edge_;
       const V c = hn::Set(d, c_piece);
-      V off[kK], y[kK], t[kK], x[kK], omx2s[kK], sr[kK];
-      M ok1[kK];
+      V off[kK];
       for (size_t u = 0; u < kK; ++u) {
         const V tau = hn::Abs(hn::MulAdd(hv, hn::Load(d, rule.x + u * kN), cv));
         off[u] = mapped ? hn::Mul(c, hn::Expm1(d, tau)) : tau;
       }
+      EllipsoidWiLanes w[kK];
       for (size_t u = 0; u < kK; ++u) {
-        y[u] = upper ? off[u] : hn::Sub(lenv, off[u]);  // x_hi - x
-        t[u] = upper ? hn::Sub(lenv, off[u]) : off[u];  // x - x_lo
-        x[u] = hn::Sub(x_hi, y[u]);
-        const V omx2 = hn::IfThenElse(
-            hn::Le(y[u], t[u]), hn::MulAdd(y[u], hn::Sub(hn::Mul(two, x_hi), y[u]), omx2_hi),
-            hn::NegMulAdd(t[u], hn::MulAdd(two, x_lo, t[u]), omx2_lo));
-        ok1[u] = hn::And(hn::Gt(x[u], zero), hn::Gt(omx2, zero));
-        omx2s[u] = hn::IfThenElse(ok1[u], omx2, one);
-        // rho = x / sr, sr = sqrt(1 - x^2), is never formed: every quantity
-        // of EllipsoidRay::WiAt below is written over a power of sr (p sr,
-        // (1 + s.c) sr, ...), and wi is homogeneous: w = sr^3 wi, times sr
-        // once more on a ray whose lower end is a horizon crossing. That
-        // saves a division per node.
-        sr[u] = hn::Sqrt(omx2s[u]);
+        const V y = upper ? off[u] : hn::Sub(lenv, off[u]);  // x_hi - x
+        const V t = upper ? hn::Sub(lenv, off[u]) : off[u];  // x - x_lo
+        w[u] = EllipsoidWi(fr, r, ray.lo_edge_, y, t);
       }
-      V wix[kK], wiy[kK], wiz[kK], lin[kK];
-      M ok[kK];
+      V wiz_dd[kK], nn_scale[kK];
+      for (size_t u = 0; u < kK; ++u) EllipsoidLambdaParts(fr, w[u], &wiz_dd[u], &nn_scale[u]);
+      V ks = fr.zero, gsum = fr.zero;
       for (size_t u = 0; u < kK; ++u) {
-        // rho_+ - rho = num_hi / den_hi and rho - rho_- = num_lo / den_lo
-        // as in EllipsoidRay::WiAt, here with den_hi = dh / sr, den_lo =
-        // dl / sr (a crossing at the lower end) or num_lo = nl / sr.
-        const V num_hi = hn::Mul(y[u], hn::Sub(hn::Mul(two, x_hi), y[u]));
-        const V dh = hn::Mul(hn::Mul(omx2_hi, omx2s[u]), hn::MulAdd(sr[u], rho_plus, x[u]));
-        const V nl = lo_edge ? hn::Mul(t[u], hn::MulAdd(two, x_lo, t[u]))
-                             : hn::NegMulAdd(sr[u], rho_minus, x[u]);
-        const V dens = lo_edge ? hn::Mul(dh, hn::Mul(hn::Mul(omx2_lo, omx2s[u]),
-                                                     hn::MulAdd(sr[u], rho_minus, x[u])))
-                               : dh;
-        // sr (p, q) with p = s0x + rho ex, q = s0y + rho ey; sr^2 N^2 and
-        // sr (1 + s.c).
-        const V p = hn::MulAdd(x[u], ex, hn::Mul(sr[u], s0x));
-        const V q = hn::MulAdd(x[u], ey, hn::Mul(sr[u], s0y));
-        const V n2 = hn::MulAdd(q, q, hn::MulAdd(p, p, omx2s[u]));
-        lin[u] = hn::MulAdd(q, cy, hn::MulAdd(p, cx, sr[u]));
-        // wi.z = wz |e|^2 (rho_+ - rho) (rho - rho_-) / N^2 and k = 2 wz
-        // (1 + s.c) / N^2 as in EllipsoidRay::WiAt, wi times den_hi den_lo
-        // N^2 > 0 (no division: Lambda is homogeneous of degree 0 in wi,
-        // and so is G2 below in (wi.z dd, nn)) and then times sr^4: wiz's
-        // sr^-1 (num_lo) or sr^2 (den_lo) makes up the rest.
-        const V dn = hn::Mul(dens, n2);
-        wiz[u] = hn::Mul(hn::Mul(wz_ee, hn::Mul(num_hi, nl)),
-                         lo_edge ? hn::Mul(omx2s[u], omx2s[u]) : omx2s[u]);
-        ok[u] = hn::And(ok1[u], hn::And(hn::Gt(wiz[u], zero), hn::Gt(lin[u], zero)));
-        const V kk = hn::Mul(hn::Mul(two_wz, lin[u]), dens);
-        wix[u] = hn::Neg(hn::MulAdd(kk, p, hn::Mul(wx, dn)));
-        wiy[u] = hn::Neg(hn::MulAdd(kk, q, hn::Mul(wy, dn)));
-      }
-      // Lambda(wi) = (nn / dd) scale / wi.z as in EllipsoidNdf::Lambda (0
-      // where nn <= 0, the clamp), and G2 from it with one division: 1 / (1
-      // + Lambda_o + Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd + nn
-      // scale), which also takes lin's sr.
-      V a_len[kK], ah[kK], perp2[kK];
-      for (size_t u = 0; u < kK; ++u) {
-        const V ax =
-            hn::MulAdd(am[0][2], wiz[u], hn::MulAdd(am[0][1], wiy[u], hn::Mul(am[0][0], wix[u])));
-        const V ay =
-            hn::MulAdd(am[1][2], wiz[u], hn::MulAdd(am[1][1], wiy[u], hn::Mul(am[1][0], wix[u])));
-        const V az =
-            hn::MulAdd(am[2][2], wiz[u], hn::MulAdd(am[2][1], wiy[u], hn::Mul(am[2][0], wix[u])));
-        a_len[u] = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
-        ah[u] = hn::MulAdd(az, hz, hn::MulAdd(ay, hy, hn::Mul(ax, hx)));
-        const V px = hn::NegMulAdd(hx, ah[u], ax), py = hn::NegMulAdd(hy, ah[u], ay),
-                pz = hn::NegMulAdd(hz, ah[u], az);
-        perp2[u] = hn::MulAdd(pz, pz, hn::MulAdd(py, py, hn::Mul(px, px)));
-      }
-      V ks = zero, gsum = zero;
-      for (size_t u = 0; u < kK; ++u) {
-        const M pos = hn::Gt(ah[u], zero);
-        const V nn =
-            hn::IfThenElse(pos, hn::NegMulAdd(hn::Mul(omr2, ah[u]), ah[u], hn::Mul(rho2, perp2[u])),
-                           hn::NegMulAdd(one, ah[u], hn::Mul(rho_v, a_len[u])));
-        const V dd = hn::IfThenElse(pos, hn::MulAdd(rho_v, a_len[u], ah[u]), one);
-        const V wiz_dd = hn::Mul(hn::IfThenElse(ok[u], wiz[u], one), dd);
-        const V nn_scale = hn::Mul(hn::ZeroIfNegative(nn), lscale);
-        // G2 (1 + s.c) 2 x; (kept off 0 / 0 where wi.z dd underflows).
-        const V num = hn::Mul(hn::Mul(wiz_dd, lin[u]), hn::Mul(two, x[u]));
-        const V den = f.separable ? hn::Mul(sr[u], hn::Add(wiz_dd, nn_scale))
-                                  : hn::Mul(sr[u], hn::MulAdd(lambda_o1, wiz_dd, nn_scale));
-        const V f2 = hn::Div(f.separable ? hn::Mul(g1o, num) : num, hn::Max(den, tiny));
+        // G2 (1 + s.c) 2 x with one division: 1 / (1 + Lambda_o +
+        // Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd + nn scale), which
+        // also takes lin's sr; (kept off 0 / 0 where wi.z dd underflows).
+        const V num = hn::Mul(hn::Mul(wiz_dd[u], w[u].lin), hn::Mul(fr.two, w[u].x));
+        const V den = f.separable ? hn::Mul(w[u].sr, hn::Add(wiz_dd[u], nn_scale[u]))
+                                  : hn::Mul(w[u].sr, hn::MulAdd(fr.lambda_o1, wiz_dd[u], nn_scale[u]));
+        const V f2 = hn::Div(f.separable ? hn::Mul(fr.g1o, num) : num, hn::Max(den, fr.tiny));
         // Times the map's Jacobian, y + c or t + c.
-        const V v = hn::IfThenElseZero(ok[u], mapped ? hn::Mul(f2, hn::Add(off[u], c)) : f2);
+        const V v = hn::IfThenElseZero(w[u].ok, mapped ? hn::Mul(f2, hn::Add(off[u], c)) : f2);
         ks = hn::MulAdd(hn::Load(d, rule.wk + u * kN), v, ks);
         gsum = hn::MulAdd(hn::Load(d, rule.wg + u * kN), v, gsum);
       }
@@ -589,6 +721,8 @@ struct SimdEllipsoidNodes {
     }
   }
 };
+
+void SetUpEllipsoidRaysLanes(EllipsoidRay *rays, int n) { SimdEllipsoidNodes().SetUpRays(rays, n); }
 
 void PolyRootsLanes(PolyRootsProblem *problems, int m) {
   PolyRootsInBatch(problems, m,
@@ -941,6 +1075,11 @@ namespace brdfbake {
 HWY_EXPORT(SelLobeTexel);
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol) {
   return HWY_DYNAMIC_DISPATCH(SelLobeTexel)(alpha_x, alpha_y, tol);
+}
+
+HWY_EXPORT(SetUpEllipsoidRaysLanes);
+void SimdSetUpEllipsoidRays(EllipsoidRay* rays, int n) {
+  HWY_DYNAMIC_DISPATCH(SetUpEllipsoidRaysLanes)(rays, n);
 }
 
 HWY_EXPORT(PolyRootsLanes);

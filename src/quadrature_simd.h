@@ -32,6 +32,10 @@ AzimuthalResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, do
 
 // SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);
+class EllipsoidRay;
+// EllipsoidRay::SetUp for rays[0..n) (one frame), a ray per lane, as the
+// ellipsoid rule sets its rays up.
+void SimdSetUpEllipsoidRays(EllipsoidRay* rays, int n);
 // PolyRootsInBatch (poly_roots.h) with the brackets searched in lanes, as
 // the ellipsoid's kinks are: each root to its problem's tolerance.
 void SimdPolyRootsInBatch(PolyRootsProblem* problems, int m);
