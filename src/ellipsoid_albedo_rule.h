@@ -103,6 +103,10 @@ class EllipsoidRay {
     // end: the map's scale is kept below its distance too.
     c_hi_ = std::min(RiseWidth(mid_, false), 0.5 * omx2_hi_ / x_hi_);
     if (lo_edge_) c_lo_ = RiseWidth(len_ - mid_, true);
+    // The halves' spans in their coordinates (Layout).
+    span_hi_ = c_hi_ > 0 ? std::log1p(mid_ / c_hi_) : mid_;
+    span_lo_ = c_lo_ > 0 ? std::log1p((len_ - mid_) / c_lo_) : len_ - mid_;
+    SetUpKinkQuartic();
   }
 
   // The ray's point at the signed piece coordinate o (Layout): its
@@ -128,8 +132,7 @@ class EllipsoidRay {
     // tau (y or t = c expm1(tau), RiseWidth) towards a horizon end, else
     // the offset itself.
     int n = 0;
-    auto half = [&](double top, double c, bool lower) {
-      const double span = c > 0 ? std::log1p(top / c) : top;
+    auto half = [&](double span, double c, bool lower) {
       const int m = c > 0 ? std::clamp(static_cast<int>(std::ceil(span / kMappedPieceWidth)), 1,
                                        kMaxHalfPieces)
                           : 1;
@@ -139,8 +142,8 @@ class EllipsoidRay {
         b[n++] = lower ? -u0 : u1;
       }
     };
-    half(mid_, c_hi_, false);
-    half(len_ - mid_, c_lo_, true);
+    half(span_hi_, c_hi_, false);
+    half(span_lo_, c_lo_, true);
     // Where G1(wi)'s clamp turns on or off along the ray, G2 has a kink:
     // the piece holding it is split there.
     for (int i = 0; i < n_kinks; ++i) {
@@ -184,9 +187,10 @@ class EllipsoidRay {
 
   // Where G1(wi)'s clamp turns on or off along the ray: the rho in
   // (max(0, rho_-), rho_+) where it does are the roots t = rho / rho_+ in
-  // (max(0, rho_-) / rho_+, 1) of the quartic *q (set up here, solved by
-  // EllipsoidKinks) with a.h > 0, a.h = ah[0] + ah[1] t + ah[2] t^2;
-  // false where the ray cannot meet the clamp's edge. With n = (-p, -q, 1)
+  // (kink_lo, 1) of the quartic kink_c (set up here, solved by
+  // EllipsoidKinks) with a.h > 0, a.h = kink_ah[0] + kink_ah[1] t +
+  // kink_ah[2] t^2; kinks false where the ray cannot meet the clamp's
+  // edge. With n = (-p, -q, 1)
   // and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic in rho, so
   // a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h
   // (ellipsoid.h, ClampMargin) is a root of the quartic
@@ -194,12 +198,14 @@ class EllipsoidRay {
   // with a.h > 0: all of them, however narrow the clamped stretch of the
   // ray. (A kink off by d in t moves the integral by O(d^2); the roots
   // are found to 1e-12.)
-  bool KinkQuartic(PolyRootsProblem* q, double* ah) const {
-    if (!valid_) return false;
+  void SetUpKinkQuartic() {
+    kinks_ = false;
+    if (!valid_) return;
     const EllipsoidFrame& f = f_;
     constexpr double kTwoPi = 2 * kPi<double>;
     const double from0 = psi_ - f.kink_psi0 - kTwoPi * std::floor((psi_ - f.kink_psi0) / kTwoPi);
-    if (from0 > f.kink_psi_range) return false;
+    if (from0 > f.kink_psi_range) return;
+    kinks_ = true;
     const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y, l1 = -(f.wx * ex_ + f.wy * ey_);
     const Vec3<double> n0(-f.s0x, -f.s0y, 1), n1(-ex_, -ey_, 0), wo(f.wx, f.wy, f.wz);
     const double m0 = 1 + f.s0x * f.s0x + f.s0y * f.s0y, m1 = 2 * (f.s0x * ex_ + f.s0y * ey_);
@@ -213,18 +219,16 @@ class EllipsoidRay {
     Vec3<double> ap[3];
     for (int k = 0; k < 3; ++k) {
       const Vec3<double> a = f.ndf.shape_matrix() * w[k];
-      ah[k] = Dot(a, h);
-      ap[k] = a - h * ah[k];
+      kink_ah_[k] = Dot(a, h);
+      ap[k] = a - h * kink_ah_[k];
     }
-    std::fill(q->c, q->c + 5, 0.0);
+    std::fill(kink_c_, kink_c_ + 5, 0.0);
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) q->c[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * ah[i] * ah[j];
+      for (int j = 0; j < 3; ++j) {
+        kink_c_[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * kink_ah_[i] * kink_ah_[j];
+      }
     }
-    q->n = 4;
-    q->lo = std::max(0.0, rho_minus_) / sc;
-    q->hi = 1.0;
-    q->tol = 1e-12;
-    return true;
+    kink_lo_ = std::max(0.0, rho_minus_) / sc;
   }
 
   // The node evaluators (ScalarEllipsoidNodes, quadrature_simd.cc) read these.
@@ -266,6 +270,9 @@ class EllipsoidRay {
   double rho_minus_ = 0, rho_plus_ = 0, x_lo_ = 0, x_hi_ = 0, omx2_lo_ = 1, omx2_hi_ = 1;
   double len_ = 0, mid_ = 0;    // x_hi - x_lo, and where the halves meet
   double c_hi_ = 0, c_lo_ = 0;  // RiseWidth of the upper and lower half (0: no map)
+  double span_hi_ = 0, span_lo_ = 0;  // log1p(half / c), or the half where c = 0
+  bool kinks_ = false;                // whether the ray can meet the clamp's edge
+  double kink_c_[5] = {0, 0, 0, 0, 0}, kink_ah_[3] = {0, 0, 0}, kink_lo_ = 0;
   bool lo_edge_ = false, valid_ = false;
 };
 
@@ -295,7 +302,7 @@ struct ScalarEllipsoidNodes {
   }
 };
 
-// The kinks of rays[0..count) (EllipsoidRay::KinkQuartic), ascending in
+// The kinks of rays[0..count) (EllipsoidRay::SetUpKinkQuartic), ascending in
 // rho: kinks[r][0..n_kinks[r]). The quartics' roots are found together
 // (PolyRootsInBatch), their brackets searched by nodes.SearchRoots.
 template <class Nodes>
@@ -312,7 +319,16 @@ void EllipsoidKinks(const EllipsoidRay* rays, int count, const Nodes& nodes,
   int m = 0;
   for (int r = 0; r < count; ++r) {
     n_kinks[r] = 0;
-    if (rays[r].KinkQuartic(&problems[m], quartics[m].ah)) quartics[m++].ray = r;
+    const EllipsoidRay& ray = rays[r];
+    if (!ray.kinks_) continue;
+    PolyRootsProblem& q = problems[m];
+    std::copy(ray.kink_c_, ray.kink_c_ + 5, q.c);
+    q.n = 4;
+    q.lo = ray.kink_lo_;
+    q.hi = 1.0;
+    q.tol = 1e-12;  // (a kink off by d in t moves the integral by O(d^2))
+    std::copy(ray.kink_ah_, ray.kink_ah_ + 3, quartics[m].ah);
+    quartics[m++].ray = r;
   }
   PolyRootsInBatch(problems.data(), m,
                    [&](RootTask* tasks, int n) { nodes.SearchRoots(tasks, n); });

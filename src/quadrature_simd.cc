@@ -570,7 +570,22 @@ struct SimdEllipsoidNodes {
     // 0.5 o / scale, scale = 1 + Lambda(wo) (height-correlated) or 1.
     const V rise_scale = hn::Set(d, 0.5 / (f.separable ? 1.0 : 1 + f.lambda_o));
     enum Field { kEx, kEy, kEe, kRhoMinus, kRhoPlus, kOmx2Lo, kOmx2Hi, kXLo, kXHi, kLen, kMid,
-                 kCHi, kCLo, kLoEdge, kValid, kFields };
+                 kCHi, kCLo, kLoEdge, kValid, kSpanHi, kSpanLo, kKinks, kKinkC, kKinkAh = kKinkC + 5,
+                 kKinkLo = kKinkAh + 3, kFields };
+    // EllipsoidRay::SetUpKinkQuartic's constants: w[0], l0, m0.
+    constexpr double kTwoPi = 2 * kPi<double>;
+    const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y;
+    const double m0 = 1 + f.s0x * f.s0x + f.s0y * f.s0y;
+    const Vec3<double> n0(-f.s0x, -f.s0y, 1), wo_d(f.wx, f.wy, f.wz);
+    const Vec3<double> w0 = n0 * (2 * l0) - wo_d * m0;
+    const Vec3<double> a0 = f.ndf.shape_matrix() * w0;
+    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
+    const double ah0 = Dot(a0, h_dir);
+    const Vec3<double> ap0 = a0 - h_dir * ah0;
+    const double rc = f.ndf.lambda_rho();
+    const V rc2 = hn::Set(d, rc * rc), omr2 = hn::Set(d, (1 - rc) * (1 + rc));
+    const V psi0 = hn::Set(d, f.kink_psi0), psi_range = hn::Set(d, f.kink_psi_range);
+    const V two_pi = hn::Set(d, kTwoPi), inv_two_pi = hn::Set(d, 1 / kTwoPi);
     HWY_ALIGN double in[kN], out[kFields][kN];
     for (int i0 = 0; i0 < n; i0 += static_cast<int>(kN)) {
       const int lanes = std::min(static_cast<int>(kN), n - i0);
@@ -632,6 +647,64 @@ struct SimdEllipsoidNodes {
       hn::Store(c_lo, d, out[kCLo]);
       hn::Store(hn::IfThenElseZero(lo_edge, one), d, out[kLoEdge]);
       hn::Store(hn::IfThenElseZero(valid, one), d, out[kValid]);
+      // The halves' spans (EllipsoidRay::SetUp): hn::Log1p, 2 ulp.
+      const V span_hi = hn::IfThenElse(
+          hn::Gt(c_hi, zero), hn::Log1p(d, hn::Div(mid, hn::IfThenElse(hn::Gt(c_hi, zero), c_hi, one))),
+          mid);
+      const V lower_half = hn::Sub(len, mid);
+      const V span_lo = hn::IfThenElse(
+          hn::Gt(c_lo, zero),
+          hn::Log1p(d, hn::Div(lower_half, hn::IfThenElse(hn::Gt(c_lo, zero), c_lo, one))),
+          lower_half);
+      hn::Store(span_hi, d, out[kSpanHi]);
+      hn::Store(span_lo, d, out[kSpanLo]);
+      // EllipsoidRay::SetUpKinkQuartic in lanes.
+      const V from0 = hn::NegMulAdd(two_pi, hn::Floor(hn::Mul(hn::Sub(psi, psi0), inv_two_pi)),
+                                    hn::Sub(psi, psi0));
+      const M kinks = hn::And(valid, hn::Le(from0, psi_range));
+      hn::Store(hn::IfThenElseZero(kinks, one), d, out[kKinks]);
+      {
+        const V l1 = hn::Neg(hn::MulAdd(fr.wx, r.ex, hn::Mul(fr.wy, r.ey)));
+        const V m1 = hn::Mul(fr.two, hn::MulAdd(fr.s0x, r.ex, hn::Mul(fr.s0y, r.ey)));
+        const V sc = r.rho_plus, sc2 = hn::Mul(sc, sc);
+        const V l0v = hn::Set(d, l0);
+        // w1 = (n1 l0 + n0 l1) 2 sc - wo m1 sc, w2 = (n1 2 l1 - wo ee) sc^2,
+        // n1 = (-ex, -ey, 0).
+        const V two_sc = hn::Mul(fr.two, sc), m1sc = hn::Mul(m1, sc);
+        V w[3][3];
+        w[1][0] = hn::NegMulAdd(fr.wx, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ex, l0v, hn::Mul(hn::Neg(fr.s0x), l1))));
+        w[1][1] = hn::NegMulAdd(fr.wy, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ey, l0v, hn::Mul(hn::Neg(fr.s0y), l1))));
+        w[1][2] = hn::NegMulAdd(wz, m1sc, hn::Mul(two_sc, l1));
+        const V two_l1 = hn::Mul(fr.two, l1);
+        w[2][0] = hn::Mul(sc2, hn::NegMulAdd(fr.wx, ee, hn::Mul(hn::Neg(r.ex), two_l1)));
+        w[2][1] = hn::Mul(sc2, hn::NegMulAdd(fr.wy, ee, hn::Mul(hn::Neg(r.ey), two_l1)));
+        w[2][2] = hn::Mul(sc2, hn::Neg(hn::Mul(wz, ee)));
+        V ah[3], ap[3][3];
+        ah[0] = hn::Set(d, ah0);
+        for (int i = 0; i < 3; ++i) ap[0][i] = hn::Set(d, ap0[i]);
+        for (int k = 1; k < 3; ++k) {
+          V a[3];
+          for (int i = 0; i < 3; ++i) {
+            a[i] = hn::MulAdd(fr.am[i][2], w[k][2],
+                              hn::MulAdd(fr.am[i][1], w[k][1], hn::Mul(fr.am[i][0], w[k][0])));
+          }
+          ah[k] = hn::MulAdd(a[2], fr.hz, hn::MulAdd(a[1], fr.hy, hn::Mul(a[0], fr.hx)));
+          ap[k][0] = hn::NegMulAdd(fr.hx, ah[k], a[0]);
+          ap[k][1] = hn::NegMulAdd(fr.hy, ah[k], a[1]);
+          ap[k][2] = hn::NegMulAdd(fr.hz, ah[k], a[2]);
+        }
+        V c[5] = {zero, zero, zero, zero, zero};
+        for (int i = 0; i < 3; ++i) {
+          for (int j = 0; j < 3; ++j) {
+            const V dot = hn::MulAdd(ap[i][2], ap[j][2],
+                                     hn::MulAdd(ap[i][1], ap[j][1], hn::Mul(ap[i][0], ap[j][0])));
+            c[i + j] = hn::Add(c[i + j], hn::MulSub(rc2, dot, hn::Mul(omr2, hn::Mul(ah[i], ah[j]))));
+          }
+        }
+        for (int i = 0; i < 5; ++i) hn::Store(c[i], d, out[kKinkC + i]);
+        for (int i = 0; i < 3; ++i) hn::Store(ah[i], d, out[kKinkAh + i]);
+        hn::Store(hn::Div(hn::ZeroIfNegative(r.rho_minus), sc), d, out[kKinkLo]);
+      }
       for (int i = 0; i < lanes; ++i) {
         EllipsoidRay &ray = rays[i0 + i];
         ray.ex_ = out[kEx][i];
@@ -650,6 +723,12 @@ struct SimdEllipsoidNodes {
         ray.mid_ = out[kMid][i];
         ray.c_hi_ = out[kCHi][i];
         ray.c_lo_ = out[kCLo][i];
+        ray.span_hi_ = out[kSpanHi][i];
+        ray.span_lo_ = out[kSpanLo][i];
+        ray.kinks_ = out[kKinks][i] > 0;
+        for (int c = 0; c < 5; ++c) ray.kink_c_[c] = out[kKinkC + c][i];
+        for (int c = 0; c < 3; ++c) ray.kink_ah_[c] = out[kKinkAh + c][i];
+        ray.kink_lo_ = out[kKinkLo][i];
       }
     }
   }

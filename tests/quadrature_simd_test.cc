@@ -281,8 +281,10 @@ TEST(QuadratureSimdTest, PolyRootsInLanesAgreeWithTheScalarSearchOnEveryTarget) 
 // of the C library's, so the fields agree to that rounding, amplified where
 // they cancel: the roots rho_+- near a ray tangent to the horizon disk
 // (disc small), the chord's length x_hi - x_lo of a short chord, omx2 at
-// grazing (rho_+ large). Measured: 1.3e-13 relative at most, for the
-// geometry and for the maps' scales (a probe of Lambda); bound 1e-12.
+// grazing (rho_+ large). Measured: 1.6e-13 relative at most for the
+// geometry (with the halves' spans), 1.3e-13 for the maps' scales (a probe
+// of Lambda), 2.5e-13 for the kinks' quartics relative to their largest
+// coefficient; bound 1e-12.
 TEST(QuadratureSimdTest, EllipsoidRaysSetUpInLanesAgreeWithTheScalarOnEveryTarget) {
   const double materials[][5] = {{0.3, 0.6, 0.35, 0, 0.52},
                                  {0.3, 0.6, 0, 0, 0},
@@ -291,7 +293,7 @@ TEST(QuadratureSimdTest, EllipsoidRaysSetUpInLanesAgreeWithTheScalarOnEveryTarge
   const std::vector<std::string> targets = AvailableTargets();
   for (size_t k = 0; k < targets.size(); ++k) {
     ForceTarget(targets[k]);
-    double worst_geometry = 0, worst_scale = 0;
+    double worst_geometry = 0, worst_scale = 0, worst_quartic = 0;
     int valid_rays = 0;
     for (const auto& m : materials) {
       for (double mu : {1e-6, 0.05, 0.4, 0.9, 1.0}) {
@@ -328,6 +330,22 @@ TEST(QuadratureSimdTest, EllipsoidRaysSetUpInLanesAgreeWithTheScalarOnEveryTarge
               worst_scale = std::max(worst_scale, rel(g.c_lo_, w.c_lo_));
             }
             worst_scale = std::max(worst_scale, rel(g.c_hi_, w.c_hi_));
+            worst_geometry = std::max(worst_geometry, rel(g.span_hi_, w.span_hi_));
+            worst_geometry = std::max(worst_geometry, rel(g.span_lo_, w.span_lo_));
+            // The kinks' quartic: its coefficients against their largest.
+            ASSERT_EQ(g.kinks_, w.kinks_);
+            if (!w.kinks_) continue;
+            double big = 0, big_ah = 0;
+            for (double c : w.kink_c_) big = std::max(big, std::abs(c));
+            for (double c : w.kink_ah_) big_ah = std::max(big_ah, std::abs(c));
+            for (int c = 0; c < 5; ++c) {
+              worst_quartic = std::max(worst_quartic, std::abs(g.kink_c_[c] - w.kink_c_[c]) / big);
+            }
+            for (int c = 0; c < 3; ++c) {
+              worst_quartic =
+                  std::max(worst_quartic, std::abs(g.kink_ah_[c] - w.kink_ah_[c]) / big_ah);
+            }
+            worst_geometry = std::max(worst_geometry, rel(g.kink_lo_, w.kink_lo_));
           }
         }
       }
@@ -335,8 +353,11 @@ TEST(QuadratureSimdTest, EllipsoidRaysSetUpInLanesAgreeWithTheScalarOnEveryTarge
     EXPECT_GT(valid_rays, 1000);
     EXPECT_LE(worst_geometry, 1e-12) << targets[k];
     EXPECT_LE(worst_scale, 1e-12) << targets[k];
-    std::printf("%s: ellipsoid rays in lanes: geometry within %.3g, maps' scales within %.3g\n",
-                targets[k].c_str(), worst_geometry, worst_scale);
+    EXPECT_LE(worst_quartic, 1e-12) << targets[k];
+    std::printf(
+        "%s: ellipsoid rays in lanes: geometry within %.3g, maps' scales within %.3g, kinks' "
+        "quartics within %.3g\n",
+        targets[k].c_str(), worst_geometry, worst_scale, worst_quartic);
   }
   ForceTarget("best");
 }
