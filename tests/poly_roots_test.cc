@@ -8,22 +8,10 @@
 #include <random>
 #include <vector>
 
+#include "poly_test_util.h"
+
 namespace brdfbake {
 namespace {
-
-// Coefficients of prod (t - r_i), lowest degree first.
-std::vector<double> FromRoots(const std::vector<double>& r) {
-  std::vector<double> c = {1};
-  for (double x : r) {
-    std::vector<double> n(c.size() + 1, 0.0);
-    for (size_t k = 0; k < c.size(); ++k) {
-      n[k + 1] += c[k];
-      n[k] -= x * c[k];
-    }
-    c = n;
-  }
-  return c;
-}
 
 TEST(PolyRootsTest, FindsEverySignChangeInTheInterval) {
   struct Case {
@@ -85,25 +73,10 @@ TEST(PolyRootsTest, ConstantAndVanishingLeadingTerms) {
 // and quadratics stored as quartics, constants, in batches of 1 to 40.
 TEST(PolyRootsTest, BatchMatchesOneByOneBitForBit) {
   std::mt19937_64 rng(12);
-  std::uniform_real_distribution<double> u(-0.2, 1.2);
-  std::uniform_int_distribution<int> degree(0, 4);
   int roots_seen = 0;
   for (int batch = 1; batch <= 40; ++batch) {
     std::vector<PolyRootsProblem> problems(batch);
-    for (PolyRootsProblem& q : problems) {
-      const int deg = degree(rng);
-      std::vector<double> r;
-      for (int k = 0; k < deg; ++k) r.push_back(u(rng));
-      if (deg >= 2 && u(rng) < 0.2) r[1] = r[0] + 1e-6 * u(rng);
-      std::vector<double> c = deg == 0 ? std::vector<double>{u(rng) + 2} : FromRoots(r);
-      const double scale = u(rng) < 0.5 ? -3e-5 : 7e3;
-      std::fill(q.c, q.c + 5, 0.0);
-      for (size_t k = 0; k < c.size(); ++k) q.c[k] = scale * c[k];
-      q.n = 4;
-      q.lo = 0.05 * u(rng);
-      q.hi = 1 - 0.05 * u(rng);
-      q.tol = u(rng) < 0.5 ? 1e-12 : 1e-9;
-    }
+    for (PolyRootsProblem& q : problems) q = RandomRootsProblem(rng, 0);
     PolyRootsInBatch(problems.data(), batch);
     for (const PolyRootsProblem& q : problems) {
       double want[kMaxPolyDegree];

@@ -22,6 +22,7 @@
 #include "aniso_ggx.h"
 #include "ellipsoid_albedo.h"
 #include "ellipsoid_albedo_rule.h"
+#include "poly_test_util.h"
 #include "quadrature_simd.h"
 
 namespace brdfbake {
@@ -224,37 +225,11 @@ TEST(QuadratureSimdTest, PolyRootsInLanesAgreeWithTheScalarSearchOnEveryTarget) 
   for (size_t k = 0; k < targets.size(); ++k) {
     ForceTarget(targets[k]);
     std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> u(-0.2, 1.2);
-    std::uniform_int_distribution<int> degree(0, 4);
     double worst = 0;
     int roots_seen = 0;
     for (int batch = 1; batch <= 40; ++batch) {
       std::vector<PolyRootsProblem> problems(batch);
-      for (PolyRootsProblem& q : problems) {
-        const int deg = degree(rng);
-        std::vector<double> r;
-        while (static_cast<int>(r.size()) < deg) {
-          const double x = u(rng);
-          bool apart = true;
-          for (double y : r) apart = apart && std::abs(x - y) > 1e-3;
-          if (apart) r.push_back(x);
-        }
-        std::vector<double> c = {u(rng) < 0.5 ? -3e-5 : 7e3};
-        for (double x : r) {
-          std::vector<double> n(c.size() + 1, 0.0);
-          for (size_t i = 0; i < c.size(); ++i) {
-            n[i + 1] += c[i];
-            n[i] -= x * c[i];
-          }
-          c = n;
-        }
-        std::fill(q.c, q.c + 5, 0.0);
-        std::copy(c.begin(), c.end(), q.c);
-        q.n = 4;
-        q.lo = 0.05 * u(rng);
-        q.hi = 1 - 0.05 * u(rng);
-        q.tol = u(rng) < 0.5 ? 1e-12 : 1e-9;
-      }
+      for (PolyRootsProblem& q : problems) q = RandomRootsProblem(rng, 1e-3);
       SimdPolyRootsInBatch(problems.data(), batch);
       for (const PolyRootsProblem& q : problems) {
         double want[kMaxPolyDegree];
