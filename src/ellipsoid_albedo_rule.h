@@ -188,11 +188,10 @@ class EllipsoidRay {
   // Where G1(wi)'s clamp turns on or off along the ray: the rho in
   // (max(0, rho_-), rho_+) where it does are the roots t = rho / rho_+ in
   // (kink_lo, 1) of the quartic kink_c (set up here, solved by
-  // EllipsoidKinks) with a.h > 0, a.h = kink_ah[0] + kink_ah[1] t +
-  // kink_ah[2] t^2; kinks false where the ray cannot meet the clamp's
-  // edge. With n = (-p, -q, 1)
-  // and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic in rho, so
-  // a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h
+  // EllipsoidKinks) with a.h = kink_ah[0] + kink_ah[1] t + kink_ah[2] t^2
+  // > 0; kinks false where the ray cannot meet the clamp's edge. With n =
+  // (-p, -q, 1) and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic
+  // in rho, so a = A N^2 wi is too, and the clamp's edge rho_c ||a|| = a.h
   // (ellipsoid.h, ClampMargin) is a root of the quartic
   //   rho_c^2 |a - (a.h) h|^2 - (1 - rho_c^2) (a.h)^2
   // with a.h > 0: all of them, however narrow the clamped stretch of the
@@ -268,8 +267,8 @@ class EllipsoidRay {
   double psi_;
   double ex_ = 0, ey_ = 0, ee_ = 0;
   double rho_minus_ = 0, rho_plus_ = 0, x_lo_ = 0, x_hi_ = 0, omx2_lo_ = 1, omx2_hi_ = 1;
-  double len_ = 0, mid_ = 0;    // x_hi - x_lo, and where the halves meet
-  double c_hi_ = 0, c_lo_ = 0;  // RiseWidth of the upper and lower half (0: no map)
+  double len_ = 0, mid_ = 0;          // x_hi - x_lo, and where the halves meet
+  double c_hi_ = 0, c_lo_ = 0;        // RiseWidth of the upper and lower half (0: no map)
   double span_hi_ = 0, span_lo_ = 0;  // log1p(half / c), or the half where c = 0
   bool kinks_ = false;                // whether the ray can meet the clamp's edge
   double kink_c_[5] = {0, 0, 0, 0, 0}, kink_ah_[3] = {0, 0, 0}, kink_lo_ = 0;
@@ -277,7 +276,7 @@ class EllipsoidRay {
 };
 
 struct ScalarEllipsoidNodes {
-  // The kinks' brackets (EllipsoidKinks), each root PolyRootIn's.
+  // The kinks' brackets (EllipsoidKinks), each root PolyRootsIn's.
   void SearchRoots(RootTask* tasks, int m) const { InterleavedRootSearch()(tasks, m); }
   // Sets up rays[0..n) (EllipsoidRay::SetUp), the C library's cosines and
   // sines of their angles.

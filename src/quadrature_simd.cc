@@ -367,7 +367,7 @@ struct EllipsoidFrameLanes {
   V zero, one, two, two_wz, s0x, s0y, cx, cy, wx, wy;
   V am[3][3];
   V hx, hy, hz, rho, rho2, omr2, lscale, lambda_o1, g1o, tiny;
-  explicit EllipsoidFrameLanes(const EllipsoidFrame &f) {
+  explicit EllipsoidFrameLanes(const EllipsoidFrame& f) {
     const DF64 d;
     zero = hn::Zero(d);
     one = hn::Set(d, 1.0);
@@ -382,7 +382,7 @@ struct EllipsoidFrameLanes {
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) am[i][j] = hn::Set(d, f.ndf.shape_matrix().m[i][j]);
     }
-    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
+    const Vec3<double>& h_dir = f.ndf.lambda_h_dir();
     hx = hn::Set(d, h_dir.x);
     hy = hn::Set(d, h_dir.y);
     hz = hn::Set(d, h_dir.z);
@@ -421,14 +421,15 @@ struct EllipsoidWiLanes {
   hn::Mask<DF64> ok;
 };
 template <class LoEdge>
-HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes &fr, const EllipsoidRayLanes &r,
+HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes& fr, const EllipsoidRayLanes& r,
                                         LoEdge lo_edge, hn::Vec<DF64> y, hn::Vec<DF64> t) {
   using V = hn::Vec<DF64>;
   EllipsoidWiLanes w;
   const V zero = fr.zero, two = fr.two;
   w.x = hn::Sub(r.x_hi, y);
-  const V omx2 = hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, r.x_hi), y), r.omx2_hi),
-                                hn::NegMulAdd(t, hn::MulAdd(two, r.x_lo, t), r.omx2_lo));
+  const V omx2 =
+      hn::IfThenElse(hn::Le(y, t), hn::MulAdd(y, hn::Sub(hn::Mul(two, r.x_hi), y), r.omx2_hi),
+                     hn::NegMulAdd(t, hn::MulAdd(two, r.x_lo, t), r.omx2_lo));
   const hn::Mask<DF64> ok1 = hn::And(hn::Gt(w.x, zero), hn::Gt(omx2, zero));
   const V omx2s = hn::IfThenElse(ok1, omx2, fr.one);
   w.sr = hn::Sqrt(omx2s);
@@ -437,11 +438,11 @@ HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes &fr, const Ell
   // lower end) or num_lo = nl / sr.
   const V num_hi = hn::Mul(y, hn::Sub(hn::Mul(two, r.x_hi), y));
   const V dh = hn::Mul(hn::Mul(r.omx2_hi, omx2s), hn::MulAdd(w.sr, r.rho_plus, w.x));
-  const V nl = Pick(lo_edge, hn::Mul(t, hn::MulAdd(two, r.x_lo, t)),
-                    hn::NegMulAdd(w.sr, r.rho_minus, w.x));
-  const V dens = Pick(lo_edge,
-                      hn::Mul(dh, hn::Mul(hn::Mul(r.omx2_lo, omx2s), hn::MulAdd(w.sr, r.rho_minus, w.x))),
-                      dh);
+  const V nl =
+      Pick(lo_edge, hn::Mul(t, hn::MulAdd(two, r.x_lo, t)), hn::NegMulAdd(w.sr, r.rho_minus, w.x));
+  const V dens =
+      Pick(lo_edge,
+           hn::Mul(dh, hn::Mul(hn::Mul(r.omx2_lo, omx2s), hn::MulAdd(w.sr, r.rho_minus, w.x))), dh);
   // sr (p, q) with p = s0x + rho ex, q = s0y + rho ey; sr^2 N^2 and sr (1 +
   // s.c).
   const V sp = hn::MulAdd(w.x, r.ex, hn::Mul(w.sr, fr.s0x));
@@ -452,7 +453,8 @@ HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes &fr, const Ell
   // s.c) / N^2 as in WiAt, times den_hi den_lo N^2 > 0 (no division) and
   // sr^4: wiz's sr^-1 (num_lo) or sr^2 (den_lo) makes up the rest.
   const V dn = hn::Mul(dens, n2);
-  w.wiz = hn::Mul(hn::Mul(r.wz_ee, hn::Mul(num_hi, nl)), Pick(lo_edge, hn::Mul(omx2s, omx2s), omx2s));
+  w.wiz =
+      hn::Mul(hn::Mul(r.wz_ee, hn::Mul(num_hi, nl)), Pick(lo_edge, hn::Mul(omx2s, omx2s), omx2s));
   w.ok = hn::And(ok1, hn::And(hn::Gt(w.wiz, zero), hn::Gt(w.lin, zero)));
   const V kk = hn::Mul(hn::Mul(fr.two_wz, w.lin), dens);
   w.wix = hn::Neg(hn::MulAdd(kk, sp, hn::Mul(fr.wx, dn)));
@@ -464,12 +466,15 @@ HWY_INLINE EllipsoidWiLanes EllipsoidWi(const EllipsoidFrameLanes &fr, const Ell
 // nn <= 0, the clamp), as the pair wiz_dd = wi.z dd (wi.z taken as 1 where
 // wi is not above the horizon) and nn_scale = max(nn, 0) scale:
 // homogeneous in wi, so the scale of EllipsoidWi's w drops out.
-HWY_INLINE void EllipsoidLambdaParts(const EllipsoidFrameLanes &fr, const EllipsoidWiLanes &w,
-                                     hn::Vec<DF64> *wiz_dd, hn::Vec<DF64> *nn_scale) {
+HWY_INLINE void EllipsoidLambdaParts(const EllipsoidFrameLanes& fr, const EllipsoidWiLanes& w,
+                                     hn::Vec<DF64>* wiz_dd, hn::Vec<DF64>* nn_scale) {
   using V = hn::Vec<DF64>;
-  const V ax = hn::MulAdd(fr.am[0][2], w.wiz, hn::MulAdd(fr.am[0][1], w.wiy, hn::Mul(fr.am[0][0], w.wix)));
-  const V ay = hn::MulAdd(fr.am[1][2], w.wiz, hn::MulAdd(fr.am[1][1], w.wiy, hn::Mul(fr.am[1][0], w.wix)));
-  const V az = hn::MulAdd(fr.am[2][2], w.wiz, hn::MulAdd(fr.am[2][1], w.wiy, hn::Mul(fr.am[2][0], w.wix)));
+  const V ax =
+      hn::MulAdd(fr.am[0][2], w.wiz, hn::MulAdd(fr.am[0][1], w.wiy, hn::Mul(fr.am[0][0], w.wix)));
+  const V ay =
+      hn::MulAdd(fr.am[1][2], w.wiz, hn::MulAdd(fr.am[1][1], w.wiy, hn::Mul(fr.am[1][0], w.wix)));
+  const V az =
+      hn::MulAdd(fr.am[2][2], w.wiz, hn::MulAdd(fr.am[2][1], w.wiy, hn::Mul(fr.am[2][0], w.wix)));
   const V a_len = hn::Sqrt(hn::MulAdd(az, az, hn::MulAdd(ay, ay, hn::Mul(ax, ax))));
   const V ah = hn::MulAdd(az, fr.hz, hn::MulAdd(ay, fr.hy, hn::Mul(ax, fr.hx)));
   const V px = hn::NegMulAdd(fr.hx, ah, ax), py = hn::NegMulAdd(fr.hy, ah, ay),
@@ -483,18 +488,21 @@ HWY_INLINE void EllipsoidLambdaParts(const EllipsoidFrameLanes &fr, const Ellips
   *nn_scale = hn::Mul(hn::ZeroIfNegative(nn), fr.lscale);
 }
 
-// One piece of an ellipsoid ray (ellipsoid_albedo_rule.h,
-// ScalarEllipsoidNodes) with its 16 nodes in lanes: EllipsoidRay::At (its
-// half and map chosen per piece; hn::Expm1, 4 ulp, for std::expm1),
-// EllipsoidRay::WiAt and the ellipsoid's Lambda (ellipsoid.h), with both
-// sides of each other branch computed and selected per lane.
+// The ellipsoid rule's work in lanes (ellipsoid_albedo_rule.h, against
+// ScalarEllipsoidNodes): one piece of a ray with its 16 nodes in lanes
+// (operator(): EllipsoidRay::At, its half and map chosen per piece,
+// hn::Expm1, 4 ulp, for std::expm1; EllipsoidRay::WiAt and the
+// ellipsoid's Lambda, ellipsoid.h, with both sides of each other branch
+// computed and selected per lane); a psi piece's rays set up a ray per
+// lane (SetUpRays); the brackets of their kinks' quartics searched a
+// bracket per lane (SearchRoots).
 struct SimdEllipsoidNodes {
   // InterleavedRootSearch (poly_roots.h) in lanes, a task per lane: the same
   // steps (Horner's rule with fused multiply-adds, so each root agrees
   // with the scalar search's to the tasks' tolerance, not bit for bit),
   // lanes masked off as their tasks end. Quartics and cubics alike, a
   // cubic's c[4] being 0.
-  void SearchRoots(RootTask *tasks, int m) const {
+  void SearchRoots(RootTask* tasks, int m) const {
     const DF64 d;
     using V = hn::Vec<DF64>;
     using M = hn::Mask<DF64>;
@@ -506,7 +514,7 @@ struct SimdEllipsoidNodes {
       // Rows: c[0..4], a, b, pa, tol, x; lanes past the tasks start done.
       for (size_t i = 0; i < kN; ++i) {
         const bool real = static_cast<int>(i) < lanes;
-        const RootTask &t = tasks[t0 + (real ? i : 0)];
+        const RootTask& t = tasks[t0 + (real ? i : 0)];
         for (int k = 0; k <= kMaxPolyDegree; ++k) buf[k][i] = k <= t.n ? t.c[k] : 0.0;
         buf[5][i] = t.r.a;
         buf[6][i] = t.r.b;
@@ -538,9 +546,8 @@ struct SimdEllipsoidNodes {
         const M converged = hn::And(live, hn::Le(hn::Abs(step), half_tol));
         const V newton = hn::Sub(x, step);
         const M inside = hn::And(hn::Gt(newton, a), hn::Lt(newton, b));
-        const V next = hn::IfThenElse(
-            converged, hn::Min(hn::Max(newton, a), b),
-            hn::IfThenElse(inside, newton, hn::Mul(half, hn::Add(a, b))));
+        const V next = hn::IfThenElse(converged, hn::Min(hn::Max(newton, a), b),
+                                      hn::IfThenElse(inside, newton, hn::Mul(half, hn::Add(a, b))));
         x = hn::IfThenElse(live, next, x);
         done = hn::Or(hn::Or(done, hit), converged);
         done = hn::Or(done, hn::Not(hn::And(hn::Lt(it, most), hn::Gt(hn::Sub(b, a), tol))));
@@ -555,13 +562,13 @@ struct SimdEllipsoidNodes {
   // |psi| < 4 pi here, in their range), the same steps with both sides of
   // each branch selected per lane, and the rise widths' probes by
   // EllipsoidWi and EllipsoidLambdaParts.
-  void SetUpRays(EllipsoidRay *rays, int n) const {
+  void SetUpRays(EllipsoidRay* rays, int n) const {
     if (n == 0) return;
     using V = hn::Vec<DF64>;
     using M = hn::Mask<DF64>;
     const DF64 d;
     constexpr size_t kN = hn::MaxLanes(DF64());
-    const EllipsoidFrame &f = rays[0].f_;
+    const EllipsoidFrame& f = rays[0].f_;
     const EllipsoidFrameLanes fr(f);
     const V zero = fr.zero, one = fr.one, half = hn::Set(d, 0.5);
     const V l11 = hn::Set(d, f.l11), l12 = hn::Set(d, f.l12), l22 = hn::Set(d, f.l22);
@@ -569,9 +576,30 @@ struct SimdEllipsoidNodes {
     const V wz = hn::Set(d, f.wz), probe = hn::Set(d, kLayerProbe);
     // 0.5 o / scale, scale = 1 + Lambda(wo) (height-correlated) or 1.
     const V rise_scale = hn::Set(d, 0.5 / (f.separable ? 1.0 : 1 + f.lambda_o));
-    enum Field { kEx, kEy, kEe, kRhoMinus, kRhoPlus, kOmx2Lo, kOmx2Hi, kXLo, kXHi, kLen, kMid,
-                 kCHi, kCLo, kLoEdge, kValid, kSpanHi, kSpanLo, kKinks, kKinkC, kKinkAh = kKinkC + 5,
-                 kKinkLo = kKinkAh + 3, kFields };
+    enum Field {
+      kEx,
+      kEy,
+      kEe,
+      kRhoMinus,
+      kRhoPlus,
+      kOmx2Lo,
+      kOmx2Hi,
+      kXLo,
+      kXHi,
+      kLen,
+      kMid,
+      kCHi,
+      kCLo,
+      kLoEdge,
+      kValid,
+      kSpanHi,
+      kSpanLo,
+      kKinks,
+      kKinkC,
+      kKinkAh = kKinkC + 5,
+      kKinkLo = kKinkAh + 3,
+      kFields
+    };
     // EllipsoidRay::SetUpKinkQuartic's constants: w[0], l0, m0.
     constexpr double kTwoPi = 2 * kPi<double>;
     const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y;
@@ -579,7 +607,7 @@ struct SimdEllipsoidNodes {
     const Vec3<double> n0(-f.s0x, -f.s0y, 1), wo_d(f.wx, f.wy, f.wz);
     const Vec3<double> w0 = n0 * (2 * l0) - wo_d * m0;
     const Vec3<double> a0 = f.ndf.shape_matrix() * w0;
-    const Vec3<double> &h_dir = f.ndf.lambda_h_dir();
+    const Vec3<double>& h_dir = f.ndf.lambda_h_dir();
     const double ah0 = Dot(a0, h_dir);
     const Vec3<double> ap0 = a0 - h_dir * ah0;
     const double rc = f.ndf.lambda_rho();
@@ -589,7 +617,8 @@ struct SimdEllipsoidNodes {
     HWY_ALIGN double in[kN], out[kFields][kN];
     for (int i0 = 0; i0 < n; i0 += static_cast<int>(kN)) {
       const int lanes = std::min(static_cast<int>(kN), n - i0);
-      for (size_t i = 0; i < kN; ++i) in[i] = rays[i0 + std::min(static_cast<int>(i), lanes - 1)].psi_;
+      for (size_t i = 0; i < kN; ++i)
+        in[i] = rays[i0 + std::min(static_cast<int>(i), lanes - 1)].psi_;
       const V psi = hn::Load(d, in);
       const V cs = hn::Cos(d, psi), sn = hn::Sin(d, psi);
       EllipsoidRayLanes r;
@@ -649,8 +678,8 @@ struct SimdEllipsoidNodes {
       hn::Store(hn::IfThenElseZero(valid, one), d, out[kValid]);
       // The halves' spans (EllipsoidRay::SetUp): hn::Log1p, 2 ulp.
       const V span_hi = hn::IfThenElse(
-          hn::Gt(c_hi, zero), hn::Log1p(d, hn::Div(mid, hn::IfThenElse(hn::Gt(c_hi, zero), c_hi, one))),
-          mid);
+          hn::Gt(c_hi, zero),
+          hn::Log1p(d, hn::Div(mid, hn::IfThenElse(hn::Gt(c_hi, zero), c_hi, one))), mid);
       const V lower_half = hn::Sub(len, mid);
       const V span_lo = hn::IfThenElse(
           hn::Gt(c_lo, zero),
@@ -672,8 +701,10 @@ struct SimdEllipsoidNodes {
         // n1 = (-ex, -ey, 0).
         const V two_sc = hn::Mul(fr.two, sc), m1sc = hn::Mul(m1, sc);
         V w[3][3];
-        w[1][0] = hn::NegMulAdd(fr.wx, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ex, l0v, hn::Mul(hn::Neg(fr.s0x), l1))));
-        w[1][1] = hn::NegMulAdd(fr.wy, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ey, l0v, hn::Mul(hn::Neg(fr.s0y), l1))));
+        w[1][0] = hn::NegMulAdd(
+            fr.wx, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ex, l0v, hn::Mul(hn::Neg(fr.s0x), l1))));
+        w[1][1] = hn::NegMulAdd(
+            fr.wy, m1sc, hn::Mul(two_sc, hn::NegMulAdd(r.ey, l0v, hn::Mul(hn::Neg(fr.s0y), l1))));
         w[1][2] = hn::NegMulAdd(wz, m1sc, hn::Mul(two_sc, l1));
         const V two_l1 = hn::Mul(fr.two, l1);
         w[2][0] = hn::Mul(sc2, hn::NegMulAdd(fr.wx, ee, hn::Mul(hn::Neg(r.ex), two_l1)));
@@ -698,7 +729,8 @@ struct SimdEllipsoidNodes {
           for (int j = 0; j < 3; ++j) {
             const V dot = hn::MulAdd(ap[i][2], ap[j][2],
                                      hn::MulAdd(ap[i][1], ap[j][1], hn::Mul(ap[i][0], ap[j][0])));
-            c[i + j] = hn::Add(c[i + j], hn::MulSub(rc2, dot, hn::Mul(omr2, hn::Mul(ah[i], ah[j]))));
+            c[i + j] =
+                hn::Add(c[i + j], hn::MulSub(rc2, dot, hn::Mul(omr2, hn::Mul(ah[i], ah[j]))));
           }
         }
         for (int i = 0; i < 5; ++i) hn::Store(c[i], d, out[kKinkC + i]);
@@ -706,7 +738,7 @@ struct SimdEllipsoidNodes {
         hn::Store(hn::Div(hn::ZeroIfNegative(r.rho_minus), sc), d, out[kKinkLo]);
       }
       for (int i = 0; i < lanes; ++i) {
-        EllipsoidRay &ray = rays[i0 + i];
+        EllipsoidRay& ray = rays[i0 + i];
         ray.ex_ = out[kEx][i];
         ray.ey_ = out[kEy][i];
         ray.ee_ = out[kEe][i];
@@ -733,12 +765,12 @@ struct SimdEllipsoidNodes {
     }
   }
 
-  void operator()(const EllipsoidRay *const *rays, const double *a, const double *b, int n,
-                  double *k, double *g) const {
+  void operator()(const EllipsoidRay* const* rays, const double* a, const double* b, int n,
+                  double* k, double* g) const {
     if (n == 0) return;
     using V = hn::Vec<DF64>;
     static const SimdAnisoNodes::Rule rule;
-    const EllipsoidFrame &f = rays[0]->f_;  // the same for every ray
+    const EllipsoidFrame& f = rays[0]->f_;  // the same for every ray
     const EllipsoidFrameLanes fr(f);
     const DF64 d;
     // The kK vectors of a piece's nodes advance together, stage by stage:
@@ -749,7 +781,7 @@ struct SimdEllipsoidNodes {
     constexpr size_t kN = hn::MaxLanes(DF64());
     constexpr size_t kK = 16 / kN;
     for (int j = 0; j < n; ++j) {
-      const EllipsoidRay &ray = *rays[j];
+      const EllipsoidRay& ray = *rays[j];
       EllipsoidRayLanes r;
       r.x_hi = hn::Set(d, ray.x_hi_);
       r.x_lo = hn::Set(d, ray.x_lo_);
@@ -787,8 +819,9 @@ struct SimdEllipsoidNodes {
         // Lambda_i) = wi.z dd / ((1 + Lambda_o) wi.z dd + nn scale), which
         // also takes lin's sr; (kept off 0 / 0 where wi.z dd underflows).
         const V num = hn::Mul(hn::Mul(wiz_dd[u], w[u].lin), hn::Mul(fr.two, w[u].x));
-        const V den = f.separable ? hn::Mul(w[u].sr, hn::Add(wiz_dd[u], nn_scale[u]))
-                                  : hn::Mul(w[u].sr, hn::MulAdd(fr.lambda_o1, wiz_dd[u], nn_scale[u]));
+        const V den = f.separable
+                          ? hn::Mul(w[u].sr, hn::Add(wiz_dd[u], nn_scale[u]))
+                          : hn::Mul(w[u].sr, hn::MulAdd(fr.lambda_o1, wiz_dd[u], nn_scale[u]));
         const V f2 = hn::Div(f.separable ? hn::Mul(fr.g1o, num) : num, hn::Max(den, fr.tiny));
         // Times the map's Jacobian, y + c or t + c.
         const V v = hn::IfThenElseZero(w[u].ok, mapped ? hn::Mul(f2, hn::Add(off[u], c)) : f2);
@@ -801,16 +834,16 @@ struct SimdEllipsoidNodes {
   }
 };
 
-void SetUpEllipsoidRaysLanes(EllipsoidRay *rays, int n) { SimdEllipsoidNodes().SetUpRays(rays, n); }
+void SetUpEllipsoidRaysLanes(EllipsoidRay* rays, int n) { SimdEllipsoidNodes().SetUpRays(rays, n); }
 
-void PolyRootsLanes(PolyRootsProblem *problems, int m) {
+void PolyRootsLanes(PolyRootsProblem* problems, int m) {
   PolyRootsInBatch(problems, m,
-                   [](RootTask *tasks, int n) { SimdEllipsoidNodes().SearchRoots(tasks, n); });
+                   [](RootTask* tasks, int n) { SimdEllipsoidNodes().SearchRoots(tasks, n); });
 }
 
-AzimuthalResult EllipsoidAlbedoTexel(double alpha_x, double alpha_y, double theta_x,
-                                     double theta_y, double theta_z, double mu, double phi,
-                                     Masking masking, double tol, int max_pieces) {
+AzimuthalResult EllipsoidAlbedoTexel(double alpha_x, double alpha_y, double theta_x, double theta_y,
+                                     double theta_z, double mu, double phi, Masking masking,
+                                     double tol, int max_pieces) {
   return EllipsoidAlbedoWith(alpha_x, alpha_y, theta_x, theta_y, theta_z, mu, phi, masking, tol,
                              max_pieces, SimdEllipsoidNodes{});
 }
