@@ -676,17 +676,26 @@ TEST(EllipsoidAlbedoTest, StiffCasesFiniteInRangeAndWithinTolerance) {
   }
 }
 
+// The ellipsoid material (alpha_x, alpha_y, theta_x, theta_y, theta_z),
+// angles in radians, as a bake's model.
+ModelParams EllipsoidModel(double ax, double ay, double tx, double ty, double tz) {
+  ModelParams m;
+  m.kind = ModelKind::kEllipsoid;
+  m.alpha_x = ax;
+  m.alpha_y = ay;
+  m.theta_x = tx;
+  m.theta_y = ty;
+  m.theta_z = tz;
+  return m;
+}
+
 // Texels of one view are baked once (SameViewTexels in bake.cc): the
 // mu = 1 column and the phi_o = 2 pi row hold the values of their first
 // texel, and those agree with the rule evaluated at the texel's own
 // (mu, phi_o) within the claims.
 TEST(EllipsoidAlbedoTest, TexelsOfOneViewShareTheirValue) {
   BakeSpec spec;
-  spec.model.kind = ModelKind::kEllipsoid;
-  spec.model.alpha_x = 0.2;
-  spec.model.alpha_y = 0.5;
-  spec.model.theta_x = 0.6;
-  spec.model.theta_z = 0.4;
+  spec.model = EllipsoidModel(0.2, 0.5, 0.6, 0, 0.4);
   spec.mu.size = 5;
   spec.phi.size = 7;
   spec.phi.max = 2 * kPi<double>;
@@ -713,11 +722,7 @@ TEST(EllipsoidAlbedoTest, TexelsOfOneViewShareTheirValue) {
 // A tilted ellipsoid's E is not even in phi_o; the table says so.
 TEST(EllipsoidAlbedoTest, TableHasNoAzimuthalSymmetry) {
   BakeSpec spec;
-  spec.model.kind = ModelKind::kEllipsoid;
-  spec.model.alpha_x = 0.3;
-  spec.model.alpha_y = 0.6;
-  spec.model.theta_x = 0.35;
-  spec.model.theta_z = 0.5;
+  spec.model = EllipsoidModel(0.3, 0.6, 0.35, 0, 0.5);
   spec.mu.size = 4;
   spec.mu.min = 0.2;
   spec.phi.size = 9;
@@ -768,12 +773,7 @@ TEST(EllipsoidAlbedoTest, EavgOfTiltedMaterialsMeetsTheTolerance) {
   for (const Case& c : {Case{0.3, 0.6, 20, 0, 30}, Case{0.5, 0.2, 45, -30, 0}}) {
     BakeSpec spec;
     spec.table = TableKind::kEavg;
-    spec.model.kind = ModelKind::kEllipsoid;
-    spec.model.alpha_x = c.ax;
-    spec.model.alpha_y = c.ay;
-    spec.model.theta_x = c.tx * kDeg;
-    spec.model.theta_y = c.ty * kDeg;
-    spec.model.theta_z = c.tz * kDeg;
+    spec.model = EllipsoidModel(c.ax, c.ay, c.tx * kDeg, c.ty * kDeg, c.tz * kDeg);
     spec.tolerance = 1e-6;
     const Table t = Bake(spec);
     BakeSpec fine = spec;
