@@ -440,9 +440,10 @@ std::string IntegratorJson(const BakeSpec& spec) {
                        "Gauss-Kronrod 15 in sqrt(u) on pieces graded by 4 towards the disk's "
                        "edge down to its masking layer (nodes in double SIMD lanes)"
                      : "Gauss-Kronrod 15 over psi on pieces bisected worst first; along each ray "
-                       "Gauss-Kronrod 15 in sqrt(u), graded towards the horizon crossings, cut "
+                       "Gauss-Kronrod 15 in sqrt(u), mapped towards the horizon crossings, cut "
                        "at the kinks of G1's clamp and bisected worst first to a fifth of the "
-                       "tolerance (double scalar)",
+                       "tolerance (rays set up and nodes in double SIMD lanes, or the double "
+                       "scalar reference with --target scalar)",
                  "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of |K15 - G7| "
                  "carried through the Kronrod weights");
         break;
