@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -51,8 +52,10 @@ struct EllipsoidFrame : SlopeView {
   double d2_minus_r2 = -1;           // |d|^2 - 1 / wo.z^2
   double ray_tol = 0;
   // The rays that can cross the clamp's edge: psi - kink_psi0 in
-  // [0, kink_psi_range] (mod 2 pi); all of them by default.
+  // [0, kink_psi_range] (mod 2 pi); all of them by default. They cross it
+  // at rho below kink_rho_max (EllipsoidRay::SetUpKinkQuartic).
   double kink_psi0 = 0, kink_psi_range = 2 * kPi<double>;
+  double kink_rho_max = std::numeric_limits<double>::infinity();
 
   EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi)
       : SlopeView(mu, phi), ndf(n) {}
@@ -186,8 +189,8 @@ class EllipsoidRay {
   }
 
   // Where G1(wi)'s clamp turns on or off along the ray: the rho in
-  // (max(0, rho_-), rho_+) where it does are the roots t = rho / rho_+ in
-  // (kink_lo, 1) of the quartic kink_c (set up here, solved by
+  // (max(0, rho_-), rho_+) where it does are the roots t = rho / kink_sc
+  // in (kink_lo, 1) of the quartic kink_c (set up here, solved by
   // EllipsoidKinks) with a.h = kink_ah[0] + kink_ah[1] t + kink_ah[2] t^2
   // > 0; kinks false where the ray cannot meet the clamp's edge. With n =
   // (-p, -q, 1) and N^2 = |n|^2, N^2 wi = 2 (wo.n) n - N^2 wo is quadratic
@@ -208,7 +211,15 @@ class EllipsoidRay {
     const double l0 = f.wz - f.wx * f.s0x - f.wy * f.s0y, l1 = -(f.wx * ex_ + f.wy * ey_);
     const Vec3<double> n0(-f.s0x, -f.s0y, 1), n1(-ex_, -ey_, 0), wo(f.wx, f.wy, f.wz);
     const double m0 = 1 + f.s0x * f.s0x + f.s0y * f.s0y, m1 = 2 * (f.s0x * ex_ + f.s0y * ey_);
-    const double sc = rho_plus_;
+    // t = rho / sc on (kink_lo, 1): up to the ray's end, or to where the
+    // edge can be (EllipsoidFrame::kink_rho_max).
+    const double sc = std::min(rho_plus_, f.kink_rho_max);
+    kink_sc_ = sc;
+    kink_lo_ = std::max(0.0, rho_minus_) / sc;
+    if (!(kink_lo_ < 1)) {
+      kinks_ = false;
+      return;
+    }
     const Vec3<double> w[3] = {n0 * (2 * l0) - wo * m0,
                                (n1 * l0 + n0 * l1) * (2 * sc) - wo * (m1 * sc),
                                (n1 * (2 * l1) - wo * ee_) * (sc * sc)};
@@ -227,7 +238,6 @@ class EllipsoidRay {
         kink_c_[i + j] += rc2 * Dot(ap[i], ap[j]) - omr2 * kink_ah_[i] * kink_ah_[j];
       }
     }
-    kink_lo_ = std::max(0.0, rho_minus_) / sc;
   }
 
   // The node evaluators (ScalarEllipsoidNodes, quadrature_simd.cc) read these.
@@ -271,7 +281,7 @@ class EllipsoidRay {
   double c_hi_ = 0, c_lo_ = 0;        // RiseWidth of the upper and lower half (0: no map)
   double span_hi_ = 0, span_lo_ = 0;  // log1p(half / c), or the half where c = 0
   bool kinks_ = false;                // whether the ray can meet the clamp's edge
-  double kink_c_[5] = {0, 0, 0, 0, 0}, kink_ah_[3] = {0, 0, 0}, kink_lo_ = 0;
+  double kink_c_[5] = {0, 0, 0, 0, 0}, kink_ah_[3] = {0, 0, 0}, kink_lo_ = 0, kink_sc_ = 1;
   bool lo_edge_ = false, valid_ = false;
 };
 
@@ -335,7 +345,7 @@ void EllipsoidKinks(const EllipsoidRay* rays, int count, const Nodes& nodes,
     const PolyRootsProblem& q = problems[i];
     const double* ah = quartics[i].ah;
     const int r = quartics[i].ray;
-    const double sc = rays[r].rho_plus_;
+    const double sc = rays[r].kink_sc_;
     for (int k = 0; k < q.count; ++k) {
       const double t = q.roots[k];
       if (ah[0] + t * (ah[1] + t * ah[2]) > 0) kinks[r][n_kinks[r]++] = t * sc;
@@ -524,6 +534,7 @@ struct ClampRays {
   std::vector<double> tangents;
   std::vector<double> glancing, glancing_width;
   double psi0 = 0, range = 2 * kPi<double>;
+  double rho_max = 0;  // the largest rho of the edge's probe points
 };
 // edge_probes: the edge's points ClampEdge::At(2 pi k / kClampProbes)
 // (EllipsoidMaterial).
@@ -541,8 +552,14 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
   auto near = [&](double psi, double ref) { return ref + WrapAngle(psi - ref); };
   std::vector<double> psi(kClampProbes);
   for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_of(edge_probes[k]);
-  const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
   ClampRays rays;
+  for (const Vec3<double>& wi : edge_probes) {
+    const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
+    const double sx = -m.x / m.z, sy = -m.y / m.z;
+    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    rays.rho_max = std::max(rays.rho_max, std::hypot(vx, vy));
+  }
+  const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
   // Where psi(theta) does not wind around s0 (s0 outside the clamped
   // region), only the rays between its extremes meet the edge: the
   // unwrapped range of psi, widened by 1e-9 against rounding.
@@ -812,6 +829,13 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     const ClampRays rays = ClampTangents(f, material.edge, material.edge_probes);
     f.kink_psi0 = rays.psi0;
     f.kink_psi_range = rays.range;
+    // The quartic's variable (SetUpKinkQuartic) spans rho up to 4 times the
+    // farthest probe point, not to rho_+: near grazing rho_+ reaches 1e8
+    // while the edge lies at rho of order 1, and its crossings were
+    // isolated to 1e-7 of rho_+, which lost pairs of them (0.2 x 0.8,
+    // theta_x 60, theta_z 45 degrees, separable, mu 1e-7, phi 2.89226: off
+    // by 6.4e-8 at every tolerance, 7x the claim at 1e-8).
+    f.kink_rho_max = 4 * rays.rho_max;
     for (double t : rays.tangents) SplitSegment(&segments, lo, t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
       SplitSegment(&segments, lo, rays.glancing[i], false, 2 * rays.glancing_width[i]);

@@ -598,6 +598,7 @@ struct SimdEllipsoidNodes {
       kKinkC,
       kKinkAh = kKinkC + 5,
       kKinkLo = kKinkAh + 3,
+      kKinkSc,
       kFields
     };
     // EllipsoidRay::SetUpKinkQuartic's constants: w[0], l0, m0.
@@ -613,6 +614,7 @@ struct SimdEllipsoidNodes {
     const double rc = f.ndf.lambda_rho();
     const V rc2 = hn::Set(d, rc * rc), omr2 = hn::Set(d, (1 - rc) * (1 + rc));
     const V psi0 = hn::Set(d, f.kink_psi0), psi_range = hn::Set(d, f.kink_psi_range);
+    const V rho_cap = hn::Set(d, f.kink_rho_max);
     const V two_pi = hn::Set(d, kTwoPi), inv_two_pi = hn::Set(d, 1 / kTwoPi);
     HWY_ALIGN double in[kN], out[kFields][kN];
     for (int i0 = 0; i0 < n; i0 += static_cast<int>(kN)) {
@@ -690,12 +692,17 @@ struct SimdEllipsoidNodes {
       // EllipsoidRay::SetUpKinkQuartic in lanes.
       const V from0 = hn::NegMulAdd(two_pi, hn::Floor(hn::Mul(hn::Sub(psi, psi0), inv_two_pi)),
                                     hn::Sub(psi, psi0));
-      const M kinks = hn::And(valid, hn::Le(from0, psi_range));
+      // t = rho / sc, sc = min(rho_+, the edge's reach).
+      const V sc = hn::Min(r.rho_plus, rho_cap);
+      const V kink_lo = hn::Div(hn::ZeroIfNegative(r.rho_minus), sc);
+      const M kinks = hn::And(hn::And(valid, hn::Le(from0, psi_range)), hn::Lt(kink_lo, one));
       hn::Store(hn::IfThenElseZero(kinks, one), d, out[kKinks]);
+      hn::Store(sc, d, out[kKinkSc]);
+      hn::Store(kink_lo, d, out[kKinkLo]);
       {
         const V l1 = hn::Neg(hn::MulAdd(fr.wx, r.ex, hn::Mul(fr.wy, r.ey)));
         const V m1 = hn::Mul(fr.two, hn::MulAdd(fr.s0x, r.ex, hn::Mul(fr.s0y, r.ey)));
-        const V sc = r.rho_plus, sc2 = hn::Mul(sc, sc);
+        const V sc2 = hn::Mul(sc, sc);
         const V l0v = hn::Set(d, l0);
         // w1 = (n1 l0 + n0 l1) 2 sc - wo m1 sc, w2 = (n1 2 l1 - wo ee) sc^2,
         // n1 = (-ex, -ey, 0).
@@ -735,7 +742,6 @@ struct SimdEllipsoidNodes {
         }
         for (int i = 0; i < 5; ++i) hn::Store(c[i], d, out[kKinkC + i]);
         for (int i = 0; i < 3; ++i) hn::Store(ah[i], d, out[kKinkAh + i]);
-        hn::Store(hn::Div(hn::ZeroIfNegative(r.rho_minus), sc), d, out[kKinkLo]);
       }
       for (int i = 0; i < lanes; ++i) {
         EllipsoidRay& ray = rays[i0 + i];
@@ -761,6 +767,7 @@ struct SimdEllipsoidNodes {
         for (int c = 0; c < 5; ++c) ray.kink_c_[c] = out[kKinkC + c][i];
         for (int c = 0; c < 3; ++c) ray.kink_ah_[c] = out[kKinkAh + c][i];
         ray.kink_lo_ = out[kKinkLo][i];
+        ray.kink_sc_ = out[kKinkSc][i];
       }
     }
   }
