@@ -835,7 +835,7 @@ AzimuthalResult EllipsoidAlbedoWith(double alpha_x, double alpha_y, double theta
     // isolated to 1e-7 of rho_+, which lost pairs of them (0.2 x 0.8,
     // theta_x 60, theta_z 45 degrees, separable, mu 1e-7, phi 2.89226: off
     // by 6.4e-8 at every tolerance, 7x the claim at 1e-8).
-    f.kink_rho_max = 4 * rays.rho_max;
+    if (std::isfinite(rays.rho_max) && rays.rho_max > 0) f.kink_rho_max = 4 * rays.rho_max;
     for (double t : rays.tangents) SplitSegment(&segments, lo, t, true, 0);
     for (size_t i = 0; i < rays.glancing.size(); ++i) {
       SplitSegment(&segments, lo, rays.glancing[i], false, 2 * rays.glancing_width[i]);
