@@ -59,6 +59,14 @@ struct EllipsoidFrame : SlopeView {
 
   EllipsoidFrame(const EllipsoidNdf<double>& n, double mu, double phi)
       : SlopeView(mu, phi), ndf(n) {}
+  // v = L^-1 (s - s0) for the slope s of the half vector of wi and wo: the
+  // ray through s has psi = atan2(v.y, v.x), and s lies at rho = |v| on it.
+  void RayCoords(const Vec3<double>& wi, double* vx, double* vy) const {
+    const Vec3<double> m(wi.x + wx, wi.y + wy, wi.z + wz);
+    const double sx = -m.x / m.z, sy = -m.y / m.z;
+    *vy = (sy - s0y) / l22;
+    *vx = (sx - s0x - l12 * *vy) / l11;
+  }
   double G2(double lambda_i) const {
     return separable ? 1 / ((1 + lambda_i) * (1 + lambda_o)) : 1 / (1 + lambda_i + lambda_o);
   }
@@ -542,9 +550,8 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
                                const std::vector<Vec3<double>>& edge_probes) {
   // The psi of the ray through the clamp edge's point wi.
   auto psi_of = [&](const Vec3<double>& wi) {
-    const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
-    const double sx = -m.x / m.z, sy = -m.y / m.z;
-    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    double vx, vy;
+    f.RayCoords(wi, &vx, &vy);
     return std::atan2(vy, vx);
   };
   auto psi_at = [&](double theta) { return psi_of(edge.At(theta)); };
@@ -554,9 +561,8 @@ inline ClampRays ClampTangents(const EllipsoidFrame& f, const ClampEdge& edge,
   for (int k = 0; k < kClampProbes; ++k) psi[k] = psi_of(edge_probes[k]);
   ClampRays rays;
   for (const Vec3<double>& wi : edge_probes) {
-    const Vec3<double> m(wi.x + f.wx, wi.y + f.wy, wi.z + f.wz);
-    const double sx = -m.x / m.z, sy = -m.y / m.z;
-    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    double vx, vy;
+    f.RayCoords(wi, &vx, &vy);
     rays.rho_max = std::max(rays.rho_max, std::hypot(vx, vy));
   }
   const std::vector<EdgeExtreme> extremes = ExtremesOnEdge(psi_at, psi, near);
@@ -662,12 +668,10 @@ inline std::vector<HorizonMinimum> HorizonMinima(const EllipsoidNdf<double>& ndf
 // feature's width w, the half change of psi over beta* +- d.
 inline std::vector<HorizonApproach> HorizonApproaches(const EllipsoidFrame& f,
                                                       const std::vector<HorizonMinimum>& minima) {
-  // The ray through the horizon point wi(beta): its half vector's slope
-  // s = s0 + L v, v along (cos psi, sin psi).
+  // The ray through the horizon point wi(beta).
   auto psi_at = [&](double beta) {
-    const Vec3<double> m(std::cos(beta) + f.wx, std::sin(beta) + f.wy, f.wz);
-    const double sx = -m.x / m.z, sy = -m.y / m.z;
-    const double vy = (sy - f.s0y) / f.l22, vx = (sx - f.s0x - f.l12 * vy) / f.l11;
+    double vx, vy;
+    f.RayCoords(Vec3<double>(std::cos(beta), std::sin(beta), 0), &vx, &vy);
     return std::atan2(vy, vx);
   };
   std::vector<HorizonApproach> out;

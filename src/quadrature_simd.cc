@@ -403,7 +403,8 @@ struct EllipsoidRayLanes {
   hn::Vec<DF64> x_hi, x_lo, omx2_hi, omx2_lo, rho_plus, rho_minus, ex, ey, wz_ee;
 };
 
-// The lower end a horizon crossing, per piece (a bool) or per lane.
+// a where c, else b: c whether a ray's lower end is a horizon crossing,
+// one bool for a piece's nodes or a mask of a ray per lane.
 HWY_INLINE hn::Vec<DF64> Pick(bool c, hn::Vec<DF64> a, hn::Vec<DF64> b) { return c ? a : b; }
 HWY_INLINE hn::Vec<DF64> Pick(hn::Mask<DF64> c, hn::Vec<DF64> a, hn::Vec<DF64> b) {
   return hn::IfThenElse(c, a, b);
@@ -511,7 +512,7 @@ struct SimdEllipsoidNodes {
     const V zero = hn::Zero(d), half = hn::Set(d, 0.5), one = hn::Set(d, 1.0);
     for (int t0 = 0; t0 < m; t0 += static_cast<int>(kN)) {
       const int lanes = std::min(static_cast<int>(kN), m - t0);
-      // Rows: c[0..4], a, b, pa, tol, x; lanes past the tasks start done.
+      // Rows: c[0..4], a, b, pa, tol; lanes past the tasks start done.
       for (size_t i = 0; i < kN; ++i) {
         const bool real = static_cast<int>(i) < lanes;
         const RootTask& t = tasks[t0 + (real ? i : 0)];
