@@ -12,16 +12,17 @@
 
 #include <benchmark/benchmark.h>
 
+#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/grid.h"
-#include "brdfbake/beckmann.h"
-#include "brdfbake/brdf.h"
-#include "brdfbake/ellipsoid.h"
-#include "brdfbake/ggx.h"
-#include "brdfbake/sel.h"
-#include "brdfbake/std_ndf.h"
+#include "brdfbake/models/beckmann.h"
+#include "brdfbake/models/brdf.h"
+#include "brdfbake/models/ellipsoid.h"
+#include "brdfbake/models/ggx.h"
+#include "brdfbake/models/sel.h"
+#include "brdfbake/models/std_ndf.h"
 
 namespace brdfbake {
 namespace {

@@ -18,8 +18,8 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/targets.h"
-#include "brdfbake/beckmann.h"
-#include "brdfbake/std_ndf.h"
+#include "brdfbake/models/beckmann.h"
+#include "brdfbake/models/std_ndf.h"
 
 namespace brdfbake {
 namespace {

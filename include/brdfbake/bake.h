@@ -14,13 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "brdfbake/brdf.h"
+#include "brdfbake/estimate.h"
+#include "brdfbake/models/brdf.h"
 #include "brdfbake/model.h"
 
 namespace brdfbake {
 
 // kSelNorm: the integral over the sphere of the squared ellipsoidal lobe
-// (model sel, seed 002) over alpha_x x alpha_y (sel_norm.h).
+// (model sel, [TokuyoshiHarada]) over alpha_x x alpha_y (sel_norm.h).
 enum class TableKind { kE, kEavg, kDfg, kSelNorm };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -171,13 +172,8 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress = nullptr);
 // whole bakes this way). Not while a bake runs.
 void ReleaseBakeCaches();
 
-// One texel of the E / dfg tables with the spec's model, masking and
-// integrator: E, dfg.scale and dfg.bias at (roughness, mu), and the
-// integrator's own error estimate of each.
-struct TexelEstimate {
-  double e = 0, scale = 0, bias = 0;
-  double err_e = 0, err_scale = 0, err_bias = 0;
-};
+// One texel of the E / dfg tables (brdfbake/estimate.h) with the spec's
+// model, masking and integrator at (roughness, mu).
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed = 0);
 
@@ -200,21 +196,6 @@ EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double a
 
 // "axes fastest first: ..." and the axis map, for the brdfbake.layout attribute.
 extern const char* const kLayoutText;
-
-// Writes `table` as a self-describing OpenEXR file (docs/format.md) through
-// an AtomicFile (output_file.h). Throws std::runtime_error.
-void WriteExr(const Table& table, const std::string& path);
-
-// Reads back a brdfbake EXR: every string attribute and every channel.
-struct ExrContents {
-  int width = 0, height = 0;
-  std::vector<std::pair<std::string, std::string>> attributes;
-  std::vector<std::pair<std::string, std::vector<float>>> channels;
-  bool half = false;
-  std::string Attribute(const std::string& name) const;
-  const std::vector<float>* ChannelData(const std::string& name) const;
-};
-ExrContents ReadExr(const std::string& path);
 
 }  // namespace brdfbake
 

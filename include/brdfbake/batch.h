@@ -7,7 +7,7 @@
 // runs one branch-free loop. Structure of arrays, float lanes, no Highway
 // type here. Directions and normals are unit vectors in the shading frame
 // (n = +z); outputs may not alias inputs. The kernels and their error bounds
-// are in src/simd/*-inl.h (bounds in kernel_bounds.h), the double scalar
+// are in src/kernels/*-inl.h (bounds in kernel_bounds.h), the double scalar
 // references in ggx.h, beckmann.h, std_ndf.h, ellipsoid.h and sel.h.
 
 #ifndef BRDFBAKE_BATCH_H_
@@ -15,8 +15,8 @@
 
 #include <cstddef>
 
-#include "brdfbake/brdf.h"
-#include "brdfbake/fresnel.h"
+#include "brdfbake/models/brdf.h"
+#include "brdfbake/models/fresnel.h"
 #include "brdfbake/model.h"
 
 namespace brdfbake {
@@ -64,9 +64,9 @@ enum class Quantity {
 // How SampleBatch draws normals m from uniform (u1, u2) in [0, 1]^2.
 enum class Sampler {
   kNdf,      // density D(m) m.z: phi = 2 pi u1, the radial CDF inverted at u2
-  kVisible,  // visible normals of wo (seed 003 for ggx, exact CDF inversion for
-             // beckmann, seed 000 Version 3 for the ellipsoid, the pseudo-VNIS
-             // of seed 004 Algorithm 1 for std); m = 0 for wo.z <= 0
+  kVisible,  // visible normals of wo ([Heitz18] for ggx, exact CDF inversion for
+             // beckmann, [Walter15] Version 3 for the ellipsoid, the pseudo-VNIS
+             // of [Ribardiere17] Algorithm 1 for std); m = 0 for wo.z <= 0
 };
 
 const char* QuantityName(Quantity q);  // D, Lambda, G1, pdf_ndf, K, G2, brdf, pdf_visible

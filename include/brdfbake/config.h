@@ -3,8 +3,8 @@
 //
 // The model families this build of the library contains (CMake option
 // BRDFBAKE_MODELS, e.g. -DBRDFBAKE_MODELS="ggx;beckmann"). GGX is always
-// built: the baker's quadrature maps every model through the GGX
-// visible-normal disk. std needs beckmann (its gamma = inf limit). The
+// built: the tests' independent reference rule (tests/reference/) maps
+// every model through the GGX visible-normal disk. std needs beckmann (its gamma = inf limit). The
 // scalar reference headers are header-only and always available; what a
 // family's absence removes is its SIMD kernels and its entry in the
 // run-time registry (eval, bake, grids, stability, scenes).

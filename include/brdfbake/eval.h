@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "brdfbake/brdf.h"
-#include "brdfbake/fresnel.h"
+#include "brdfbake/models/brdf.h"
+#include "brdfbake/models/fresnel.h"
 #include "brdfbake/model.h"
 
 namespace brdfbake {

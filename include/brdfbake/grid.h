@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "brdfbake/brdf.h"
-#include "brdfbake/fresnel.h"
+#include "brdfbake/models/brdf.h"
+#include "brdfbake/models/fresnel.h"
 #include "brdfbake/model.h"
 
 namespace brdfbake {
@@ -56,12 +56,6 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
                                                                 const Grid& grid);
 // The grid's one channel: f, f_cos or G1.
 const char* GridChannelName(GridKind k);
-
-// Writes a float image with string attributes, through a temporary file and
-// a rename. Throws std::runtime_error.
-void WriteImageExr(const std::string& path, int width, int height,
-                   const std::vector<std::pair<std::string, const std::vector<float>*>>& channels,
-                   const std::vector<std::pair<std::string, std::string>>& attributes);
 
 }  // namespace brdfbake
 

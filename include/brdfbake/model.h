@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "brdfbake/brdf.h"
+#include "brdfbake/models/brdf.h"
 #include "brdfbake/config.h"
-#include "brdfbake/fresnel.h"
-#include "brdfbake/vec3.h"
+#include "brdfbake/models/fresnel.h"
+#include "brdfbake/models/vec3.h"
 
 namespace brdfbake {
 

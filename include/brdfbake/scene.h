@@ -13,7 +13,8 @@
 #include <vector>
 
 #include "brdfbake/bake.h"
-#include "brdfbake/engine.h"
+#include "brdfbake/presets.h"
+#include "brdfbake/shaders.h"
 
 namespace brdfbake {
 

@@ -22,10 +22,10 @@ struct StabilityRow {
   double max_rel_error = 0;
   // The largest ratio of a sample's error to that sample's stated bound:
   // <= 1 means every sample is within its bound. The SIMD kernels' bounds
-  // are those of include/brdfbake/kernel_bounds.h (which depend on the
+  // are those of include/brdfbake/models/kernel_bounds.h (which depend on the
   // input: the exponent of Beckmann / STD, the condition of the ellipsoid's
   // matrix products); the float instantiation of the scalar reference is
-  // bounded by 1e-4 relative (see src/stability.cc).
+  // bounded by 1e-4 relative (see src/analysis/stability.cc).
   double max_error_over_bound = 0;
   bool Within() const { return non_finite == 0 && max_error_over_bound <= 1; }
 };

@@ -1,0 +1,93 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Tables in the shape engines load: an image layout (which axis is x, row
+// order, which quantity in which channel, pixel type) and the containers
+// engines read (OpenEXR, C/C++ headers, ES modules, KTX 2.0, DDS). The
+// numbers are always brdfbake's exact integration; only their arrangement
+// follows the engine. Shader lookups are in shaders.h, the engine presets
+// in presets.h.
+
+#ifndef BRDFBAKE_CONTAINERS_H_
+#define BRDFBAKE_CONTAINERS_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "brdfbake/bake.h"
+
+namespace brdfbake {
+
+// What an output channel holds.
+enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kZero, kOne };
+const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "0", "1"
+
+enum class PixelType { kFloat, kHalf, kUnorm16 };
+const char* PixelTypeName(PixelType p);  // float, half, unorm16
+
+enum class Container { kExr, kHeader, kJs, kKtx2, kDds };
+const char* ContainerName(Container c);  // exr, header, js, ktx2, dds
+// Throws std::invalid_argument naming the bad value.
+Container ParseContainer(const std::string& s);
+// The container a file name's extension names (.exr, .h/.hpp/.inc, .js/.mjs,
+// .ktx2, .dds); throws std::invalid_argument for any other.
+Container ContainerFromPath(const std::string& path);
+
+struct ImageLayout {
+  bool roughness_on_x = false;  // x = roughness, y = mu (three.js, Cycles)
+  bool flip_rows = false;       // row 0 holds the last entry of the y axis
+  struct Out {
+    std::string name;  // channel name (EXR) / role in the comments
+    Source source;
+  };
+  std::vector<Out> channels;
+  PixelType pixel = PixelType::kFloat;
+  bool header_half_bits = false;  // header container: uint16 half bits instead of floats
+};
+
+// The default layout of a table: x = mu, y = roughness, the table's own
+// channels (without `error`), its pixel type.
+ImageLayout DefaultLayout(const Table& table);
+
+// A table arranged by a layout: interleaved, row-major, values as stored
+// (rounded to the pixel type) and their encoding.
+struct Image {
+  int width = 0, height = 0, channels = 0;
+  PixelType pixel = PixelType::kFloat;
+  std::vector<double> values;     // width * height * channels, as stored
+  std::vector<uint16_t> bits16;   // half bits or unorm16 codes (16-bit types)
+  std::vector<std::string> channel_names;
+  std::vector<std::string> channel_sources;
+  // The axes along x then y (a copy of the table's, in image order) and
+  // whether rows are flipped, for the metadata and the shader functions.
+  std::vector<Axis> axes;
+  bool transposed = false;  // x = roughness
+  bool flip_rows = false;
+  double max_abs_error = 0;  // the table's integration error plus this image's rounding
+};
+
+// Throws std::invalid_argument if a channel's source is not in the table.
+Image ArrangeTable(const Table& table, const ImageLayout& layout);
+
+// Everything a loader needs, as "key: value" lines (table, model, masking,
+// axes with their maps, row order, channels, pixel type, error, preset).
+std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& table,
+                                                                  const Image& image,
+                                                                  const std::string& preset);
+
+// Writes `image` (with `table`'s conventions) as `container`, through an
+// AtomicFile. `symbol` names the arrays of the header and js containers.
+// Throws std::runtime_error (or std::invalid_argument for a pixel type the
+// container cannot hold).
+void WriteImage(const Table& table, const Image& image, Container container,
+                const std::string& path, const std::string& symbol, const std::string& preset);
+
+// Several arrays in one C/C++ header (Cycles' E and E_avg, say).
+void WriteHeader(const std::vector<std::pair<const Table*, const Image*>>& arrays,
+                 const std::vector<std::string>& symbols, const std::string& path,
+                 const std::string& preset);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_CONTAINERS_H_

@@ -1,0 +1,242 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "brdfbake/eval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "brdfbake/bake.h"
+#include "base/error.h"
+
+namespace brdfbake {
+namespace {
+
+std::string Fmt(double v) {
+  char buf[40];
+  std::snprintf(buf, sizeof(buf), "%.17g", v);
+  return buf;
+}
+
+}  // namespace
+
+const std::vector<std::string>& EvalQuantities() {
+  static const std::vector<std::string> kQ = {"D",   "Lambda", "G1", "G2",   "brdf",
+                                              "pdf", "K",      "E",  "dfg", "E_avg"};
+  return kQ;
+}
+
+bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg"; }
+
+void ValidateEvalRequest(const EvalRequest& req) {
+  const bool aniso = req.model.kind == ModelKind::kGgxAniso;
+  ModelParams params = req.model;
+  if (aniso) params.kind = ModelKind::kGgx;  // the widths come from roughness and anisotropy
+  ValidateModelParams(params);
+  if (aniso && !(req.anisotropy >= 0 && req.anisotropy <= 1)) {
+    Bad("--anisotropy must lie in [0, 1] (the KHR_materials_anisotropy strength)");
+  }
+  if (!aniso && req.anisotropy != 0) Bad("--anisotropy applies to --model ggx-aniso only");
+  if (req.quantities.empty()) Bad("--quantity: at least one quantity is required");
+  for (const std::string& q : req.quantities) {
+    bool ok = false;
+    for (const std::string& k : EvalQuantities()) ok |= q == k;
+    if (!ok) {
+      Bad("--quantity: unknown quantity '" + q +
+          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg or E_avg)");
+    }
+    const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
+    if (IsTableQuantity(q)) {
+      const ModelKind kind = req.model.kind;
+      const std::string m = req.model.name();
+      const bool ellipsoid = kind == ModelKind::kEllipsoid;
+      if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
+          !aniso && !ellipsoid) {
+        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std and ellipsoid only (got '" + m + "')");
+      }
+      if ((aniso || ellipsoid) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+      if (ellipsoid) continue;  // the material's own widths and angles
+      if (req.model.alpha_x != req.model.alpha_y) {
+        Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
+            "not --alpha-x/--alpha-y");
+      }
+      if (std::sqrt(req.model.alpha_x) > 1) {
+        Bad("--quantity: " + q + " is tabulated for roughness in [0, 1] (alpha <= 1)");
+      }
+      continue;
+    }
+    if (aniso) Bad("--quantity: ggx-aniso has the table quantities E and E_avg only (got '" + q + "')");
+    if (table_sweep) {
+      Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
+          "direction (got '" + q + "')");
+    }
+    const bool is_sel = req.model.kind == ModelKind::kSel;
+    if (is_sel != (q == "K")) {
+      Bad(is_sel ? "--quantity: model sel has only the quantity K"
+                 : "--quantity: K is defined for model sel only");
+    }
+  }
+  if (req.count < 1 || req.count > 10000000) Bad("--count must be in [1, 10000000]");
+  if (!std::isfinite(req.from) || !std::isfinite(req.to)) Bad("--from/--to must be finite");
+  if (req.sweep == "mu") {
+    if (req.from < -1 || req.from > 1 || req.to < -1 || req.to > 1) {
+      Bad("--from/--to must lie in [-1, 1] for --sweep mu");
+    }
+  } else if (req.sweep == "theta") {
+    if (req.from < 0 || req.from > 180 || req.to < 0 || req.to > 180) {
+      Bad("--from/--to must lie in [0, 180] degrees for --sweep theta");
+    }
+  } else if (req.sweep == "roughness") {
+    if (req.from < 0 || req.from > 1 || req.to < 0 || req.to > 1) {
+      Bad("--from/--to must lie in [0, 1] for --sweep roughness");
+    }
+  } else if (req.sweep != "none") {
+    Bad("--sweep: unknown sweep '" + req.sweep + "' (expected mu, theta, roughness or none)");
+  }
+  if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("--mu-o must lie in [0, 1]");
+  if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("--phi/--phi-o must be finite");
+  if (req.fresnel.kind == FresnelKind::kDielectric &&
+      (!std::isfinite(req.fresnel.eta) || !(req.fresnel.eta > 0))) {
+    Bad("--eta must be a finite number > 0");
+  }
+  for (int c = 0; c < 3; ++c) {
+    if (!std::isfinite(req.fresnel.f0[c]) || req.fresnel.f0[c] < 0 || req.fresnel.f0[c] > 1) {
+      Bad("--f0 values must lie in [0, 1]");
+    }
+    if (!std::isfinite(req.fresnel.n[c]) || !(req.fresnel.n[c] > 0) ||
+        !std::isfinite(req.fresnel.k[c]) || req.fresnel.k[c] < 0) {
+      Bad("--n must be > 0 and --k >= 0, finite");
+    }
+  }
+}
+
+namespace {
+
+// E, dfg and E_avg at (mu, roughness), through the bake's integrator.
+std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, double mu,
+                                 double roughness) {
+  BakeSpec spec;
+  spec.model = req.model;
+  spec.masking = req.masking;
+  if (spec.model.kind == ModelKind::kEllipsoid) {
+    // The material's E at the view (mu, --phi-o), or its E_avg.
+    spec.table = q == "E_avg" ? TableKind::kEavg : TableKind::kE;
+    if (q == "E_avg") {
+      spec.mu.size = 2;  // unused: E_avg has no axes
+      const Table t = Bake(spec);
+      return "," + Fmt(t.channels[0].values[0]) + "," + Fmt(t.integration_error);
+    }
+    spec.mu.size = spec.phi.size = 1;
+    spec.mu.placement = spec.phi.placement = Placement::kCenters;
+    spec.mu.min = spec.mu.max = std::clamp(mu, 0.0, 1.0);
+    spec.phi.min = spec.phi.max = std::fmod(std::fmod(req.phi_o, 2 * kPi<double>) + 2 * kPi<double>,
+                                            2 * kPi<double>);
+    const Table t = Bake(spec);
+    return "," + Fmt(t.channels[0].values[0]) + "," + Fmt(t.integration_error);
+  }
+  if (spec.Anisotropic()) {
+    if (q == "E_avg") {
+      const EavgEstimate e = IntegrateAnisoEavg(spec, roughness, req.anisotropy);
+      return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
+    }
+    const TexelEstimate v =
+        IntegrateAnisoTexel(spec, roughness, req.anisotropy, std::clamp(mu, 0.0, 1.0), req.phi_o);
+    return "," + Fmt(std::clamp(v.e, 0.0, 1.0)) + "," + Fmt(v.err_e);
+  }
+  if (q == "E_avg") {
+    const EavgEstimate e = IntegrateEavg(spec, roughness);
+    return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
+  }
+  spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
+  const TexelEstimate v = ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)));
+  if (q == "E") return "," + Fmt(v.e) + "," + Fmt(v.err_e);
+  return "," + Fmt(v.scale) + "," + Fmt(v.bias) + "," + Fmt(std::max(v.err_scale, v.err_bias));
+}
+
+}  // namespace
+
+void EvalCsv(const EvalRequest& req, std::ostream& out) {
+  ValidateEvalRequest(req);
+  const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
+  // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
+  const std::unique_ptr<Model> model =
+      req.model.kind == ModelKind::kGgxAniso ? nullptr : MakeModel(req.model);
+  const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
+  const bool grey = req.fresnel.IsGrey();
+
+  std::ostringstream header;
+  header << (req.sweep == "roughness" ? "roughness,mu" : req.sweep == "none" ? "mu,roughness"
+                                                                              : "mu,theta_deg");
+  for (const std::string& q : req.quantities) {
+    if (q == "E") {
+      header << ",E,E_error";
+    } else if (q == "dfg") {
+      header << ",dfg_scale,dfg_bias,dfg_error";
+    } else if (q == "E_avg") {
+      header << ",E_avg,E_avg_error";
+    } else if (q == "brdf" && !grey) {
+      header << ",brdf_r,brdf_g,brdf_b";
+    } else {
+      header << "," << q;
+    }
+  }
+  out << header.str() << "\n";
+
+  const double model_roughness = std::sqrt(req.model.alpha_x);
+  if (table_sweep) {
+    const int count = req.sweep == "none" ? 1 : req.count;
+    for (int i = 0; i < count; ++i) {
+      const double t = count == 1 ? 0.0 : static_cast<double>(i) / (count - 1);
+      const double r = req.sweep == "none" ? model_roughness : req.from + (req.to - req.from) * t;
+      std::string row = req.sweep == "none" ? Fmt(req.mu_o) + "," + Fmt(r)
+                                            : Fmt(r) + "," + Fmt(req.mu_o);
+      for (const std::string& q : req.quantities) row += TableQuantityColumns(req, q, req.mu_o, r);
+      out << row << "\n";
+    }
+    return;
+  }
+  for (int i = 0; i < req.count; ++i) {
+    const double t = req.count == 1 ? 0.0 : static_cast<double>(i) / (req.count - 1);
+    const double s = req.from + (req.to - req.from) * t;
+    double mu, theta_deg;
+    if (req.sweep == "mu") {
+      mu = s;
+      theta_deg = std::acos(mu) * 180.0 / kPi<double>;
+    } else {
+      theta_deg = s;
+      mu = std::cos(s * kPi<double> / 180.0);
+    }
+    const Vec3<double> w = FromMuPhi(mu, req.phi);
+    std::string row = Fmt(mu) + "," + Fmt(theta_deg);
+    for (const std::string& q : req.quantities) {
+      if (q == "D") {
+        row += "," + Fmt(model->D(w));
+      } else if (q == "Lambda") {
+        row += "," + Fmt(model->Lambda(w));
+      } else if (q == "G1") {
+        row += "," + Fmt(model->G1(w));
+      } else if (q == "G2") {
+        row += "," + Fmt(model->G2(w, wo, req.masking));
+      } else if (q == "pdf") {
+        row += "," + Fmt(model->Pdf(wo, w));
+      } else if (q == "K") {
+        row += "," + Fmt(model->K(w));
+      } else if (IsTableQuantity(q)) {
+        // The swept direction is the view.
+        row += TableQuantityColumns(req, q, mu, model_roughness);
+      } else if (q == "brdf") {
+        const int channels = grey ? 1 : 3;
+        for (int c = 0; c < channels; ++c) {
+          row += "," + Fmt(model->Brdf(w, wo, req.fresnel, req.masking, c));
+        }
+      }
+    }
+    out << row << "\n";
+  }
+}
+
+}  // namespace brdfbake

@@ -1,0 +1,58 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The per-model dispatchers behind batch.h, one per src/kernels/batch_<family>.cc:
+// each runs its model's kernels on the target dynamic dispatch picks, for a
+// (model, quantity) pair that batch.cc has checked. `in` holds 3 arrays (one
+// direction) or 6 (a pair); a sampler's `in` is {wo_x, wo_y, wo_z, u1, u2}
+// and its `out` {m_x, m_y, m_z}.
+
+#ifndef BRDFBAKE_SRC_KERNELS_BATCH_DISPATCH_H_
+#define BRDFBAKE_SRC_KERNELS_BATCH_DISPATCH_H_
+
+#include <cstddef>
+
+#include "brdfbake/batch.h"
+
+namespace brdfbake {
+
+using BatchEvalFn = void (*)(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                             size_t n);
+using BatchSampleFn = void (*)(const BatchModel& p, Sampler s, const float* const* in,
+                               float* const* out, size_t n);
+
+void GgxEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
+void GgxSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                    size_t n);
+void BeckmannEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                       size_t n);
+void BeckmannSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                         size_t n);
+void StudentTEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                       size_t n);
+void StudentTSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                         size_t n);
+void EllipsoidEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                        size_t n);
+void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                          size_t n);
+void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
+
+// In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
+// Model##Eval (and Model##Sample) and defines the dispatchers above.
+#define BRDFBAKE_BATCH_EVAL_DISPATCH(Model)                                                   \
+  HWY_EXPORT(Model##Eval);                                                                    \
+  void Model##EvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, \
+                        size_t n) {                                                           \
+    HWY_DYNAMIC_DISPATCH(Model##Eval)(p, q, in, out, n);                                      \
+  }
+#define BRDFBAKE_BATCH_SAMPLE_DISPATCH(Model)                                                 \
+  HWY_EXPORT(Model##Sample);                                                                  \
+  void Model##SampleBatch(const BatchModel& p, Sampler s, const float* const* in,             \
+                          float* const* out, size_t n) {                                      \
+    HWY_DYNAMIC_DISPATCH(Model##Sample)(p, s, in, out, n);                                    \
+  }
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_KERNELS_BATCH_DISPATCH_H_

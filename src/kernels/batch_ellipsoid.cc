@@ -1,0 +1,55 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The ellipsoid NDF's batch kernels (src/kernels/ellipsoid-inl.h, [Walter15])
+// behind batch.h, compiled once per Highway target by foreach_target.h.
+
+#include "kernels/batch_dispatch.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/kernels/batch_ellipsoid.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "kernels/batch_rows-inl.h"
+#include "kernels/ellipsoid-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+EllipsoidConsts<DF> MakeEllipsoidConsts(const BatchModel& p) {
+  return EllipsoidConsts<DF>(DF(), p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z, p.f0);
+}
+
+void EllipsoidEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
+  if (MicrofacetRows(EllipsoidKernels<DF>{c}, p, q, in, out, n)) return;
+  if (q != Quantity::kPdfVisible) return;
+  PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
+               auto mz) { return EllipsoidPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
+           in, out, n);
+}
+
+void EllipsoidSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                     size_t n) {
+  const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
+  VisibleRows([&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my,
+                  auto* mz) { EllipsoidSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz); },
+              in, out, n);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+BRDFBAKE_BATCH_EVAL_DISPATCH(Ellipsoid)
+BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ellipsoid)
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE

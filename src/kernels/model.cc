@@ -1,0 +1,248 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "brdfbake/model.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "brdfbake/models/beckmann.h"
+#include "brdfbake/models/ellipsoid.h"
+#include "brdfbake/models/ggx.h"
+#include "brdfbake/models/sel.h"
+#include "brdfbake/models/std_ndf.h"
+#include "base/error.h"
+
+namespace brdfbake {
+namespace {
+
+void CheckAlpha(const char* name, double a) {
+  if (!std::isfinite(a) || !(a > 0) || a > kMaxAlpha) {
+    std::ostringstream os;
+    os << name << " must lie in (0, " << kMaxAlpha << "] (got " << a << ")";
+    Bad(os.str());
+  }
+}
+
+void CheckAngle(const char* name, double t) {
+  if (!std::isfinite(t) || std::abs(t) > 1.5707963267948966) {
+    std::ostringstream os;
+    os << name << " must be finite and within [-pi/2, pi/2] radians (got " << t << ")";
+    Bad(os.str());
+  }
+}
+
+// Shared implementation for every microfacet distribution type.
+template <class Ndf>
+class NdfModel : public Model {
+ public:
+  NdfModel(const ModelParams& p, Ndf ndf) : p_(p), ndf_(ndf) {}
+  const ModelParams& params() const override { return p_; }
+  double D(const Vec3<double>& m) const override { return ndf_.D(m); }
+  double Lambda(const Vec3<double>& w) const override { return ndf_.Lambda(w); }
+  double G1(const Vec3<double>& w) const override { return ndf_.G1(w); }
+  double G2(const Vec3<double>& wi, const Vec3<double>& wo, Masking masking) const override {
+    Vec3<double> h;
+    if (!HalfVector(wi, wo, &h)) return 0.0;
+    return brdfbake::G2(ndf_, wi, wo, h, masking);
+  }
+  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel,
+              Masking masking, int channel) const override {
+    return brdfbake::Brdf(ndf_, fresnel, wi, wo, masking, channel);
+  }
+  Vec3<double> Sample(const Vec3<double>& wo, double u1, double u2) const override;
+  double Pdf(const Vec3<double>& wo, const Vec3<double>& m) const override;
+
+ private:
+  ModelParams p_;
+  Ndf ndf_;
+};
+
+#if BRDFBAKE_WITH_STD
+template <>
+Vec3<double> NdfModel<StudentTNdf<double>>::Sample(const Vec3<double>& wo, double u1,
+                                              double u2) const {
+  return ndf_.SamplePseudoVnis(wo, u1, u2);
+}
+template <>
+double NdfModel<StudentTNdf<double>>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
+  return ndf_.PdfPseudoVnis(wo, m);
+}
+#endif
+template <class Ndf>
+Vec3<double> NdfModel<Ndf>::Sample(const Vec3<double>& wo, double u1, double u2) const {
+  return ndf_.SampleVisible(wo, u1, u2);
+}
+template <class Ndf>
+double NdfModel<Ndf>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
+  return ndf_.PdfVisible(wo, m);
+}
+
+class SelModel : public Model {
+ public:
+  explicit SelModel(const ModelParams& p)
+      : p_(p), lobe_(SelLobe<double>::FromAngles(p.alpha_x, p.alpha_y, p.theta_x,
+                                                 p.theta_y, p.theta_z)) {}
+  const ModelParams& params() const override { return p_; }
+  bool IsMicrofacet() const override { return false; }
+  double D(const Vec3<double>&) const override { NotDefined("D"); }
+  double Lambda(const Vec3<double>&) const override { NotDefined("Lambda"); }
+  double G1(const Vec3<double>&) const override { NotDefined("G1"); }
+  double G2(const Vec3<double>&, const Vec3<double>&, Masking) const override {
+    NotDefined("G2");
+  }
+  double Brdf(const Vec3<double>&, const Vec3<double>&, const Fresnel&, Masking,
+              int) const override {
+    NotDefined("brdf");
+  }
+  Vec3<double> Sample(const Vec3<double>&, double, double) const override {
+    NotDefined("sampling");
+  }
+  double Pdf(const Vec3<double>&, const Vec3<double>&) const override { NotDefined("pdf"); }
+  double K(const Vec3<double>& w) const override { return lobe_.K(w); }
+
+ private:
+  [[noreturn]] static void NotDefined(const char* what) {
+    Bad(std::string("model sel (a lobe, not a microfacet BRDF) has no ") + what +
+        "; use the quantity K");
+  }
+  ModelParams p_;
+  SelLobe<double> lobe_;
+};
+
+}  // namespace
+
+double Model::K(const Vec3<double>&) const {
+  Bad("quantity K is defined for model sel only; model " + std::string(params().name()) + " has D, Lambda, G1, G2, brdf, pdf");
+}
+
+std::string ModelParams::ToJson() const {
+  nlohmann::json j;
+  j["name"] = name();
+  j["alpha_x"] = alpha_x;
+  j["alpha_y"] = alpha_y;
+  if (kind == ModelKind::kStudentT) {
+    if (std::isinf(gamma)) j["gamma"] = "inf"; else j["gamma"] = gamma;
+  }
+  if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
+    j["theta_x"] = theta_x;
+    j["theta_y"] = theta_y;
+    j["theta_z"] = theta_z;
+  }
+  return j.dump();
+}
+
+const std::vector<ModelInfo>& Models() {
+  static const std::vector<ModelInfo> kModels = {
+      {ModelKind::kGgx, "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from [Heitz18]"},
+#if BRDFBAKE_WITH_BECKMANN
+      {ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
+#endif
+#if BRDFBAKE_WITH_STD
+      {ModelKind::kStudentT, "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann"},
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
+      {ModelKind::kEllipsoid, "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, [Walter15]; A = S Rx Ry Rz"},
+#endif
+#if BRDFBAKE_WITH_SEL
+      {ModelKind::kSel, "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), [TokuyoshiHarada]"},
+#endif
+  };
+  return kModels;
+}
+
+namespace {
+
+constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
+                                ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso};
+
+std::string BuiltModels() {
+  std::string built;
+  for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(ModelName(m.kind));
+  return built;
+}
+
+}  // namespace
+
+const char* ModelName(ModelKind kind) {
+  switch (kind) {
+    case ModelKind::kGgx: return "ggx";
+    case ModelKind::kBeckmann: return "beckmann";
+    case ModelKind::kStudentT: return "std";
+    case ModelKind::kEllipsoid: return "ellipsoid";
+    case ModelKind::kSel: return "sel";
+    case ModelKind::kGgxAniso: return "ggx-aniso";
+  }
+  return "ggx";
+}
+
+ModelKind ParseModelKind(const std::string& name) {
+  for (ModelKind k : kKinds) {
+    if (name == ModelName(k)) return k;
+  }
+  Bad("unknown model '" + name + "' (expected " + BuiltModels() + ")");
+}
+
+bool ModelBuilt(ModelKind kind) {
+  if (kind == ModelKind::kGgxAniso) kind = ModelKind::kGgx;
+  for (const ModelInfo& m : Models()) {
+    if (kind == m.kind) return true;
+  }
+  return false;
+}
+
+void ValidateModelParams(const ModelParams& p) {
+  if (p.kind == ModelKind::kGgxAniso) {
+    Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval --quantity "
+        "E); for its BRDF give --model ggx with --alpha-x and --alpha-y");
+  }
+  if (!ModelBuilt(p.kind)) {
+    Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
+        BuiltModels() + ")");
+  }
+  CheckAlpha("alpha_x", p.alpha_x);
+  CheckAlpha("alpha_y", p.alpha_y);
+  if (p.kind == ModelKind::kStudentT) {
+    if (std::isnan(p.gamma) || !(p.gamma > 1.5)) {
+      std::ostringstream os;
+      os << "gamma must be > 1.5 or inf (got " << p.gamma << ")";
+      Bad(os.str());
+    }
+  }
+  if (p.kind == ModelKind::kEllipsoid || p.kind == ModelKind::kSel) {
+    CheckAngle("theta_x", p.theta_x);
+    CheckAngle("theta_y", p.theta_y);
+    CheckAngle("theta_z", p.theta_z);
+  }
+}
+
+std::unique_ptr<Model> MakeModel(const ModelParams& p) {
+  ValidateModelParams(p);
+#if BRDFBAKE_WITH_BECKMANN
+  if (p.kind == ModelKind::kBeckmann) {
+    return std::make_unique<NdfModel<BeckmannNdf<double>>>(
+        p, BeckmannNdf<double>(p.alpha_x, p.alpha_y));
+  }
+#endif
+#if BRDFBAKE_WITH_STD
+  if (p.kind == ModelKind::kStudentT) {
+    return std::make_unique<NdfModel<StudentTNdf<double>>>(
+        p, StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
+  }
+#endif
+#if BRDFBAKE_WITH_ELLIPSOID
+  if (p.kind == ModelKind::kEllipsoid) {
+    return std::make_unique<NdfModel<EllipsoidNdf<double>>>(
+        p, EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z));
+  }
+#endif
+#if BRDFBAKE_WITH_SEL
+  if (p.kind == ModelKind::kSel) return std::make_unique<SelModel>(p);
+#endif
+  return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
+}
+
+}  // namespace brdfbake

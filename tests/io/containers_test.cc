@@ -1,0 +1,467 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Engine presets and containers. Each preset's texels are checked against
+// the engine's own layout written out independently here (which axis is x,
+// texel placement, warps, row order, channel meaning, clamps), each
+// container is read back by a reader written from its specification (KTX
+// 2.0, DDS with the DX10 header, the C header and ES module as text) or by
+// OpenImageIO where Debian's version reads the format (OpenEXR), and the
+// three.js and Bevy presets are compared with the tables those engines ship.
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "brdfbake/exr.h"
+#include "brdfbake/bake.h"
+#include "brdfbake/containers.h"
+#include "brdfbake/presets.h"
+#include "brdfbake/shaders.h"
+#include "util/file_util.h"
+
+namespace brdfbake {
+namespace {
+
+using test::Have;
+using test::Slurp;
+using test::WriteText;
+
+std::string Scratch(const std::string& name) { return test::Scratch("engine_" + name); }
+
+struct Baked {
+  Table table;
+  Image image;
+};
+
+Baked BakePreset(const PresetTable& pt) {
+  Baked b{Bake(pt.spec), {}};
+  b.image = ArrangeTable(b.table, pt.layout);
+  return b;
+}
+
+const PresetTable& TableOf(const std::string& preset, size_t i = 0) {
+  return FindPreset(preset).tables.at(i);
+}
+
+// The exact values at a physical (NoV, r): E, dfg.scale, dfg.bias.
+TexelEstimate Exact(double nov, double r, TableKind kind = TableKind::kDfg) {
+  BakeSpec spec;
+  spec.table = kind;
+  return IntegrateTexel(spec, r, nov);
+}
+
+double Value(const Image& im, int x, int y, int c) {
+  return im.values[(size_t(y) * im.width + x) * im.channels + c];
+}
+
+// Checks sampled texels of a preset's image against the engine's layout:
+// `where(x, y)` gives the texel's physical (NoV, r) as the engine defines
+// them, `expect(exact)` the channel values.
+void CheckLayout(const Image& im, int width, int height,
+                 const std::function<std::pair<double, double>(int, int)>& where,
+                 const std::function<std::vector<double>(const TexelEstimate&)>& expect,
+                 double rel_tol, const char* what, double abs_tol = 1e-6) {
+  ASSERT_EQ(im.width, width) << what;
+  ASSERT_EQ(im.height, height) << what;
+  for (int y = 0; y < height; y += std::max(1, height / 7)) {
+    for (int x = 0; x < width; x += std::max(1, width / 9)) {
+      for (const auto& p : {std::pair<int, int>{x, y}, {width - 1, y}, {x, height - 1}}) {
+        const auto [nov, r] = where(p.first, p.second);
+        const std::vector<double> want = expect(Exact(nov, r));
+        ASSERT_EQ(int(want.size()), im.channels) << what;
+        for (int c = 0; c < im.channels; ++c) {
+          EXPECT_NEAR(Value(im, p.first, p.second, c), want[c], rel_tol * std::abs(want[c]) + abs_tol)
+              << what << " texel (" << p.first << ", " << p.second << ") channel " << c << " NoV " << nov
+              << " r " << r;
+        }
+      }
+    }
+  }
+}
+
+double Centre(int i, int n) { return (i + 0.5) / n; }
+double Edge(int i, int n) { return double(i) / (n - 1); }
+
+constexpr double kHalfRel = 0x1p-10;  // half rounding (with the double-to-float step)
+
+TEST(PresetTest, Filament) {
+  const Baked b = BakePreset(TableOf("filament"));
+  // x = NoV at centres; row 0 is r = 1 (flipped); R = bias, G = E, B = 0.
+  CheckLayout(b.image, 128, 128, [](int x, int y) {
+    return std::pair{Centre(x, 128), 1.0 - Centre(y, 128)};
+  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0}; },
+  kHalfRel, "filament");
+}
+
+TEST(PresetTest, Unreal) {
+  const Baked b = BakePreset(TableOf("unreal"));
+  CheckLayout(b.image, 128, 32, [](int x, int y) { return std::pair{Centre(x, 128), Centre(y, 32)}; },
+              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, 0.0, "unreal",
+              0.5 / 65535 + 1e-7);
+  // unorm16 codes: round(v * 65535).
+  const TexelEstimate v = Exact(Centre(5, 128), Centre(7, 32));
+  EXPECT_EQ(b.image.bits16[(7 * 128 + 5) * 2], uint16_t(std::lround(v.scale * 65535)));
+}
+
+TEST(PresetTest, Hdrp) {
+  const Baked b = BakePreset(TableOf("hdrp"));
+  // Texel i holds coordinate c = i / (N - 1) (endpoints on texel centres);
+  // x = sqrt(NoV), so NoV = c^2; R = bias, G = E.
+  CheckLayout(b.image, 64, 64, [](int x, int y) {
+    const double c = Edge(x, 64);
+    return std::pair{c * c, Edge(y, 64)};
+  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0}; },
+  kHalfRel, "hdrp");
+}
+
+TEST(PresetTest, Godot) {
+  const Baked b = BakePreset(TableOf("godot"));
+  CheckLayout(b.image, 128, 128, [](int x, int y) {
+    return std::pair{Centre(x, 128), 1.0 - Centre(y, 128)};
+  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0, 1.0}; },
+  kHalfRel, "godot");
+}
+
+TEST(PresetTest, Bevy) {
+  const Baked b = BakePreset(TableOf("bevy"));
+  CheckLayout(b.image, 64, 64, [](int x, int y) { return std::pair{Centre(x, 64), Centre(y, 64)}; },
+              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "bevy");
+}
+
+TEST(PresetTest, Three) {
+  const Baked b = BakePreset(TableOf("three"));
+  // x = roughness, y = NoV.
+  CheckLayout(b.image, 16, 16, [](int x, int y) { return std::pair{Centre(y, 16), Centre(x, 16)}; },
+              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "three");
+}
+
+TEST(PresetTest, Materialx) {
+  const Baked b = BakePreset(TableOf("materialx"));
+  // y = alpha at centres: r = sqrt(alpha).
+  CheckLayout(b.image, 64, 64, [](int x, int y) { return std::pair{Centre(x, 64), std::sqrt(Centre(y, 64))}; },
+              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias, 0.0}; }, 1e-7, "materialx");
+}
+
+TEST(PresetTest, CyclesAndEnterprisePbr) {
+  const Baked e = BakePreset(TableOf("cycles", 0));
+  // x = r, y = NoV, edges, both clamped at 1e-4.
+  CheckLayout(e.image, 32, 32, [](int x, int y) {
+    return std::pair{std::max(Edge(y, 32), 1e-4), std::max(Edge(x, 32), 1e-4)};
+  }, [](const TexelEstimate& v) { return std::vector<double>{v.e}; }, 1e-7, "cycles E");
+  const Baked a = BakePreset(TableOf("cycles", 1));
+  ASSERT_EQ(a.image.width, 32);
+  ASSERT_EQ(a.image.height, 1);
+  EXPECT_NEAR(a.image.values[31], IntegrateEavg(BakeSpec(), 1.0).value, 1e-7);
+  // Cycles' own E_avg at r = 1 is 0.409137 (its table, six decimals).
+  EXPECT_NEAR(a.image.values[31], 0.409137, 5e-6);
+  const Baked p = BakePreset(TableOf("enterprise-pbr", 0));
+  CheckLayout(p.image, 32, 32, [](int x, int y) { return std::pair{Centre(x, 32), Centre(y, 32)}; },
+              [](const TexelEstimate& v) { return std::vector<double>{v.e}; }, 1e-7, "enterprise-pbr E");
+}
+
+// ------------------------------------------------------------ containers
+
+// KTX 2.0, read as its specification lays it out (section 3: header,
+// index, level index; section 4: the data format descriptor; section 5:
+// key/value data).
+struct Ktx2 {
+  uint32_t vk_format = 0, type_size = 0, width = 0, height = 0, depth = 0, layers = 0, faces = 0, levels = 0,
+           supercompression = 0;
+  std::map<std::string, std::string> kv;
+  std::vector<std::string> kv_order;
+  uint32_t dfd_block_size = 0, bytes_plane0 = 0, color_model = 0, transfer = 0;
+  std::vector<uint32_t> sample_words;
+  std::string data;
+  uint64_t data_offset = 0;
+};
+
+uint32_t U32(const std::string& s, size_t at) {
+  uint32_t v = 0;
+  for (int k = 3; k >= 0; --k) v = (v << 8) | uint8_t(s[at + k]);
+  return v;
+}
+uint64_t U64(const std::string& s, size_t at) { return U32(s, at) | (uint64_t(U32(s, at + 4)) << 32); }
+
+Ktx2 ReadKtx2(const std::string& f) {
+  Ktx2 k;
+  const unsigned char id[12] = {0xAB, 0x4B, 0x54, 0x58, 0x20, 0x32, 0x30, 0xBB, 0x0D, 0x0A, 0x1A, 0x0A};
+  EXPECT_EQ(std::memcmp(f.data(), id, 12), 0) << "KTX2 identifier";
+  uint32_t* fields[] = {&k.vk_format, &k.type_size, &k.width, &k.height, &k.depth,
+                        &k.layers,    &k.faces,     &k.levels, &k.supercompression};
+  for (int i = 0; i < 9; ++i) *fields[i] = U32(f, 12 + 4 * i);
+  const uint32_t dfd_off = U32(f, 48), dfd_len = U32(f, 52), kvd_off = U32(f, 56), kvd_len = U32(f, 60);
+  EXPECT_EQ(U64(f, 64), 0u);  // no supercompression global data
+  EXPECT_EQ(U64(f, 72), 0u);
+  k.data_offset = U64(f, 80);
+  const uint64_t len = U64(f, 88), ulen = U64(f, 96);
+  EXPECT_EQ(len, ulen);
+  EXPECT_EQ(U32(f, dfd_off), dfd_len);
+  EXPECT_EQ(U32(f, dfd_off + 4), 0u);  // vendor Khronos, basic descriptor
+  const uint32_t w2 = U32(f, dfd_off + 8);
+  EXPECT_EQ(w2 & 0xffff, 2u);  // version 1.3
+  k.dfd_block_size = w2 >> 16;
+  EXPECT_EQ(dfd_len, 4 + k.dfd_block_size);
+  const uint32_t w3 = U32(f, dfd_off + 12);
+  k.color_model = w3 & 0xff;
+  k.transfer = (w3 >> 16) & 0xff;
+  k.bytes_plane0 = U32(f, dfd_off + 20) & 0xff;
+  for (uint32_t at = dfd_off + 28; at < dfd_off + dfd_len; at += 4) k.sample_words.push_back(U32(f, at));
+  for (size_t at = kvd_off; at < kvd_off + kvd_len;) {
+    const uint32_t n = U32(f, at);
+    const std::string entry = f.substr(at + 4, n);
+    const size_t nul = entry.find('\0');
+    const std::string key = entry.substr(0, nul);
+    std::string value = entry.substr(nul + 1);
+    if (!value.empty() && value.back() == '\0') value.pop_back();
+    k.kv[key] = value;
+    k.kv_order.push_back(key);
+    at += 4 + n;
+    at = (at + 3) & ~size_t(3);
+  }
+  k.data = f.substr(k.data_offset, len);
+  return k;
+}
+
+TEST(ContainerTest, Ktx2FollowsTheSpecification) {
+  const Baked b = BakePreset(TableOf("bevy"));
+  const std::string dir = Scratch("ktx2");
+  WriteImage(b.table, b.image, Container::kKtx2, dir + "/dfg.ktx2", "dfg", "bevy");
+  const Ktx2 k = ReadKtx2(Slurp(dir + "/dfg.ktx2"));
+  EXPECT_EQ(k.vk_format, 83u);  // VK_FORMAT_R16G16_SFLOAT
+  EXPECT_EQ(k.type_size, 2u);
+  EXPECT_EQ(k.width, 64u);
+  EXPECT_EQ(k.height, 64u);
+  EXPECT_EQ(k.depth, 0u);
+  EXPECT_EQ(k.layers, 0u);
+  EXPECT_EQ(k.faces, 1u);
+  EXPECT_EQ(k.levels, 1u);
+  EXPECT_EQ(k.supercompression, 0u);
+  EXPECT_EQ(k.color_model, 1u);  // RGBSDA
+  EXPECT_EQ(k.transfer, 1u);     // linear
+  EXPECT_EQ(k.dfd_block_size, 24u + 16u * 2);
+  EXPECT_EQ(k.bytes_plane0, 4u);
+  ASSERT_EQ(k.sample_words.size(), 8u);
+  // Sample 0: R at bit 0, 16 bits, float | signed; sample 1: G at bit 16.
+  EXPECT_EQ(k.sample_words[0], 0u | (15u << 16) | (0xC0u << 24));
+  EXPECT_EQ(k.sample_words[4], 16u | (15u << 16) | ((0xC0u | 1u) << 24));
+  EXPECT_EQ(k.sample_words[2], 0xBF800000u);
+  EXPECT_EQ(k.sample_words[3], 0x3F800000u);
+  EXPECT_EQ(k.data_offset % 4, 0u);
+  EXPECT_TRUE(std::is_sorted(k.kv_order.begin(), k.kv_order.end()));
+  EXPECT_EQ(k.kv.at("KTXorientation"), "rd");
+  EXPECT_EQ(k.kv.at("brdfbake.table"), "dfg");
+  EXPECT_EQ(k.kv.at("brdfbake.preset"), "bevy");
+  EXPECT_FALSE(k.kv.at("brdfbake.axes").empty());
+  ASSERT_EQ(k.data.size(), 64u * 64 * 2 * 2);
+  for (size_t i = 0; i < 64 * 64 * 2; ++i) {
+    const uint16_t bits = uint16_t(uint8_t(k.data[2 * i]) | (uint8_t(k.data[2 * i + 1]) << 8));
+    ASSERT_EQ(bits, b.image.bits16[i]) << i;
+  }
+  // The float variant: R32G32_SFLOAT.
+  ImageLayout l = TableOf("bevy").layout;
+  l.pixel = PixelType::kFloat;
+  const Image fim = ArrangeTable(b.table, l);
+  WriteImage(b.table, fim, Container::kKtx2, dir + "/dfg32.ktx2", "dfg", "");
+  const Ktx2 k32 = ReadKtx2(Slurp(dir + "/dfg32.ktx2"));
+  EXPECT_EQ(k32.vk_format, 103u);  // VK_FORMAT_R32G32_SFLOAT
+  EXPECT_EQ(k32.type_size, 4u);
+  float first;
+  std::memcpy(&first, k32.data.data(), 4);
+  EXPECT_EQ(double(first), fim.values[0]);
+}
+
+// DDS: "DDS ", DDS_HEADER (124 bytes), DDS_HEADER_DXT10 (20 bytes), data.
+TEST(ContainerTest, DdsFollowsTheDx10Layout) {
+  const Baked b = BakePreset(TableOf("unreal"));
+  const std::string dir = Scratch("dds");
+  WriteImage(b.table, b.image, Container::kDds, dir + "/gf.dds", "gf", "unreal");
+  const std::string f = Slurp(dir + "/gf.dds");
+  ASSERT_EQ(f.substr(0, 4), "DDS ");
+  EXPECT_EQ(U32(f, 4), 124u);
+  EXPECT_EQ(U32(f, 4 + 8), 32u);    // height
+  EXPECT_EQ(U32(f, 4 + 12), 128u);  // width
+  EXPECT_EQ(U32(f, 4 + 16), 128u * 4);  // pitch
+  EXPECT_EQ(U32(f, 4 + 72), 32u);   // pixel format size
+  EXPECT_EQ(U32(f, 4 + 76), 4u);    // DDPF_FOURCC
+  EXPECT_EQ(f.substr(4 + 80, 4), "DX10");
+  EXPECT_EQ(U32(f, 4 + 104), 0x1000u);  // DDSCAPS_TEXTURE
+  EXPECT_EQ(U32(f, 128), 35u);      // DXGI_FORMAT_R16G16_UNORM
+  EXPECT_EQ(U32(f, 132), 3u);       // TEXTURE2D
+  EXPECT_EQ(U32(f, 140), 1u);       // array size
+  ASSERT_EQ(f.size(), 148u + 128 * 32 * 4);
+  for (size_t i = 0; i < 128 * 32 * 2; ++i) {
+    const uint16_t code = uint16_t(uint8_t(f[148 + 2 * i]) | (uint8_t(f[148 + 2 * i + 1]) << 8));
+    ASSERT_EQ(code, b.image.bits16[i]) << i;
+  }
+  ImageLayout l = TableOf("unreal").layout;
+  l.pixel = PixelType::kHalf;
+  WriteImage(b.table, ArrangeTable(b.table, l), Container::kDds, dir + "/gf16.dds", "gf", "");
+  EXPECT_EQ(U32(Slurp(dir + "/gf16.dds"), 128), 34u);  // DXGI_FORMAT_R16G16_FLOAT
+}
+
+// The numbers of a C array or a JS typed array, in order.
+std::vector<double> ArrayNumbers(const std::string& text, const std::string& symbol) {
+  const size_t at = text.find(symbol + "[");
+  const size_t js = text.find(symbol + " = new ");
+  const size_t start = text.find_first_of("{[", (at != std::string::npos ? at + symbol.size() + 1 : js) + 1);
+  const size_t end = text.find_first_of("}]", start + 1);
+  std::vector<double> out;
+  std::stringstream ss(text.substr(start + 1, end - start - 1));
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const size_t b = item.find_first_not_of(" \n([");
+    if (b == std::string::npos) continue;
+    item = item.substr(b, item.find_last_not_of(" \n") - b + 1);
+    if (item.rfind("0x", 0) != 0 && !item.empty() && item.back() == 'f') item.pop_back();  // 1.5f
+    out.push_back(item.rfind("0x", 0) == 0 ? double(std::stoul(item, nullptr, 16)) : std::stod(item));
+  }
+  return out;
+}
+
+TEST(ContainerTest, HeaderAndModuleReadBack) {
+  const std::string dir = Scratch("text");
+  // Filament: uint16 half bits in a header; rows flipped.
+  const Baked f = BakePreset(TableOf("filament"));
+  WriteImage(f.table, f.image, Container::kHeader, dir + "/dfg.h", "DFG_LUT", "filament");
+  const std::string h = Slurp(dir + "/dfg.h");
+  EXPECT_NE(h.find("brdfbake.preset: filament"), std::string::npos);
+  EXPECT_NE(h.find("row 0 = the LAST roughness entry"), std::string::npos);
+  EXPECT_NE(h.find("inline constexpr uint16_t DFG_LUT[49152]"), std::string::npos);
+  const std::vector<double> bits = ArrayNumbers(h, "DFG_LUT");
+  ASSERT_EQ(bits.size(), f.image.bits16.size());
+  for (size_t i = 0; i < bits.size(); ++i) ASSERT_EQ(uint16_t(bits[i]), f.image.bits16[i]) << i;
+  // Cycles: float arrays, two tables in one header.
+  const Preset& cycles = FindPreset("cycles");
+  const Baked e = BakePreset(cycles.tables[0]), a = BakePreset(cycles.tables[1]);
+  WriteHeader({{&e.table, &e.image}, {&a.table, &a.image}}, {"table_ggx_E", "table_ggx_Eavg"},
+              dir + "/ggx.h", "cycles");
+  const std::string c = Slurp(dir + "/ggx.h");
+  const std::vector<double> ev = ArrayNumbers(c, "table_ggx_E"), av = ArrayNumbers(c, "table_ggx_Eavg");
+  ASSERT_EQ(ev.size(), 1024u);
+  ASSERT_EQ(av.size(), 32u);
+  for (size_t i = 0; i < ev.size(); ++i) ASSERT_EQ(float(ev[i]), float(e.image.values[i])) << i;
+  for (size_t i = 0; i < av.size(); ++i) ASSERT_EQ(float(av[i]), float(a.image.values[i])) << i;
+  // The header compiles (C++17), when a compiler is at hand.
+  if (std::system("command -v c++ >/dev/null 2>&1") == 0) {
+    WriteText(dir + "/use.cc", "#include \"ggx.h\"\n#include \"dfg.h\"\nstatic_assert(table_ggx_E_width == 32);\n"
+                               "int main() { return int(table_ggx_E[0] + DFG_LUT[0]) * 0; }\n");
+    EXPECT_EQ(std::system(("c++ -std=c++17 -fsyntax-only -I" + dir + " " + dir + "/use.cc").c_str()), 0);
+  }
+  // three.js: an ES module with a Uint16Array of halves.
+  const Baked t = BakePreset(TableOf("three"));
+  WriteImage(t.table, t.image, Container::kJs, dir + "/DFGLUTData.js", "DFGLUTData", "three");
+  const std::string js = Slurp(dir + "/DFGLUTData.js");
+  EXPECT_NE(js.find("export const width = 16;"), std::string::npos);
+  EXPECT_NE(js.find("export const format = 'RG16F';"), std::string::npos);
+  EXPECT_NE(js.find("export const DFGLUTData = new Uint16Array(["), std::string::npos);
+  const std::vector<double> jv = ArrayNumbers(js, "DFGLUTData");
+  ASSERT_EQ(jv.size(), 512u);
+  for (size_t i = 0; i < jv.size(); ++i) ASSERT_EQ(uint16_t(jv[i]), t.image.bits16[i]) << i;
+}
+
+TEST(ContainerTest, ExrReadsBackWithOpenImageIo) {
+  const Baked b = BakePreset(TableOf("materialx"));
+  const std::string dir = Scratch("exr");
+  const std::string path = dir + "/albedo.exr";
+  WriteImage(b.table, b.image, Container::kExr, path, "albedo", "materialx");
+  const ExrContents c = ReadExr(path);  // OpenEXR
+  ASSERT_EQ(c.channels.size(), 3u);
+  EXPECT_EQ(c.channels[0].first, "B");  // OpenEXR sorts; image readers map R, G, B by name
+  EXPECT_EQ(c.Attribute("brdfbake.preset"), "materialx");
+  const std::vector<float>& r = *c.ChannelData("R");
+  for (size_t i = 0; i < r.size(); ++i) ASSERT_EQ(double(r[i]), b.image.values[i * 3]) << i;
+  if (std::system("command -v oiiotool >/dev/null 2>&1") != 0) GTEST_SKIP() << "no oiiotool";
+  // OpenImageIO, independently: a few texels by value.
+  const std::string cmd = "oiiotool --dumpdata " + path + " > " + dir + "/dump.txt 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string dump = Slurp(dir + "/dump.txt");
+  for (int y : {0, 17, 63}) {
+    for (int x : {0, 40, 63}) {
+      const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
+      const size_t at = dump.find(key);
+      ASSERT_NE(at, std::string::npos) << key;
+      std::stringstream ss(dump.substr(at + key.size(), 80));
+      double v0, v1, v2;
+      ss >> v0 >> v1 >> v2;
+      EXPECT_NEAR(v0, Value(b.image, x, y, 0), 1e-6) << key;
+      EXPECT_NEAR(v1, Value(b.image, x, y, 1), 1e-6) << key;
+      EXPECT_NEAR(v2, Value(b.image, x, y, 2), 1e-6) << key;
+    }
+  }
+}
+
+// ------------------------------------------------- the engines' own tables
+
+struct EngineTable {
+  std::vector<std::vector<std::vector<double>>> data;  // [row][col][channel]
+};
+
+EngineTable LoadEngine(const std::string& file) {
+  const nlohmann::json j = nlohmann::json::parse(Slurp(std::string(BRDFBAKE_TEST_DATA) + "/" + file));
+  return {j.at("data").get<std::vector<std::vector<std::vector<double>>>>()};
+}
+
+struct Diff {
+  double max = 0, rms = 0;
+};
+
+Diff Compare(const Image& im, const EngineTable& e, bool transpose_ours) {
+  Diff d;
+  double sum2 = 0;
+  int n = 0;
+  for (size_t row = 0; row < e.data.size(); ++row) {
+    for (size_t col = 0; col < e.data[row].size(); ++col) {
+      for (int c = 0; c < 2; ++c) {
+        const int x = int(transpose_ours ? row : col), y = int(transpose_ours ? col : row);
+        const double diff = Value(im, x, y, c) - e.data[row][col][c];
+        d.max = std::max(d.max, std::abs(diff));
+        sum2 += diff * diff;
+        ++n;
+      }
+    }
+  }
+  d.rms = std::sqrt(sum2 / n);
+  return d;
+}
+
+TEST(EngineTablesTest, ThreeJsAndBevyMatchTexelByTexel) {
+  // three.js: rows NoV, columns roughness; our three preset has x =
+  // roughness (columns), y = NoV (rows): the same arrangement.
+  const Baked t = BakePreset(TableOf("three"));
+  const EngineTable three = LoadEngine("threejs_dfg_16.json");
+  const Diff dt = Compare(t.image, three, false);
+  const Diff dt_wrong = Compare(t.image, three, true);
+  // Bevy: rows roughness, columns NoV: our bevy preset.
+  const Baked b = BakePreset(TableOf("bevy"));
+  const EngineTable bevy = LoadEngine("bevy_dfg_64.json");
+  const Diff db = Compare(b.image, bevy, false);
+  const Diff db_wrong = Compare(b.image, bevy, true);
+  std::printf("three.js 16x16 against ours: max %.3g, RMS %.3g (transposed: max %.3g)\n", dt.max, dt.rms,
+              dt_wrong.max);
+  std::printf("Bevy 64x64 against ours: max %.3g, RMS %.3g (transposed: max %.3g)\n", db.max, db.rms,
+              db_wrong.max);
+  // The engines integrate by sampling: about 1e-3 RMS, up to 1.4e-2 at
+  // grazing NoV and small roughness. A layout error shows as tenths.
+  EXPECT_LT(dt.rms, 3e-3);
+  EXPECT_LT(dt.max, 2e-2);
+  EXPECT_LT(db.rms, 3e-3);
+  EXPECT_LT(db.max, 2e-2);
+  EXPECT_GT(dt_wrong.max, 0.1);
+  EXPECT_GT(db_wrong.max, 0.1);
+}
+
+}  // namespace
+}  // namespace brdfbake

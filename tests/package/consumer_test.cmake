@@ -1,0 +1,49 @@
+# Copyright 2026 the brdfbake authors.
+# SPDX-License-Identifier: Apache-2.0
+#
+# The installed package as a consumer sees it: `cmake --install` of this
+# build into a fresh prefix, then examples/consumer configured with
+# find_package(brdfbake) against that prefix, built and run; and the same
+# example with brdfbake as a subdirectory (add_subdirectory).
+# Run as cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P consumer_test.cmake.
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${ARGN}: exit ${rc}\n${out}\n${err}")
+  endif()
+  message(STATUS "${out}")
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+foreach(f include/brdfbake/batch.h include/brdfbake/models/ggx.h include/brdfbake/version.h
+          lib/cmake/brdfbake/brdfbakeConfig.cmake bin/brdfbake)
+  if(NOT EXISTS ${prefix}/${f})
+    message(FATAL_ERROR "not installed: ${f}")
+  endif()
+endforeach()
+
+# find_package against the installed tree; a build type the subproject
+# check below must leave alone.
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/installed
+    -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/installed -j2)
+run(${WORK_DIR}/installed/shade)
+run(${WORK_DIR}/installed/bake_one)
+
+# add_subdirectory: configured (not built: that would compile the library a
+# second time) with a parent build type it must keep, and with the
+# brdfbake:: targets defined.
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/subdir
+    -DBRDFBAKE_SOURCE_DIR=${SOURCE_DIR} -DCMAKE_BUILD_TYPE=RelWithDebInfo)
+file(STRINGS ${WORK_DIR}/subdir/CMakeCache.txt type REGEX "^CMAKE_BUILD_TYPE:")
+if(NOT type STREQUAL "CMAKE_BUILD_TYPE:STRING=RelWithDebInfo")
+  message(FATAL_ERROR "add_subdirectory changed the parent's build type: ${type}")
+endif()
+file(STRINGS ${WORK_DIR}/subdir/CMakeCache.txt tests REGEX "^BRDFBAKE_BUILD_TESTS:")
+if(NOT tests STREQUAL "BRDFBAKE_BUILD_TESTS:BOOL=OFF")
+  message(FATAL_ERROR "a subproject builds brdfbake's tests: ${tests}")
+endif()
+file(REMOVE_RECURSE ${WORK_DIR})

@@ -1,0 +1,292 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// Scenes: the example TOML and glTF scenes load and plan exactly the tables
+// their materials need (no model, gamma, roughness range or anisotropy they
+// do not use), the planned resolution meets the error target under a GPU's
+// bilinear lookup at random points, a scene bake writes those files and a
+// manifest and nothing else, and malformed scenes (fixed cases and a seeded
+// fuzz) get one-line errors naming the file, the material and the field.
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "brdfbake/exr.h"
+#include "brdfbake/scene.h"
+#include "util/file_util.h"
+#include "util/lookup_util.h"
+
+namespace brdfbake {
+namespace {
+
+using test::Slurp;
+using test::WriteText;
+
+const std::string kExamples = std::string(BRDFBAKE_TEST_DATA) + "/../../examples";
+
+std::string Scratch(const std::string& name) { return test::Scratch("scene_" + name); }
+
+const PlannedTable* Find(const ScenePlan& plan, const std::string& file) {
+  for (const PlannedTable& p : plan.tables) {
+    if (p.file == file) return &p;
+  }
+  return nullptr;
+}
+
+TEST(SceneTest, TomlExamplePlansExactlyWhatItsMaterialsNeed) {
+  const Scene s = LoadScene(kExamples + "/scene.toml");
+  ASSERT_EQ(s.materials.size(), 3u);
+  EXPECT_EQ(s.engine.max_lut_size, 64);
+  EXPECT_EQ(s.engine.pixel, PixelType::kHalf);
+  const ScenePlan plan = PlanScene(s);
+  std::vector<std::string> files;
+  for (const PlannedTable& p : plan.tables) files.push_back(p.file);
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"E_avg_ggx.exr", "E_avg_std_g3.exr", "E_ggx.exr", "E_std_g3.exr",
+                                             "dfg_ggx.exr", "dfg_std_g3.exr"}));
+  // ggx: the union of the materials' roughness, [0.3, 0.6], nothing more.
+  const PlannedTable* e = Find(plan, "E_ggx.exr");
+  ASSERT_NE(e, nullptr);
+  EXPECT_EQ(e->spec.roughness.min, 0.3);
+  EXPECT_EQ(e->spec.roughness.max, 0.6);
+  EXPECT_EQ(e->materials, (std::vector<std::string>{"brushed_steel", "painted_metal"}));
+  // std: one gamma, one roughness: a single roughness entry.
+  const PlannedTable* d = Find(plan, "dfg_std_g3.exr");
+  ASSERT_NE(d, nullptr);
+  EXPECT_EQ(d->spec.model.gamma, 3.0);
+  EXPECT_EQ(d->spec.roughness.size, 1);
+  EXPECT_EQ(d->spec.roughness.min, 0.2);
+  for (const PlannedTable& p : plan.tables) {
+    EXPECT_TRUE(p.meets_target) << p.file << " " << p.total_error;
+    EXPECT_LE(p.total_error, s.engine.error_target) << p.file;
+    EXPECT_LE(p.spec.mu.size, 64);
+  }
+  EXPECT_TRUE(plan.notes.empty());
+}
+
+TEST(SceneTest, GltfExampleReadsMaterialsAndExtensions) {
+  const Scene s = LoadScene(kExamples + "/scene.gltf");
+  ASSERT_EQ(s.materials.size(), 5u);
+  EXPECT_EQ(s.materials[0].name, "rubber");
+  EXPECT_EQ(s.materials[0].roughness_min, 0.8);
+  // A roughness texture: the range [0, factor].
+  EXPECT_EQ(s.materials[2].roughness_min, 0.0);
+  EXPECT_EQ(s.materials[2].roughness_max, 0.7);
+  EXPECT_EQ(s.materials[3].model, ModelKind::kGgxAniso);
+  EXPECT_EQ(s.materials[3].anisotropy, 0.6);
+  ASSERT_EQ(s.materials[4].unsupported.size(), 1u);
+  EXPECT_EQ(s.materials[4].unsupported[0].first, "KHR_materials_sheen");
+  // The plan: isotropic GGX tables only, over [0, 0.9] (the aluminium is
+  // anisotropic and not baked), at a reduced target so that it stays small.
+  Scene small = s;
+  small.engine.max_lut_size = 16;
+  small.engine.tables = {TableKind::kE, TableKind::kEavg};
+  const ScenePlan plan = PlanScene(small);
+  ASSERT_EQ(plan.tables.size(), 2u);
+  for (const PlannedTable& p : plan.tables) {
+    EXPECT_EQ(p.spec.model.kind, ModelKind::kGgx);
+    EXPECT_EQ(p.spec.roughness.min, 0.0);
+    EXPECT_EQ(p.spec.roughness.max, 0.9);
+    EXPECT_EQ(std::find(p.materials.begin(), p.materials.end(), "brushed_aluminium"), p.materials.end());
+  }
+  std::string notes;
+  for (const std::string& n : plan.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("brushed_aluminium"), std::string::npos) << notes;
+  EXPECT_NE(notes.find("KHR_materials_sheen"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("gold"), std::string::npos) << "KHR_materials_ior is covered by dfg: " << notes;
+}
+
+// The planned lookup error bounds what a GPU's bilinear lookup of the table
+// gives at random points (clamp-to-edge, texel centres).
+TEST(SceneTest, PlannedErrorBoundsRandomLookups) {
+  Scene s = LoadScene(kExamples + "/scene.toml");
+  s.engine.tables = {TableKind::kE};
+  s.engine.pixel = PixelType::kFloat;
+  const ScenePlan plan = PlanScene(s);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (const PlannedTable& p : plan.tables) {
+    const Table& t = p.table;
+    const Axis& am = t.spec.mu;
+    const Axis& ar = t.spec.roughness;
+    double worst = 0;
+    for (int i = 0; i < 400; ++i) {
+      const double mu = uni(rng), r = ar.min + (ar.max - ar.min) * uni(rng);
+      // Texture coordinates by the axis maps (docs/format.md), inverted.
+      auto at = [&](int x, int y) { return double(t.channels[0].stored[size_t(y) * t.width + x]); };
+      const double lookup = test::TextureBilinear(at, am.size, ar.size, test::TextureCoordinate(am, mu),
+                                                  test::TextureCoordinate(ar, r));
+      BakeSpec es = t.spec;  // the table's model, masking and gamma
+      const double exact = IntegrateTexel(es, ar.size == 1 ? ar.min : r, mu).e;
+      worst = std::max(worst, std::abs(lookup - exact));
+    }
+    std::printf("%s: planned lookup error %.3g, random lookups %.3g\n", p.file.c_str(), p.total_error, worst);
+    EXPECT_LE(worst, 1.25 * p.total_error + 1e-6) << p.file;
+  }
+}
+
+TEST(SceneTest, BakeWritesThePlanAndAManifest) {
+  Scene s = LoadScene(kExamples + "/scene.toml");
+  s.engine.error_target = 2e-2;  // small tables: this is about the files
+  const ScenePlan plan = PlanScene(s);
+  const std::string dir = Scratch("bake");
+  const std::vector<std::string> files = WriteScenePlan(s, plan, dir);
+  std::vector<std::string> listed;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) listed.push_back(e.path().filename().string());
+  std::sort(listed.begin(), listed.end());
+  std::vector<std::string> expected;
+  for (const std::string& f : files) expected.push_back(std::filesystem::path(f).filename().string());
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(listed, expected);  // nothing else
+  // 6 tables, each with its EXR, header, GLSL and HLSL, and the manifest.
+  EXPECT_EQ(listed.size(), 6u * 4 + 1);
+  const nlohmann::json m = nlohmann::json::parse(Slurp(dir + "/manifest.json"));
+  ASSERT_EQ(m["tables"].size(), 6u);
+  for (const auto& t : m["tables"]) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "/" + t["file"].get<std::string>()));
+    EXPECT_FALSE(t["why"].get<std::string>().empty());
+    EXPECT_GE(t["seconds"].get<double>(), 0.0);
+    EXPECT_GT(t["max_abs_error"].get<double>(), 0.0);
+    EXPECT_LE(t["lookup_error"].get<double>(), 2e-2);
+    EXPECT_EQ(t["also"].size(), 3u);
+    const ExrContents c = ReadExr(dir + "/" + t["file"].get<std::string>());
+    EXPECT_EQ(c.Attribute("brdfbake.table"), t["table"].get<std::string>());
+  }
+}
+
+struct BadScene {
+  const char* text;
+  const char* expect;  // in the error, after the file name
+};
+
+// LoadScene(path) throws one line that starts with the path and contains
+// the expected words.
+void ExpectRejected(const std::string& path, const BadScene& c) {
+  try {
+    LoadScene(path);
+    ADD_FAILURE() << "accepted: " << c.text;
+  } catch (const std::invalid_argument& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind(path, 0), 0u) << msg;
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << "'" << c.expect << "' not in: " << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+}
+
+TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
+  const std::string dir = Scratch("bad");
+  const std::string good_material = "[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\n";
+  const BadScene cases[] = {
+      {"", "no [[material]]"},
+      {"[engine]\nmax_lut_size = 64\n", "no [[material]]"},
+      {"[[material]]\nmodel = \"ggx\"\nroughness = 0.5\n", "material '#1': field 'name': missing"},
+      {"[[material]]\nname = \"m\"\nroughness = 0.5\n", "material 'm': field 'model': missing"},
+      {"[[material]]\nname = \"m\"\nmodel = \"phong\"\nroughness = 0.5\n", "material 'm': field 'model': 'phong'"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\n", "material 'm': field 'roughness': missing"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = \"rough\"\n", "field 'roughness': expected a number"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 1.5\n", "field 'roughness': 1.5 is outside [0, 1]"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = [0.6, 0.2]\n", "field 'roughness': the range"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = [0.1]\n", "field 'roughness': a range is two numbers"},
+      {"[[material]]\nname = \"m\"\nmodel = \"std\"\nroughness = 0.5\n", "material 'm': field 'gamma': missing"},
+      {"[[material]]\nname = \"m\"\nmodel = \"std\"\ngamma = 1.2\nroughness = 0.5\n", "field 'gamma'"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\ngamma = 3\nroughness = 0.5\n", "field 'gamma': only std"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\ncolour = 1\n", "field 'colour': unknown field"},
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\nmasking = \"none\"\n", "field 'masking'"},
+      {"[engine]\npixel = \"double\"\n", "[engine]: field 'pixel'"},
+      {"[engine]\nmax_lut_size = 1\n", "[engine]: field 'max_lut_size'"},
+      {"[engine]\nerror_target = -1\n", "[engine]: field 'error_target'"},
+      {"[engine]\ntables = [\"F\"]\n", "[engine]: field 'tables'"},
+      {"[engine]\nshaders = \"glsl\"\n", "[engine]: field 'shaders'"},
+      {"[engine]\nspeed = 3\n", "[engine]: field 'speed': unknown field"},
+      {"[camera]\nfov = 3\n", "unknown section 'camera'"},
+      {"material = 3\n", "'material' must be an array of tables"},
+      {"[[material]\nname = \"m\"\n", ":1:"},  // TOML syntax: line and column
+      {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\n[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.2\n",
+       "another material has this name"},
+  };
+  int n = 0;
+  for (const BadScene& c : cases) {
+    const std::string path = dir + "/bad" + std::to_string(n++) + ".toml";
+    WriteText(path, std::string(c.text) + (std::string(c.text).find("[[material]]") == std::string::npos &&
+                                                   std::string(c.expect).find("no [[material]]") == std::string::npos &&
+                                                   std::string(c.expect).find("array of tables") == std::string::npos
+                                               ? good_material
+                                               : ""));
+    ExpectRejected(path, c);
+  }
+  // glTF.
+  const BadScene gltf[] = {
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"a\", \"pbrMetallicRoughness\": "
+       "{\"roughnessFactor\": 2}}]}",
+       "material 'a': field 'pbrMetallicRoughness.roughnessFactor'"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"b\", \"extensions\": "
+       "{\"KHR_materials_anisotropy\": {\"anisotropyStrength\": \"x\"}}}]}",
+       "material 'b': field 'KHR_materials_anisotropy.anisotropyStrength'"},
+      {"{\"asset\": {\"version\": \"2.0\"}}", "no materials"},
+      {"{\"asset\": ", "not a valid glTF"},
+      {"not json at all", "not a valid glTF"},
+  };
+  for (const BadScene& c : gltf) {
+    const std::string path = dir + "/bad" + std::to_string(n++) + ".gltf";
+    WriteText(path, c.text);
+    ExpectRejected(path, c);
+  }
+  EXPECT_THROW(LoadScene(dir + "/missing.toml"), std::invalid_argument);
+  WriteText(dir + "/scene.yaml", "a: 1");
+  EXPECT_THROW(LoadScene(dir + "/scene.yaml"), std::invalid_argument);
+}
+
+// Seeded mutations of the example scenes: every load either succeeds with
+// valid materials or throws one line naming the file.
+TEST(SceneTest, FuzzedScenesNeverCrash) {
+  const std::string dir = Scratch("fuzz");
+  const std::string toml = Slurp(kExamples + "/scene.toml");
+  const std::string gltf = Slurp(kExamples + "/scene.gltf");
+  std::mt19937_64 rng(2026);
+  const std::vector<std::string> tokens = {"\"\"", "-1", "1e400", "nan", "[", "]", "{", "}", "=", "\"x\"",
+                                           "true", "[0.5, 0.1]", "\n", "\"inf\"", "0x10", ",", ":", "null"};
+  int ok = 0, rejected = 0;
+  for (int run = 0; run < 300; ++run) {
+    const bool is_toml = run % 3 != 0;
+    std::string text = is_toml ? toml : gltf;
+    const int edits = 1 + int(rng() % 3);
+    for (int e = 0; e < edits; ++e) {
+      const size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0: text.erase(at, 1 + rng() % 12); break;
+        case 1: text.insert(at, tokens[rng() % tokens.size()]); break;
+        default: text = text.substr(0, at); break;
+      }
+      if (text.empty()) text = "x";
+    }
+    const std::string path = dir + "/f" + std::to_string(run) + (is_toml ? ".toml" : ".gltf");
+    WriteText(path, text);
+    try {
+      const Scene s = LoadScene(path);
+      ASSERT_FALSE(s.materials.empty());
+      for (const SceneMaterial& m : s.materials) {
+        ASSERT_TRUE(m.roughness_min >= 0 && m.roughness_min <= m.roughness_max && m.roughness_max <= 1) << path;
+        ASSERT_FALSE(m.name.empty());
+      }
+      ++ok;
+    } catch (const std::invalid_argument& e) {
+      const std::string msg = e.what();
+      ASSERT_EQ(msg.rfind(path, 0), 0u) << msg;
+      ASSERT_EQ(msg.find('\n'), std::string::npos) << msg;
+      ++rejected;
+    }
+  }
+  std::printf("300 mutated scenes: %d loaded, %d rejected with a one-line error\n", ok, rejected);
+  EXPECT_GT(ok, 10);
+  EXPECT_GT(rejected, 100);
+}
+
+}  // namespace
+}  // namespace brdfbake

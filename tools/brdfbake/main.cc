@@ -1,0 +1,1028 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The brdfbake command-line tool: parses arguments, calls the library,
+// prints. No math here.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "brdfbake/exr.h"
+#include "brdfbake/bake.h"
+#include "brdfbake/containers.h"
+#include "brdfbake/presets.h"
+#include "brdfbake/shaders.h"
+#include "brdfbake/batch.h"
+#include "brdfbake/eval.h"
+#include "brdfbake/grid.h"
+#include "brdfbake/model.h"
+#include "brdfbake/output_file.h"
+#include "brdfbake/report.h"
+#include "brdfbake/scene.h"
+#include "brdfbake/stability.h"
+#include "brdfbake/targets.h"
+#include "brdfbake/version.h"
+
+namespace {
+
+using brdfbake::EvalRequest;
+using brdfbake::Fresnel;
+using brdfbake::Masking;
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+[[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
+
+// A message on one line: control characters (a newline inside an argument,
+// say) are shown as escapes.
+std::string OneLine(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      char buf[8];
+      std::snprintf(buf, sizeof(buf), "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+double ParseNumber(const std::string& opt, const std::string& text) {
+  errno = 0;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || std::isnan(v)) {
+    Bad(opt + ": '" + text + "' is not a number");
+  }
+  return v;
+}
+
+// A seed: a decimal integer in [0, 2^64 - 1], nothing else.
+uint64_t ParseSeed(const std::string& opt, const std::string& text) {
+  bool digits = !text.empty() && text.size() <= 20;
+  for (char c : text) digits &= c >= '0' && c <= '9';
+  errno = 0;
+  const unsigned long long v = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
+  if (!digits || errno == ERANGE) {
+    Bad(opt + ": '" + text + "' is not an integer in [0, 18446744073709551615]");
+  }
+  return v;
+}
+
+std::array<double, 3> ParseRgb(const std::string& opt, const std::string& text) {
+  std::vector<double> v;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) v.push_back(ParseNumber(opt, item));
+  if (v.size() == 1) return {v[0], v[0], v[0]};
+  if (v.size() != 3) Bad(opt + ": expected one value or three (r,g,b), got '" + text + "'");
+  return {v[0], v[1], v[2]};
+}
+
+std::vector<std::string> SplitComma(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+// Creates the output directory (and its parents) before any work is done.
+void MakeOutputDirectory(const std::string& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    Bad("-o: cannot create directory '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  }
+}
+
+bool Given(const CLI::App* app, const char* option) {
+  const CLI::Option* o = app->get_option_no_throw(option);
+  return o != nullptr && o->count() > 0;
+}
+
+// Options shared by every command that names a model.
+struct ModelOptions {
+  std::string model = "ggx";
+  std::string alpha, alpha_x, alpha_y, roughness;
+  std::string gamma = "2";
+  double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
+  CLI::App* app = nullptr;
+
+  void Add(CLI::App* a) {
+    app = a;
+    app->add_option("--model,-m", model,
+                    "ggx | beckmann | std | ellipsoid | sel, or ggx-aniso (E, E_avg only)")
+        ->capture_default_str();
+    app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25");
+    app->add_option("--alpha-x", alpha_x, "alpha along the tangent");
+    app->add_option("--alpha-y", alpha_y, "alpha along the bitangent");
+    app->add_option("--roughness,-r", roughness, "perceptual roughness r, alpha = r^2 (both axes)");
+    app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]; 'inf' is Beckmann")
+        ->capture_default_str();
+    app->add_option("--theta-x", theta_x_deg, "ellipsoid/sel: rotation about x, degrees");
+    app->add_option("--theta-y", theta_y_deg, "ellipsoid/sel: rotation about y, degrees");
+    app->add_option("--theta-z", theta_z_deg, "ellipsoid/sel: rotation about z, degrees");
+  }
+
+  brdfbake::ModelParams Get() const {
+    brdfbake::ModelParams p;
+    p.kind = brdfbake::ParseModelKind(model);
+    if (Given(app, "--gamma") && p.kind != brdfbake::ModelKind::kStudentT) {
+      Bad("--gamma: model " + model + " has no gamma (only std does)");
+    }
+    for (const char* t : {"--theta-x", "--theta-y", "--theta-z"}) {
+      if (Given(app, t) && p.kind != brdfbake::ModelKind::kEllipsoid && p.kind != brdfbake::ModelKind::kSel) {
+        Bad(std::string(t) + ": model " + model + " has no rotation (only ellipsoid and sel do)");
+      }
+    }
+    double a = 0.25;
+    if (!alpha.empty() && !roughness.empty()) Bad("--alpha and --roughness are exclusive");
+    if (!alpha.empty()) a = ParseNumber("--alpha", alpha);
+    if (!roughness.empty()) {
+      const double r = ParseNumber("--roughness", roughness);
+      if (!(r > 0) || !(r <= 100)) Bad("--roughness must lie in (0, 100] (alpha = r^2 <= 1e4)");
+      a = brdfbake::AlphaFromRoughness(r);
+    }
+    p.alpha_x = alpha_x.empty() ? a : ParseNumber("--alpha-x", alpha_x);
+    p.alpha_y = alpha_y.empty() ? a : ParseNumber("--alpha-y", alpha_y);
+    p.gamma = ParseNumber("--gamma", gamma);
+    p.theta_x = theta_x_deg * kDegree;
+    p.theta_y = theta_y_deg * kDegree;
+    p.theta_z = theta_z_deg * kDegree;
+    brdfbake::ModelParams check = p;
+    if (p.kind == brdfbake::ModelKind::kGgxAniso) {
+      // A table model: its widths come from --roughness and --anisotropy.
+      if (!alpha_x.empty() || !alpha_y.empty()) {
+        Bad("--alpha-x/--alpha-y: ggx-aniso takes --roughness and --anisotropy");
+      }
+      check.kind = brdfbake::ModelKind::kGgx;
+    }
+    brdfbake::ValidateModelParams(check);
+    return p;
+  }
+};
+
+struct FresnelOptions {
+  std::string kind = "one";
+  std::string f0 = "0.04", n = "0.2,0.92,1.1", k = "3.9,2.45,2.14";
+  std::string eta = "1.5";
+  CLI::App* app = nullptr;
+
+  void Add(CLI::App* a) {
+    app = a;
+    app->add_option("--fresnel", kind, "one | schlick | dielectric | conductor")->capture_default_str();
+    app->add_option("--f0", f0, "schlick: F0, one value or r,g,b")->capture_default_str();
+    app->add_option("--eta", eta, "dielectric: relative index of refraction")->capture_default_str();
+    app->add_option("--n", n, "conductor: real part of the index, r,g,b")->capture_default_str();
+    app->add_option("--k", k, "conductor: imaginary part of the index, r,g,b")->capture_default_str();
+  }
+
+  Fresnel Get() const {
+    const struct { const char* option; const char* kind; } owners[] = {
+        {"--f0", "schlick"}, {"--eta", "dielectric"}, {"--n", "conductor"}, {"--k", "conductor"}};
+    for (const auto& o : owners) {
+      if (Given(app, o.option) && kind != o.kind) {
+        Bad(std::string(o.option) + " applies to --fresnel " + o.kind + " only (got --fresnel " + kind + ")");
+      }
+    }
+    if (kind == "one") return Fresnel::One();
+    if (kind == "schlick") return Fresnel::Schlick(ParseRgb("--f0", f0));
+    if (kind == "dielectric") return Fresnel::Dielectric(ParseNumber("--eta", eta));
+    if (kind == "conductor") return Fresnel::Conductor(ParseRgb("--n", n), ParseRgb("--k", k));
+    Bad("--fresnel: unknown model '" + kind + "' (expected one, schlick, dielectric or conductor)");
+  }
+};
+
+Masking ParseMasking(const std::string& s) {
+  if (s == "height-correlated") return Masking::kHeightCorrelated;
+  if (s == "separable") return Masking::kSeparable;
+  Bad("--masking: unknown variant '" + s + "' (expected height-correlated or separable)");
+}
+
+std::string VersionText() {
+  std::string s = std::string("brdfbake ") + BRDFBAKE_VERSION + "\nSIMD target in use: " +
+                  brdfbake::BestTarget() + "\ncompiled targets:";
+  for (const std::string& t : brdfbake::CompiledTargets()) s += " " + t;
+  return s;
+}
+
+std::string ModelsHelp() {
+  std::string s = "Models:\n";
+  for (const brdfbake::ModelInfo& m : brdfbake::Models()) {
+    s += std::string("  ") + brdfbake::ModelName(m.kind) + ": " + m.parameters + "\n      " + m.source + "\n";
+  }
+  s += "Quantities (--quantity, comma-separated):\n"
+       "  D, pdf      swept direction is the microfacet normal m (pdf: density of the\n"
+       "              model's visible-normal sampler for the view wo, per steradian)\n"
+       "  Lambda, G1  swept direction is w\n"
+       "  G2, brdf    swept direction is the light wi; the view wo is fixed by --mu-o, --phi-o\n"
+       "  K           swept direction is w (model sel only)\n"
+       "  E, dfg      the tables' values (same integrator as bake), with their error;\n"
+       "  E_avg       the swept direction is the view; --sweep roughness sweeps r with the\n"
+       "              view at --mu-o; without --sweep/--from/--to/--count, one row at\n"
+       "              (--mu-o, --roughness)\n";
+  return s;
+}
+
+// "WxH" (or "N" for a one-axis table) as integers in [1, 8192].
+std::vector<int> ParseSize(const std::string& text, size_t axes, const char* form) {
+  std::vector<int> out;
+  std::string item;
+  std::stringstream ss(text);
+  bool ok = !text.empty() && text.back() != 'x';
+  while (ok && std::getline(ss, item, 'x')) {
+    bool digits = !item.empty() && item.size() <= 5;
+    for (char c : item) digits &= c >= '0' && c <= '9';
+    const int v = digits ? std::atoi(item.c_str()) : 0;
+    ok = digits && v >= 1 && v <= 8192;
+    out.push_back(v);
+  }
+  if (!ok || out.size() != axes) {
+    Bad(std::string("--size: expected ") + form + " with each entry an integer in [1, 8192] (got '" +
+        text + "')");
+  }
+  return out;
+}
+
+struct BakeOptions {
+  std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
+  std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
+  std::string pixel = "float", output, seed = "1", preset, format, shader, scene;
+  std::string target = "best";
+  std::string alpha_x = "0.25", alpha_y = "0.25";  // ellipsoid
+  double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
+  int samples = 0, threads = 0;
+  double tolerance = brdfbake::BakeSpec().tolerance;
+  bool complement = false, error_channel = false;
+  bool for_report = false;
+  CLI::App* app = nullptr;
+
+  void Add(CLI::App* a, bool report) {
+    app = a;
+    for_report = report;
+    app->add_option("--table,-t", table, "E | E_avg | dfg | sel_norm (with --model sel)");
+    app->add_option("--model,-m", model,
+                    "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
+                    "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm)")
+        ->capture_default_str();
+    app->add_option("--gamma", gamma,
+                    "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
+                    "over a gamma axis")
+        ->capture_default_str();
+    app->add_option("--size", size,
+                    "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
+                        (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
+                        "gamma slices over (1.5, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
+                        "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y");
+    app->add_option("--warp", warp,
+                    "linear | square | sqrt, or per axis: mu=linear,roughness=square "
+                    "(the gamma axis: gamma=tail, its only warp)")
+        ->capture_default_str();
+    app->add_option("--range", range,
+                    "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
+                    "gamma=min:max within (1.5, inf], default 1.501:inf; phi_o in radians within "
+                    "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid)");
+    app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
+        ->capture_default_str();
+    app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
+    app->add_option("--threads", threads, "worker threads, at most 1024; 0 = all cores")
+        ->capture_default_str();
+    app->add_option("--seed", seed, "seed of the randomized integrators, in [0, 2^64 - 1]")
+        ->capture_default_str();
+    if (for_report) {
+      app->add_option("-o,--output", output, "output directory (created if missing)")->required();
+      return;
+    }
+    app->add_option("--alpha-x", alpha_x, "ellipsoid: width along x")->capture_default_str();
+    app->add_option("--alpha-y", alpha_y, "ellipsoid: width along y")->capture_default_str();
+    app->add_option("--theta-x", theta_x_deg, "ellipsoid: rotation about x, degrees");
+    app->add_option("--theta-y", theta_y_deg, "ellipsoid: rotation about y, degrees");
+    app->add_option("--theta-z", theta_z_deg, "ellipsoid: rotation about z, degrees");
+    app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
+    app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
+    app->add_option("--target", target,
+                    "the SIMD target of the integrand (AVX3, AVX2, SSE4, SSSE3, SCALAR, best), "
+                    "or scalar for the double scalar reference")
+        ->capture_default_str();
+    app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
+        ->capture_default_str();
+    app->add_option("--pixel", pixel, "float | half | unorm16 (dds only)")->capture_default_str();
+    app->add_flag("--complement", complement,
+                  "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
+    app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
+    app->add_option("-o,--output", output,
+                    "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
+                    "directory, default .)");
+    app->add_option("scene", scene, "a scene (.toml, .gltf, .glb): bake exactly the tables it needs into -o DIR");
+    app->add_option("--preset", preset, "an engine's tables as its shader samples them: " + PresetNames());
+    app->add_option("--format", format, "exr | header | js | ktx2 | dds (default: from the extension)");
+    app->add_option("--shader", shader, "also write a glsl | hlsl | wgsl lookup function beside each table");
+  }
+
+  brdfbake::BakeSpec Get() const {
+    brdfbake::BakeSpec spec;
+    if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
+    spec.table = brdfbake::ParseTable(table);
+    spec.model.kind = brdfbake::ParseModelKind(model);
+    if (Given(app, "--gamma") && spec.model.kind != brdfbake::ModelKind::kStudentT) {
+      Bad("--gamma: model " + model + " has no gamma (only std does)");
+    }
+    spec.model.gamma = ParseNumber("--gamma", gamma);
+    spec.masking = ParseMasking(masking);
+    spec.integrator = brdfbake::ParseIntegrator(integrator);
+    if (Given(app, "--tolerance") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
+      Bad("--tolerance applies to the quadrature integrator only (got --integrator " + integrator + ")");
+    }
+    if (target == "scalar") {
+      spec.simd = false;
+    } else {
+      try {
+        brdfbake::ForceTarget(target);
+      } catch (const std::invalid_argument& e) {
+        // The bake also takes scalar, the double scalar reference.
+        std::string what = e.what();
+        const std::string best = ", or best)";
+        const size_t at = what.rfind(best);
+        if (at != std::string::npos && at + best.size() == what.size()) {
+          what = what.substr(0, at) + ", best, or scalar for the double scalar reference)";
+        }
+        Bad(what);
+      }
+    }
+    spec.samples = samples;
+    spec.tolerance = tolerance;
+    spec.seed = ParseSeed("--seed", seed);
+    spec.complement = complement;
+    spec.error_channel = error_channel;
+    spec.threads = threads;
+    if (pixel != "float" && pixel != "half" && (pixel != "unorm16" || for_report)) {
+      Bad("--pixel: expected float, half" + std::string(for_report ? "" : " or unorm16") + ", got '" + pixel + "'");
+    }
+    spec.half = pixel == "half";
+    const bool eavg = spec.table == brdfbake::TableKind::kEavg;
+    // std without --gamma takes one more --size entry: the gamma axis.
+    const bool gamma_ok = spec.model.kind == brdfbake::ModelKind::kStudentT && !Given(app, "--gamma");
+    const size_t entries = !Given(app, "--size") || size.empty()
+                               ? 0
+                               : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
+    const size_t plain = eavg ? 1 : 2;
+    if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso) {
+      Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
+          " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
+    }
+    const bool gamma_axis = gamma_ok && entries == plain + 1;
+    const bool aniso = spec.model.kind == brdfbake::ModelKind::kGgxAniso;
+    const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
+    const bool ellipsoid = spec.model.kind == brdfbake::ModelKind::kEllipsoid;
+    if (!for_report) {
+      for (const char* o : {"--alpha-x", "--alpha-y", "--theta-x", "--theta-y", "--theta-z"}) {
+        if (Given(app, o) && !ellipsoid) {
+          Bad(std::string(o) + ": only ellipsoid tables take a material's widths and angles");
+        }
+      }
+    }
+    if (ellipsoid) {
+      spec.model.alpha_x = ParseNumber("--alpha-x", alpha_x);
+      spec.model.alpha_y = ParseNumber("--alpha-y", alpha_y);
+      spec.model.theta_x = theta_x_deg * kDegree;
+      spec.model.theta_y = theta_y_deg * kDegree;
+      spec.model.theta_z = theta_z_deg * kDegree;
+      spec.phi.max = 2 * brdfbake::kPi<double>;  // no azimuthal symmetry
+      if (eavg) {
+        if (Given(app, "--size")) Bad("--size: the ellipsoid's E_avg is one value (no axes)");
+      } else if (Given(app, "--size")) {
+        const std::vector<int> n = ParseSize(size, 2, "WxH (mu x phi_o, e.g. 64x64)");
+        spec.mu.size = n[0];
+        spec.phi.size = n[1];
+      }
+    } else if (sel) {
+      if (Given(app, "--size")) {
+        const std::vector<int> n = ParseSize(size, 2, "WxH (alpha_x x alpha_y, e.g. 32x32)");
+        spec.alpha_x.size = n[0];
+        spec.alpha_y.size = n[1];
+      }
+    } else if (aniso) {
+      // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
+      const std::vector<int> n =
+          !Given(app, "--size")
+              ? (eavg ? std::vector<int>{32, 16}
+                      : for_report ? std::vector<int>{12, 7, 10, 8} : std::vector<int>{32, 16, 32, 16})
+              : ParseSize(size, eavg ? 2 : 4,
+                          eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
+                               : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)");
+      if (eavg) {
+        spec.roughness.size = n[0];
+        spec.anisotropy.size = n[1];
+      } else {
+        spec.mu.size = n[0];
+        spec.phi.size = n[1];
+        spec.roughness.size = n[2];
+        spec.anisotropy.size = n[3];
+      }
+    } else if (eavg) {
+      if (!Given(app, "--size")) {
+        spec.roughness.size = for_report ? 16 : 32;
+      } else if (size.find('x') != std::string::npos && !gamma_axis) {
+        Bad("--size: E_avg has one axis (roughness): expected N, e.g. --size 32 (got '" + size + "')");
+      } else {
+        const std::vector<int> n = ParseSize(size, gamma_axis ? 2 : 1, gamma_axis ? "NxD" : "N");
+        spec.roughness.size = n[0];
+        if (gamma_axis) spec.gamma.size = n[1];
+      }
+    } else {
+      const std::vector<int> wh =
+          gamma_axis ? ParseSize(size, 3, "WxHxD (mu x roughness x gamma, e.g. 32x32x16)")
+                     : ParseSize(size, 2,
+                                 gamma_ok ? "WxH (mu x roughness, e.g. 32x32) or WxHxD (x gamma)"
+                                          : "WxH (mu x roughness, e.g. 32x32)");
+      spec.mu.size = wh[0];
+      spec.roughness.size = wh[1];
+      if (gamma_axis) spec.gamma.size = wh[2];
+    }
+    const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
+    spec.mu.placement = spec.roughness.placement = spec.gamma.placement = pl;
+    spec.phi.placement = spec.anisotropy.placement = pl;
+    spec.alpha_x.placement = spec.alpha_y.placement = pl;
+    // Per-axis settings: "value" for every axis of the table but gamma, or
+    // "axis=value"; each axis at most once.
+    std::vector<brdfbake::Axis*> axes = {&spec.roughness};
+    if (!eavg) axes.insert(axes.begin(), &spec.mu);
+    if (aniso) {
+      if (!eavg) axes.insert(axes.begin() + 1, &spec.phi);
+      axes.push_back(&spec.anisotropy);
+    }
+    if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
+    if (ellipsoid) {
+      axes.clear();
+      if (!eavg) axes = {&spec.mu, &spec.phi};
+    }
+    std::vector<brdfbake::Axis*> named = axes;
+    if (gamma_axis) named.push_back(&spec.gamma);
+    auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
+                        const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
+      std::vector<std::string> seen;
+      for (const std::string& item : SplitComma(text)) {
+        const size_t eq = item.find('=');
+        std::vector<brdfbake::Axis*> targets;
+        std::string value = item;
+        if (eq == std::string::npos) {
+          if (!plain_ok) Bad(std::string(opt) + ": expected axis=min:max, got '" + item + "'");
+          targets = axes;
+        } else {
+          const std::string name = item.substr(0, eq);
+          value = item.substr(eq + 1);
+          for (brdfbake::Axis* a : named) {
+            if (a->name == name) targets.push_back(a);
+          }
+          if (targets.empty()) {
+            std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
+                                   (gamma_axis ? " or gamma" : "");
+            if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
+            if (sel) expected = "alpha_x or alpha_y";
+            if (ellipsoid) expected = eavg ? "none (E_avg is one value)" : "mu or phi_o";
+            Bad(std::string(opt) + ": " +
+                (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
+                 : name == "gamma"
+                     ? std::string("no gamma axis (std without --gamma and a third --size entry has one)")
+                     : "unknown axis '" + name + "' (expected " + expected + ")"));
+          }
+        }
+        for (brdfbake::Axis* a : targets) {
+          for (const std::string& s : seen) {
+            if (s == a->name) Bad(std::string(opt) + ": the " + a->name + " axis is given twice");
+          }
+          seen.push_back(a->name);
+          set(a, value);
+        }
+      }
+    };
+    per_axis("--warp", warp, true,
+             [](brdfbake::Axis* a, const std::string& v) { a->warp = brdfbake::ParseWarp(v); });
+    if (!range.empty()) {
+      per_axis("--range", range, false, [](brdfbake::Axis* a, const std::string& v) {
+        const size_t colon = v.find(':');
+        if (colon == std::string::npos) Bad("--range: expected " + a->name + "=min:max, got '" + v + "'");
+        a->min = ParseNumber("--range", v.substr(0, colon));
+        a->max = ParseNumber("--range", v.substr(colon + 1));
+      });
+    }
+    if (output.empty()) Bad("-o: an output file is required");
+    brdfbake::ValidateBakeSpec(spec);
+    return spec;
+  }
+
+  static std::string PresetNames() {
+    std::string names;
+    for (const brdfbake::Preset& p : brdfbake::Presets()) names += (names.empty() ? "" : ", ") + p.name;
+    return names;
+  }
+};
+
+// A progress bar on stderr when it is a terminal and the work has taken
+// more than a second: percent, elapsed and remaining time.
+class Progress {
+ public:
+  Progress() : tty_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  void operator()(int64_t done, int64_t total) {
+    if (!tty_) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (elapsed < 1.0) return;
+    std::lock_guard<std::mutex> lock(mu_);
+    if (done < total && std::chrono::duration<double>(now - last_).count() < 0.1) return;
+    last_ = now;
+    const int width = 40;
+    total = std::max<int64_t>(1, total);
+    const int filled = static_cast<int>(width * done / total);
+    const double remaining = done > 0 ? elapsed * double(total - done) / double(done) : 0.0;
+    std::fprintf(stderr, "\r[%.*s%*s] %3d%% %.1fs elapsed, %.1fs left ", filled,
+                 "========================================", width - filled, "",
+                 static_cast<int>(100 * done / total), elapsed, remaining);
+    shown_ = true;
+  }
+  void Finish() {
+    if (shown_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  bool tty_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_, last_;
+  std::mutex mu_;
+};
+
+// The file beside `path` that holds its shader function: dfg.ktx2 -> dfg.glsl.
+std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
+  return std::filesystem::path(path).replace_extension(brdfbake::ShaderLanguageName(lang)).string();
+}
+
+// `image`: the arrangement written when it is not the table's own EXR (its
+// pixel type, hence its claimed error, may differ).
+void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what,
+                const brdfbake::Image* image = nullptr) {
+  const double claim = image ? image->max_abs_error : table.max_abs_error;
+  const int w = image ? image->width : table.width, h = image ? image->height : table.height;
+  std::string dims = std::to_string(w) + "x" + std::to_string(h);
+  if (table.spec.HasGammaAxis()) {
+    dims += " (" + std::to_string(table.spec.gamma.size) + " gamma slices of " +
+            std::to_string(h / table.spec.gamma.size) + " rows)";
+  }
+  std::printf("wrote %s: %s %s %s, %s integrator, baked in %.3f s, max abs error %.2e\n",
+              OneLine(path).c_str(), what.c_str(), table.spec.model.name(), dims.c_str(),
+              brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
+}
+
+int RunPreset(const BakeOptions& opts) {
+  const brdfbake::Preset& preset = brdfbake::FindPreset(opts.preset);
+  // A preset fixes the tables; only how they are computed and where they go
+  // may be chosen.
+  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement",
+                        "--masking", "--pixel", "--complement", "--error-channel", "--format",
+                        "--integrator", "--samples", "--seed"}) {
+    if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
+  }
+  const std::string dir = opts.output.empty() ? "." : opts.output;
+  std::error_code ec;
+  const std::string ext = std::filesystem::path(dir).extension().string();
+  if (!ext.empty() && !std::filesystem::is_directory(dir, ec)) {
+    Bad("-o: with --preset, -o names a directory (got '" + dir + "'); the preset names its files");
+  }
+  MakeOutputDirectory(dir);
+  const bool shader = !opts.shader.empty();
+  const brdfbake::ShaderLanguage lang =
+      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  std::vector<std::string> files;
+  for (const brdfbake::PresetTable& t : preset.tables) {
+    if (!t.file.empty()) files.push_back(dir + "/" + t.file);
+    if (shader) files.push_back(dir + "/" + t.symbol + "." + brdfbake::ShaderLanguageName(lang));
+  }
+  if (!preset.header_file.empty()) files.push_back(dir + "/" + preset.header_file);
+  for (const std::string& f : files) brdfbake::CheckOutputPath(f);
+
+  std::vector<brdfbake::Table> tables;
+  std::vector<brdfbake::Image> images;
+  tables.reserve(preset.tables.size());
+  images.reserve(preset.tables.size());
+  for (const brdfbake::PresetTable& pt : preset.tables) {
+    brdfbake::BakeSpec spec = pt.spec;
+    spec.threads = opts.threads;
+    if (Given(opts.app, "--tolerance")) spec.tolerance = opts.tolerance;
+    brdfbake::ValidateBakeSpec(spec);
+    Progress progress;
+    tables.push_back(brdfbake::Bake(spec, [&](int64_t d, int64_t n) { progress(d, n); }));
+    progress.Finish();
+    images.push_back(brdfbake::ArrangeTable(tables.back(), pt.layout));
+  }
+  std::vector<std::pair<const brdfbake::Table*, const brdfbake::Image*>> header_arrays;
+  std::vector<std::string> header_symbols;
+  for (size_t i = 0; i < preset.tables.size(); ++i) {
+    const brdfbake::PresetTable& pt = preset.tables[i];
+    const std::string what = std::string(brdfbake::TableName(pt.spec.table)) + " (" + preset.name + ")";
+    if (!pt.file.empty()) {
+      const std::string path = dir + "/" + pt.file;
+      brdfbake::WriteImage(tables[i], images[i], pt.container, path, pt.symbol, preset.name);
+      PrintWrote(path, tables[i], what, &images[i]);
+    }
+    if (!preset.header_file.empty()) {
+      header_arrays.push_back({&tables[i], &images[i]});
+      header_symbols.push_back(pt.symbol);
+    }
+    if (shader) {
+      const std::string path = dir + "/" + pt.symbol + "." + brdfbake::ShaderLanguageName(lang);
+      brdfbake::WriteFileAtomically(
+          path, brdfbake::ShaderFunction(tables[i], images[i], lang, "brdfbake_" + pt.symbol));
+      std::printf("wrote %s: %s lookup of %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang),
+                  pt.symbol.c_str());
+    }
+  }
+  if (!preset.header_file.empty()) {
+    const std::string path = dir + "/" + preset.header_file;
+    brdfbake::WriteHeader(header_arrays, header_symbols, path, preset.name);
+    std::printf("wrote %s: %zu tables (%s)\n", OneLine(path).c_str(), header_arrays.size(), preset.name.c_str());
+  }
+  return 0;
+}
+
+int RunSceneBake(const BakeOptions& opts) {
+  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
+                        "--pixel", "--complement", "--error-channel", "--format", "--integrator", "--samples",
+                        "--seed", "--tolerance", "--preset", "--shader"}) {
+    if (Given(opts.app, o)) Bad(std::string(o) + ": a scene bake takes its settings from the scene file");
+  }
+  if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
+  const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
+  MakeOutputDirectory(opts.output);
+  brdfbake::CheckOutputPath(opts.output + "/manifest.json");
+  const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
+  const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
+  std::printf("%s", brdfbake::PlanText(scene, plan).c_str());
+  for (const std::string& f : files) std::printf("wrote %s\n", OneLine(f).c_str());
+  return 0;
+}
+
+int RunBake(const BakeOptions& opts) {
+  if (!opts.scene.empty()) return RunSceneBake(opts);
+  if (!opts.preset.empty()) return RunPreset(opts);
+  const brdfbake::BakeSpec spec = opts.Get();
+  const brdfbake::Container container =
+      opts.format.empty() ? brdfbake::ContainerFromPath(opts.output) : brdfbake::ParseContainer(opts.format);
+  if (!opts.format.empty() && brdfbake::ContainerFromPath(opts.output) != container) {
+    Bad("-o: '" + opts.output + "' does not name a " + opts.format + " file");
+  }
+  if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds) {
+    Bad("--pixel unorm16: only the dds format holds unorm16 pixels");
+  }
+  const bool shader = !opts.shader.empty();
+  const brdfbake::ShaderLanguage lang =
+      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
+    Bad("-o: sel_norm tables are written as .exr");
+  }
+  if (shader && spec.table == brdfbake::TableKind::kSelNorm) {
+    Bad("--shader: no lookup function is written for sel_norm tables");
+  }
+  if (shader && spec.HasGammaAxis()) {
+    Bad("--shader: the lookup functions read tables over mu and roughness; a table with a gamma "
+        "axis is written without one");
+  }
+  brdfbake::CheckOutputPath(opts.output);
+  if (shader) brdfbake::CheckOutputPath(ShaderPath(opts.output, lang));
+  Progress progress;
+  const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
+  progress.Finish();
+  brdfbake::Image image;  // the arrangement of a non-EXR container and of the shader lookup
+  if (container != brdfbake::Container::kExr || shader) {
+    brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
+    if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
+    image = brdfbake::ArrangeTable(table, layout);
+  }
+  if (container == brdfbake::Container::kExr) {
+    brdfbake::WriteExr(table, opts.output);
+  } else {
+    const std::string symbol = std::string("brdfbake_") + brdfbake::TableName(spec.table);
+    brdfbake::WriteImage(table, image, container, opts.output, symbol, "");
+  }
+  PrintWrote(opts.output, table, brdfbake::TableName(spec.table),
+             container == brdfbake::Container::kExr ? nullptr : &image);
+  if (shader) {
+    const std::string path = ShaderPath(opts.output, lang);
+    brdfbake::WriteFileAtomically(path, brdfbake::ShaderFunction(table, image, lang,
+                                                   std::string("brdfbake_") + brdfbake::TableName(spec.table)));
+    std::printf("wrote %s: %s lookup\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang));
+  }
+  if (spec.roughness.placement == brdfbake::Placement::kEdges) {
+    std::fprintf(stderr,
+                 "note: edges placement puts texel i at t = i / (N - 1); a GPU's bilinear lookup "
+                 "needs t' = (t (N - 1) + 0.5) / N, or bake with --placement centers\n");
+  }
+  return 0;
+}
+
+int RunReportCommand(const BakeOptions& opts, int repeats, double reference_tolerance) {
+  brdfbake::ReportSpec rs;
+  rs.table = opts.Get();
+  rs.repeats = repeats;
+  if (!(reference_tolerance > 0) || !std::isfinite(reference_tolerance)) {
+    Bad("--reference-tolerance must be a finite number > 0");
+  }
+  rs.reference_tolerance = reference_tolerance;
+  if (rs.repeats < 1 || rs.repeats > 100) Bad("--repeats must be in [1, 100]");
+  // The directory is made and checked before the work starts.
+  MakeOutputDirectory(opts.output);
+  const bool aniso = rs.table.Anisotropic();
+  const std::vector<const char*> files =
+      aniso ? std::vector<const char*>{"collapse.csv", "collapse.svg"}
+            : std::vector<const char*>{"report.csv", "report.svg", "interpolation.csv",
+                                       "interpolation.svg"};
+  for (const char* f : files) brdfbake::CheckOutputPath(opts.output + "/" + f);
+  const brdfbake::Report r = brdfbake::RunReport(
+      rs, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  brdfbake::WriteReport(r, opts.output);
+  std::printf("wrote %s/%s\n", OneLine(opts.output).c_str(),
+              aniso ? "collapse.csv, collapse.svg"
+                    : "report.csv, report.svg, interpolation.csv, interpolation.svg");
+  return 0;
+}
+
+int RunStabilityCommand(int samples, const std::string& seed_text) {
+  if (samples < 1 || samples > 100000000) Bad("--samples must be in [1, 100000000]");
+  const uint64_t seed = ParseSeed("--seed", seed_text);
+  std::ostringstream out;
+  const std::vector<brdfbake::StabilityRow> rows = brdfbake::RunStability(samples, seed);
+  brdfbake::WriteStabilityCsv(rows, out);
+  std::cout << out.str();
+  int64_t outside = 0, non_finite = 0;
+  for (const brdfbake::StabilityRow& r : rows) {
+    outside += r.Within() ? 0 : 1;
+    non_finite += r.non_finite;
+  }
+  std::cerr << rows.size() << " rows: " << non_finite << " non-finite outputs, " << outside
+            << " rows outside their stated bound\n";
+  return outside > 0 ? 1 : 0;
+}
+
+struct EvalOptions {
+  ModelOptions model;
+  FresnelOptions fresnel;
+  std::string quantity = "D", masking = "height-correlated", sweep = "mu";
+  EvalRequest req;
+  double phi_deg = 0, phi_o_deg = 0;
+  std::string grid_kind, grid_out, target = "best";
+  int grid_w = 256, grid_h = 256, grid_threads = 0;
+  CLI::App* app = nullptr;
+
+  void Add(CLI::App* eval) {
+    app = eval;
+    eval->footer(ModelsHelp());
+    model.Add(eval);
+    fresnel.Add(eval);
+    eval->add_option("--quantity,-q", quantity,
+                     "D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg (comma-separated)")
+        ->capture_default_str();
+    eval->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
+    eval->add_option("--sweep", sweep, "mu (cos theta), theta (degrees), roughness or none")
+        ->capture_default_str();
+    eval->add_option("--from", req.from, "first value of the sweep")->capture_default_str();
+    eval->add_option("--to", req.to, "last value of the sweep")->capture_default_str();
+    eval->add_option("--count,-n", req.count, "number of samples")->capture_default_str();
+    eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str();
+    eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf, E, dfg)")
+        ->capture_default_str();
+    eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
+    eval->add_option("--anisotropy", req.anisotropy,
+                     "ggx-aniso: KHR_materials_anisotropy strength s in [0, 1] (alpha_t = "
+                     "mix(r^2, 1, s^2), alpha_b = r^2)")
+        ->capture_default_str();
+    eval->add_option("--grid", grid_kind,
+                     "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
+                     "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");
+    eval->add_option("--width", grid_w, "grid width")->capture_default_str();
+    eval->add_option("--height", grid_h, "grid height")->capture_default_str();
+    eval->add_option("--threads", grid_threads, "grid: worker threads, at most 1024; 0 = all cores")
+        ->capture_default_str();
+    eval->add_option("-o,--output", grid_out, "grid: output .exr file");
+    eval->add_option("--target", target, "force a SIMD target (AVX3, AVX2, SSE4, SSSE3, SCALAR, or best)")
+        ->capture_default_str();
+  }
+};
+
+int RunGrid(const EvalOptions& o) {
+  brdfbake::ForceTarget(o.target);
+  brdfbake::GridRequest gr;
+  gr.model = o.model.Get();
+  gr.fresnel = o.fresnel.Get();
+  gr.masking = ParseMasking(o.masking);
+  gr.kind = brdfbake::ParseGridKind(o.grid_kind);
+  gr.width = o.grid_w;
+  gr.height = o.grid_h;
+  gr.threads = o.grid_threads;
+  gr.mu_o = o.req.mu_o;
+  gr.phi_o = o.phi_o_deg * kDegree;
+  if (o.grid_out.empty()) Bad("-o: --grid writes an EXR file; name it with -o");
+  brdfbake::ValidateGridRequest(gr);
+  brdfbake::CheckOutputExtension(o.grid_out, ".exr", "eval --grid");
+  brdfbake::CheckOutputPath(o.grid_out);
+  const auto start = std::chrono::steady_clock::now();
+  const brdfbake::Grid g = brdfbake::EvalGrid(gr);
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  brdfbake::WriteImageExr(o.grid_out, g.width, g.height,
+                          {{brdfbake::GridChannelName(gr.kind), &g.values}},
+                          brdfbake::GridAttributes(gr, g));
+  std::printf("wrote %s: %s grid %dx%d of %s in %.3f s (%s)\n", OneLine(o.grid_out).c_str(),
+              brdfbake::GridKindName(gr.kind), g.width, g.height, gr.model.name(), secs,
+              g.path.c_str());
+  return 0;
+}
+
+int RunEval(const EvalOptions& o) {
+  if (!o.grid_kind.empty()) return RunGrid(o);
+  if (o.target != "best") brdfbake::ForceTarget(o.target);
+  EvalRequest req = o.req;
+  req.model = o.model.Get();
+  req.fresnel = o.fresnel.Get();
+  req.masking = ParseMasking(o.masking);
+  req.quantities = SplitComma(o.quantity);
+  req.sweep = o.sweep;
+  // Table quantities alone and no sweep asked for: one value at
+  // (--mu-o, --roughness).
+  bool tables_only = true;
+  for (const std::string& q : req.quantities) tables_only &= brdfbake::IsTableQuantity(q);
+  if (tables_only && !Given(o.app, "--sweep") && !Given(o.app, "--from") && !Given(o.app, "--to") &&
+      !Given(o.app, "--count")) {
+    req.sweep = "none";
+  }
+  req.phi = o.phi_deg * kDegree;
+  req.phi_o = o.phi_o_deg * kDegree;
+  std::ostringstream out;  // nothing is printed unless the whole sweep succeeds
+  brdfbake::EvalCsv(req, out);
+  std::cout << out.str();
+  return 0;
+}
+
+// CLI11 lists unexpected arguments in reverse; this names them in order,
+// as they stand on the command line (`argv`). A value that followed an
+// unknown option and was taken as bake's SCENE is put back in its place.
+std::string ExtrasMessage(const CLI::App& app, int argc, char** argv, const std::string& scene) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    std::vector<std::string> pending = sub->remaining();
+    if (pending.empty()) continue;
+    std::vector<std::string> extras;
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      const auto it = std::find(pending.begin(), pending.end(), a);
+      if (it != pending.end()) {
+        extras.push_back(a);
+        pending.erase(it);
+      } else if (!scene.empty() && a == scene && !extras.empty() && extras.back()[0] == '-') {
+        extras.push_back(a);
+      }
+    }
+    extras.insert(extras.end(), pending.begin(), pending.end());
+    std::string list;
+    for (const std::string& e : extras) list += (list.empty() ? "" : " ") + e;
+    const std::string& first = extras.front();
+    std::string msg = sub->get_name() + ": ";
+    if (first.size() > 1 && first[0] == '-' && !std::isdigit(static_cast<unsigned char>(first[1])) &&
+        first[1] != '.') {
+      msg += "unknown option '" + first + "'";
+    } else {
+      msg += "unexpected argument '" + first + "'";
+    }
+    if (extras.size() > 1) msg += " (unexpected, in order: " + list + ")";
+    return msg + "; see brdfbake " + sub->get_name() + " --help";
+  }
+  const std::vector<std::string> extras = app.remaining();
+  std::string list;
+  for (const std::string& e : extras) list += (list.empty() ? "" : " ") + e;
+  return "unexpected arguments: " + list + " (see brdfbake --help)";
+}
+
+// Every byte of standard output reached its destination (a full disk or a
+// closed pipe is an error, not a silent success).
+bool FlushStdout() {
+  std::cout.flush();
+  return std::cout && std::fflush(stdout) == 0 && !std::ferror(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  brdfbake::InstallTemporaryCleanup();
+  CLI::App app{"brdfbake: microfacet BRDF models and the lookup tables real-time engines sample."};
+  app.set_version_flag("--version", VersionText());
+  app.require_subcommand(1);
+  app.allow_extras();
+
+  CLI::App* eval = app.add_subcommand(
+      "eval", "Evaluate a model's D, Lambda, G1, G2, BRDF, pdf, or a table's E, dfg, E_avg, "
+              "along a sweep, as CSV on stdout.");
+  eval->allow_extras();
+  EvalOptions eval_opts;
+  eval_opts.Add(eval);
+
+  CLI::App* bake = app.add_subcommand(
+      "bake", "Bake a lookup table (E, E_avg, dfg or sel_norm) to a self-describing file, an engine's tables "
+              "(--preset), or exactly the tables a scene needs (bake SCENE -o DIR).");
+  bake->allow_extras();
+  BakeOptions bake_opts;
+  bake_opts.Add(bake, false);
+
+  CLI::App* report = app.add_subcommand(
+      "report", "Error against run time of every integrator over a ladder of budgets, and the "
+                "interpolation error against table size: CSV and SVG plots in a directory.");
+  report->allow_extras();
+  BakeOptions report_opts;
+  report_opts.size = "16x16";
+  report_opts.Add(report, true);
+  int repeats = 3;
+  double reference_tolerance = 1e-11;
+  report->add_option("--repeats", repeats, "timing: median of this many bakes")->capture_default_str();
+  report->add_option("--reference-tolerance", reference_tolerance,
+                     "tolerance of the converged quadrature used as the reference")
+      ->capture_default_str();
+
+  CLI::App* plan = app.add_subcommand(
+      "plan", "What `bake SCENE -o DIR` would write: the minimal set of tables for a scene's materials, "
+              "each at the resolution that meets the scene's error target.");
+  plan->allow_extras();
+  std::string plan_scene;
+  plan->add_option("scene", plan_scene, "a scene: .toml (see examples/README.md), .gltf or .glb")->required();
+
+  CLI::App* stability = app.add_subcommand(
+      "stability", "Float kernels against the double reference, region by region over the "
+                   "documented domain: max relative error and non-finite count, as CSV.");
+  stability->allow_extras();
+  int stability_samples = 20000;
+  std::string stability_seed = "1";
+  stability->add_option("--samples", stability_samples, "samples per region and model")
+      ->capture_default_str();
+  stability->add_option("--seed", stability_seed, "seed, in [0, 2^64 - 1]")->capture_default_str();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
+    return 2;
+  }
+  bool extras = !app.remaining().empty();
+  for (const CLI::App* sub : app.get_subcommands()) extras |= !sub->remaining().empty();
+  if (extras) {
+    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
+    return 2;
+  }
+
+  int status = 0;
+  try {
+    if (*bake) status = RunBake(bake_opts);
+    if (*plan) {
+      const brdfbake::Scene scene = brdfbake::LoadScene(plan_scene);
+      std::printf("%s", brdfbake::PlanText(scene, brdfbake::PlanScene(scene)).c_str());
+    }
+    if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
+    if (*stability) status = RunStabilityCommand(stability_samples, stability_seed);
+    if (*eval) status = RunEval(eval_opts);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(e.what()).c_str());
+    return 1;
+  }
+  if (!FlushStdout()) {
+    std::fprintf(stderr, "brdfbake: error: cannot write to standard output: %s\n",
+                 std::strerror(errno ? errno : EIO));
+    return 1;
+  }
+  return status;
+}
