@@ -12,10 +12,9 @@
 
 #include <benchmark/benchmark.h>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
-#include "brdfbake/targets.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
@@ -23,6 +22,7 @@
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/sel.h"
 #include "brdfbake/models/std_ndf.h"
+#include "brdfbake/targets.h"
 
 namespace brdfbake {
 namespace {

@@ -71,7 +71,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 #define BRDFBAKE_BAKE_BENCH(name, table, model, gamma, simd) \
   BENCHMARK_CAPTURE(BM_Bake, name, BakeCase{table, model, gamma, simd})
 
-// README, "Speed": the SIMD rules at 2 threads (and 1 for the scaling),
+// docs/performance.md, "Bakes": the SIMD rules at 2 threads (and 1 for the scaling),
 // then the double scalar reference of the same rules for the ratio.
 #define BRDFBAKE_BAKE_ARGS(reps) \
   Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(reps)->ReportAggregatesOnly(true)

@@ -1,8 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The machine's own limits, per target, for the README's hardware-limit
-// analysis: lane-operations per second of fused multiply-add, division,
+// The machine's own limits, per target, for the hardware-limit analysis
+// of docs/performance.md: lane-operations per second of fused multiply-add, division,
 // square root and approximate reciprocal square root, each as 12 independent
 // dependency chains (enough to cover the latency of every unit), so the
 // figure is the unit's throughput. Names: BM_Peak/<op>/<TARGET>.

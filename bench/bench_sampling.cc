@@ -17,9 +17,9 @@
 #include <benchmark/benchmark.h>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/targets.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/std_ndf.h"
+#include "brdfbake/targets.h"
 
 namespace brdfbake {
 namespace {

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "brdfbake/estimate.h"
-#include "brdfbake/models/brdf.h"
 #include "brdfbake/model.h"
+#include "brdfbake/models/brdf.h"
 
 namespace brdfbake {
 

@@ -15,9 +15,9 @@
 
 #include <cstddef>
 
+#include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/fresnel.h"
-#include "brdfbake/model.h"
 
 namespace brdfbake {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/fresnel.h"
-#include "brdfbake/model.h"
 
 namespace brdfbake {
 

@@ -12,9 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/fresnel.h"
-#include "brdfbake/model.h"
 
 namespace brdfbake {
 

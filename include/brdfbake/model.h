@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "brdfbake/models/brdf.h"
 #include "brdfbake/config.h"
+#include "brdfbake/models/brdf.h"
 #include "brdfbake/models/fresnel.h"
 #include "brdfbake/models/vec3.h"
 

@@ -10,8 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "brdfbake/bake.h"
 #include "base/error.h"
+#include "brdfbake/bake.h"
 
 namespace brdfbake {
 namespace {

@@ -12,8 +12,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "rules/ggx_aniso/aniso_ggx.h"
 #include "brdfbake/output_file.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 
 namespace brdfbake {
 namespace {

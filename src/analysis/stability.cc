@@ -11,14 +11,14 @@
 #include <random>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/targets.h"
 #include "brdfbake/model.h"
-#include "brdfbake/models/kernel_bounds.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/models/ggx.h"
+#include "brdfbake/models/kernel_bounds.h"
 #include "brdfbake/models/std_ndf.h"
+#include "brdfbake/targets.h"
 
 namespace brdfbake {
 namespace {

@@ -19,18 +19,18 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include "base/error.h"
 #include "brdfbake/version.h"
+#include "lanes/quadrature_simd.h"
 #include "quadrature/adaptive_rule.h"
 #include "quadrature/solve_bracketed.h"
-#include "rules/ggx_aniso/aniso_ggx.h"
 #include "rules/ellipsoid/ellipsoid_albedo.h"
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
-#include "rules/sel/sel_norm.h"
 #include "rules/ggx/azimuthal.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
+#include "rules/sel/sel_norm.h"
 #include "sampling/sampling_integrators.h"
-#include "lanes/quadrature_simd.h"
 #include "sampling/sampling_simd.h"
-#include "base/error.h"
 
 namespace brdfbake {
 namespace {

@@ -5,7 +5,7 @@
 // which is x, placement, warps, row order, channel order and meaning,
 // size, pixel type, clamps), filled with brdfbake's exact integration of
 // GGX with height-correlated masking. The facts and their sources are in
-// the README's "Using the tables in your engine".
+// docs/engines.md.
 
 #include <stdexcept>
 

@@ -1,10 +1,9 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Image layouts, containers, shader lookups and engine presets
-// (engine.h). The facts behind each preset (axes, placement, row order,
-// channels, size, pixel type, clamps) are in the README's "Using the tables
-// in your engine", with the engines' source files.
+// Image layouts and containers (containers.h). The facts behind each
+// engine's layout (axes, placement, row order, channels, size, pixel type,
+// clamps) are in docs/engines.md, with the engines' source files.
 
 #include "brdfbake/containers.h"
 
@@ -23,12 +22,12 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <nlohmann/json.hpp>
 
+#include "base/error.h"
+#include "base/text.h"
 #include "brdfbake/exr.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
-#include "base/text.h"
 #include "io/exr_write.h"
-#include "base/error.h"
 
 namespace brdfbake {
 namespace {

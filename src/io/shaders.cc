@@ -6,7 +6,6 @@
 
 #include "brdfbake/shaders.h"
 
-#include <stdexcept>
 #include <string>
 
 #include "base/error.h"

@@ -11,10 +11,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "kernels/batch_dispatch.h"
-#include "brdfbake/config.h"
-#include "kernels/flush_subnormals.h"
 #include "base/error.h"
+#include "brdfbake/config.h"
+#include "kernels/batch_dispatch.h"
+#include "kernels/flush_subnormals.h"
 
 namespace brdfbake {
 namespace {

@@ -9,12 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/error.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/sel.h"
 #include "brdfbake/models/std_ndf.h"
-#include "base/error.h"
 
 namespace brdfbake {
 namespace {

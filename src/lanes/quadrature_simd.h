@@ -17,11 +17,11 @@
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/std_ndf.h"
 #include "brdfbake/targets.h"
-#include "rules/ggx/azimuthal.h"
-#include "rules/slope/azimuthal_slope.h"
-#include "rules/beckmann/beckmann_azimuth.h"
 #include "quadrature/poly_roots.h"
+#include "rules/beckmann/beckmann_azimuth.h"
+#include "rules/ggx/azimuthal.h"
 #include "rules/sel/sel_norm.h"
+#include "rules/slope/azimuthal_slope.h"
 #include "rules/std/std_azimuth.h"
 
 namespace brdfbake {

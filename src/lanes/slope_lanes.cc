@@ -18,9 +18,9 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
-#include "lanes/lanes_common-inl.h"
-#include "lanes/beckmann_azimuth_f64-inl.h"
 #include "kernels/math_f64-inl.h"
+#include "lanes/beckmann_azimuth_f64-inl.h"
+#include "lanes/lanes_common-inl.h"
 #if BRDFBAKE_WITH_STD
 #include "kernels/std_f64-inl.h"
 #endif

@@ -18,11 +18,11 @@
 #include <tiny_gltf.h>
 #include <toml++/toml.h>
 
+#include "base/error.h"
+#include "base/text.h"
 #include "brdfbake/exr.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
-#include "base/text.h"
-#include "base/error.h"
 
 namespace brdfbake {
 namespace {

@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/std_ndf.h"
 #include "reference/reference_albedo.h"

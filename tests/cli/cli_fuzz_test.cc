@@ -23,8 +23,8 @@
 
 #include <gtest/gtest.h>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
+#include "brdfbake/exr.h"
 #include "util/cli_util.h"
 
 #ifdef BRDFBAKE_CLI_PATH

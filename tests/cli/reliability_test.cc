@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The README's promises under bad input and faults, each at the input that
+// The tool's promises (docs/reliability.md) under bad input and faults, each at the input that
 // once broke it: output files (devices, symbolic links at the temporary's
 // name, signals during the write, long names, modes), standard output on a
 // full device, one-line errors with control characters, out-of-range
@@ -25,14 +25,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/eval.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
+#include "brdfbake/models/std_ndf.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/report.h"
-#include "brdfbake/models/std_ndf.h"
 #include "util/cli_util.h"
 #include "util/lookup_util.h"
 

@@ -25,9 +25,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/containers.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/presets.h"
 #include "brdfbake/shaders.h"
 #include "util/file_util.h"

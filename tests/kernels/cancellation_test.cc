@@ -22,14 +22,14 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <gtest/gtest.h>
 
-#include "rules/ggx/azimuthal.h"
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/std_ndf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 namespace {

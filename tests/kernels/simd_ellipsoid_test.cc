@@ -16,10 +16,10 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/models/kernel_bounds.h"
-#include "brdfbake/targets.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/ellipsoid.h"
+#include "brdfbake/models/kernel_bounds.h"
+#include "brdfbake/targets.h"
 
 #include "util/simd_test_util.h"
 

@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/models/fresnel.h"
 #include "brdfbake/models/kernel_bounds.h"
 #include "brdfbake/targets.h"
-#include "brdfbake/models/fresnel.h"
 
 #include "util/simd_test_util.h"
 

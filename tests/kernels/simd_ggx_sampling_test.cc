@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
+#include "brdfbake/models/ggx.h"
 #include "brdfbake/models/kernel_bounds.h"
 #include "brdfbake/targets.h"
-#include "brdfbake/models/ggx.h"
 
 #include "util/simd_test_util.h"
 

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "brdfbake/batch.h"
-#include "brdfbake/targets.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/ggx.h"
+#include "brdfbake/targets.h"
 
 #include "util/simd_test_util.h"
 

@@ -13,8 +13,8 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/models/kernel_bounds.h"
-#include "brdfbake/targets.h"
 #include "brdfbake/models/sel.h"
+#include "brdfbake/targets.h"
 
 #include "util/simd_test_util.h"
 

@@ -183,8 +183,8 @@ inline const std::vector<double>& SweepArgs() {
 #include <hwy/highway.h>
 #include <hwy/tests/hwy_gtest.h>
 
-#include "kernels/std_f64-inl.h"
 #include "kernels/simd_map_f64-inl.h"
+#include "kernels/std_f64-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {

@@ -25,8 +25,8 @@
 #include <hwy/highway.h>
 #include <hwy/tests/hwy_gtest.h>
 
-#include "kernels/std-inl.h"
 #include "kernels/simd_slope_test-inl.h"
+#include "kernels/std-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace brdfbake {

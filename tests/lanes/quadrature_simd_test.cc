@@ -19,11 +19,11 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/targets.h"
-#include "rules/ggx_aniso/aniso_ggx.h"
+#include "lanes/quadrature_simd.h"
 #include "rules/ellipsoid/ellipsoid_albedo.h"
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 #include "util/poly_test_util.h"
-#include "lanes/quadrature_simd.h"
 
 namespace brdfbake {
 namespace {

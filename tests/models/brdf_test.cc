@@ -14,9 +14,9 @@
 
 #include <gtest/gtest.h>
 
+#include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/ggx.h"
-#include "brdfbake/model.h"
 #include "util/test_util.h"
 
 namespace brdfbake {

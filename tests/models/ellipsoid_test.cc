@@ -5,11 +5,11 @@
 // anisotropic GGX it reduces to for R = I, its own sampler (chi-square) and
 // the invariances stated in [Walter15] section 1.
 
-#include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/bake.h"
-#include "rules/ggx_aniso/aniso_ggx.h"
-#include "rules/ellipsoid/ellipsoid_albedo.h"
+#include "brdfbake/models/ellipsoid.h"
 #include "lanes/quadrature_simd.h"
+#include "rules/ellipsoid/ellipsoid_albedo.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 
 #include <gtest/gtest.h>
 
@@ -464,7 +464,7 @@ TEST(EllipsoidTest, InvariantUnderScaleAndLeftOrthogonal) {
 }
 
 // ---------------------------------------------------------------------------
-// No NaN or Inf over the documented domain (README "Domain"), and the float
+// No NaN or Inf over the documented domain (docs/tables.md, "Domain and clamping policy"), and the float
 // instantiation stays close to the double one.
 TEST(EllipsoidTest, FiniteEverywhere) {
   const Shape extreme[] = {{"tiny", 1e-4, 1e-4, 0, 0, 0},

@@ -1,11 +1,12 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Seeded random sweep over the documented domain (README "Domain", alpha up
-// to kMaxAlpha and gamma up to the largest double): every
-// model quantity stays finite and non-negative (Lambda is +inf only on and
-// below the horizon), samplers return unit vectors, in double and in float,
-// and small bakes with random settings give finite tables within [0, 1].
+// Seeded random sweep over the documented domain (docs/tables.md, "Domain
+// and clamping policy"; alpha up to kMaxAlpha and gamma up to the largest
+// double): every model quantity stays finite and non-negative (Lambda is
+// +inf only on and below the horizon), samplers return unit vectors, in
+// double and in float, and small bakes with random settings give finite
+// tables within [0, 1].
 
 #include <cmath>
 #include <limits>
@@ -14,10 +15,10 @@
 #include <gtest/gtest.h>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/model.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/models/ggx.h"
-#include "brdfbake/model.h"
 #include "brdfbake/models/sel.h"
 #include "brdfbake/models/std_ndf.h"
 
@@ -47,7 +48,7 @@ struct Sweep {
     static const char* kNames[] = {"ggx", "beckmann", "std", "ellipsoid"};
     p.kind = ParseModelKind(kNames[static_cast<int>(U() * 4)]);
     // Mostly the tested range [1e-4, 1], also up to the bound kMaxAlpha and
-    // at it (README "Domain").
+    // at it (docs/tables.md, "Domain and clamping policy").
     const double ka = U();
     p.alpha_x = ka < 0.7 ? LogU(1e-4, 1.0) : (ka < 0.85 ? LogU(1.0, kMaxAlpha) : kMaxAlpha);
     p.alpha_y = std::clamp(p.alpha_x * LogU(1e-3, 1e3), 1e-4, kMaxAlpha);

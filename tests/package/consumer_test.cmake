@@ -25,8 +25,7 @@ foreach(f include/brdfbake/batch.h include/brdfbake/models/ggx.h include/brdfbak
   endif()
 endforeach()
 
-# find_package against the installed tree; a build type the subproject
-# check below must leave alone.
+# find_package against the installed tree: build and run both programs.
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/installed
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/installed -j2)

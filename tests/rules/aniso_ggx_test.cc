@@ -14,14 +14,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "rules/ggx_aniso/aniso_ggx.h"
-#include "rules/ggx/azimuthal.h"
-#include "quadrature/gauss_legendre.h"
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/report.h"
+#include "quadrature/gauss_legendre.h"
 #include "reference/reference_albedo.h"
+#include "rules/ggx/azimuthal.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 
 namespace brdfbake {
 namespace {

@@ -16,8 +16,8 @@
 
 #include <gtest/gtest.h>
 
-#include "rules/slope/azimuthal_slope.h"
 #include "reference/disk_quadrature.h"
+#include "rules/slope/azimuthal_slope.h"
 
 namespace brdfbake {
 namespace {

@@ -12,9 +12,9 @@
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/ggx.h"
 #include "reference/disk_quadrature.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 namespace {

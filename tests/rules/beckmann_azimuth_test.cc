@@ -29,10 +29,10 @@
 #include <boost/math/special_functions/bessel.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "rules/slope/azimuthal_slope.h"
-#include "rules/beckmann/beckmann_azimuth.h"
 #include "lanes/quadrature_simd.h"
 #include "reference/ref_util.h"
+#include "rules/beckmann/beckmann_azimuth.h"
+#include "rules/slope/azimuthal_slope.h"
 
 namespace brdfbake {
 namespace beckmann_azimuth_test {

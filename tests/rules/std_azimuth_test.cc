@@ -19,8 +19,8 @@
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <gtest/gtest.h>
 
-#include "rules/slope/azimuthal_slope.h"
 #include "lanes/quadrature_simd.h"
+#include "rules/slope/azimuthal_slope.h"
 #include "rules/std/std_azimuth.h"
 
 namespace brdfbake {

@@ -26,18 +26,18 @@
 
 #include <CLI/CLI.hpp>
 
-#include "brdfbake/exr.h"
 #include "brdfbake/bake.h"
-#include "brdfbake/containers.h"
-#include "brdfbake/presets.h"
-#include "brdfbake/shaders.h"
 #include "brdfbake/batch.h"
+#include "brdfbake/containers.h"
 #include "brdfbake/eval.h"
+#include "brdfbake/exr.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
 #include "brdfbake/output_file.h"
+#include "brdfbake/presets.h"
 #include "brdfbake/report.h"
 #include "brdfbake/scene.h"
+#include "brdfbake/shaders.h"
 #include "brdfbake/stability.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/version.h"

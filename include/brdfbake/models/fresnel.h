@@ -1,7 +1,7 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Fresnel reflectance models (README "Models"): one, schlick (F0, RGB),
+// Fresnel reflectance models (docs/models.md): one, schlick (F0, RGB),
 // dielectric (real eta), conductor (complex eta = n + i k, RGB). Each is
 // evaluated per colour channel at the cosine between the direction and the
 // microfacet normal.

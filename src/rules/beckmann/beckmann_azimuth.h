@@ -47,9 +47,9 @@
 #include <cmath>
 #include <limits>
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 

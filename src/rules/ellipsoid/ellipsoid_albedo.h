@@ -48,8 +48,8 @@
 #ifndef BRDFBAKE_SRC_RULES_ELLIPSOID_ELLIPSOID_ALBEDO_H_
 #define BRDFBAKE_SRC_RULES_ELLIPSOID_ELLIPSOID_ALBEDO_H_
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/brdf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 

@@ -19,10 +19,10 @@
 #include <memory>
 #include <vector>
 
-#include "quadrature/adaptive_rule.h"
 #include "brdfbake/models/ellipsoid.h"
-#include "rules/ellipsoid/ellipsoid_albedo.h"
+#include "quadrature/adaptive_rule.h"
 #include "quadrature/poly_roots.h"
+#include "rules/ellipsoid/ellipsoid_albedo.h"
 
 namespace brdfbake {
 

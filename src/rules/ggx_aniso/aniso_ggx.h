@@ -37,8 +37,8 @@
 #ifndef BRDFBAKE_SRC_RULES_GGX_ANISO_ANISO_GGX_H_
 #define BRDFBAKE_SRC_RULES_GGX_ANISO_ANISO_GGX_H_
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/brdf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 

@@ -15,10 +15,10 @@
 #include <cmath>
 #include <vector>
 
-#include "quadrature/adaptive_rule.h"
-#include "rules/ggx_aniso/aniso_ggx.h"
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/ggx.h"
+#include "quadrature/adaptive_rule.h"
+#include "rules/ggx/azimuthal.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 
 namespace brdfbake {
 

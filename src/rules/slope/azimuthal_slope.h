@@ -43,10 +43,10 @@
 #include <limits>
 #include <type_traits>
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/std_ndf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 

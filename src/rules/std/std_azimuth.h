@@ -53,9 +53,9 @@
 #include <limits>
 #include <vector>
 
-#include "rules/ggx/azimuthal.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/std_ndf.h"
+#include "rules/ggx/azimuthal.h"
 
 namespace brdfbake {
 
