@@ -15,9 +15,10 @@ cd "$(dirname "$0")/.."
 packages="build-essential cmake libhwy-dev libopenexr-dev libtbb-dev libboost-dev \
 libcli11-dev nlohmann-json3-dev libtinygltf-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev"
 # The tests also read files back with OpenImageIO, compile the generated
-# shaders with glslang and run the GLSL lookups in headless Chromium.
+# shaders with glslang, run the GLSL lookups in headless Chromium and build
+# the installed package with pkg-config.
 if [ "$mode" = test ]; then
-  packages="$packages openimageio-tools glslang-tools chromium"
+  packages="$packages openimageio-tools glslang-tools chromium pkgconf"
 fi
 missing=""
 for p in $packages; do

@@ -27,10 +27,20 @@ namespace brdfbake {
 // Fresnel::Schlick / Dielectric / Conductor in fresnel.h).
 enum class BatchFresnel { kSchlick, kDielectric, kConductor };
 
-// A model as the batch kernels take it. Widths are clamped below at 1e-4;
-// gamma (std) below at 1.5 + 1e-6, and from 1e10 on (and at +inf) std runs
-// the Beckmann kernels. Angles in radians: the ellipsoid's A = S Rx Ry Rz,
-// the sel lobe's frame Q = Rx Ry Rz.
+// A model as the batch kernels take it. Every call checks it once, before
+// any output is written, and throws std::invalid_argument naming the call
+// and the field outside its domain (docs/kernels.md):
+//   alpha_x, alpha_y  (0, 1e4]; below 1e-4 evaluated at 1e-4
+//   gamma (std)       (1.5, inf]; below 1.5 + 1e-6 evaluated at 1.5 + 1e-6,
+//                     from 1e10 on (and at inf) as Beckmann
+//   theta_* (ellipsoid, sel)  [-pi/2, pi/2] radians: the ellipsoid's
+//                     A = S Rx Ry Rz, the sel lobe's frame Q = Rx Ry Rz
+//   f0 (Schlick)      [0, 1]
+//   eta (dielectric)  [0.01, 100]; conductor eta in [0.01, 100], k in [0, 100]
+// NaN is outside every domain. Directions and the sampler's u are not
+// checked (per-element checks would cost a pass over the inputs): a
+// non-finite one changes only its own element's outputs, to NaN or to the
+// value below the horizon.
 struct BatchModel {
   ModelKind kind = ModelKind::kGgx;  // ggx, beckmann, std, ellipsoid or sel
   float alpha_x = 0.25f, alpha_y = 0.25f;
@@ -86,6 +96,21 @@ struct DirOutArrays {
   float* z;
 };
 
+// Per-element parameters, for a batch of mixed materials in one call: the
+// arrays hold n values each, and a null array takes the BatchModel's value
+// for every element. alpha_y null with alpha_x given means isotropic
+// (alpha_y[j] = alpha_x[j]); f0 is Schlick's F0 (with BatchFresnel::kSchlick).
+// Every element is checked against the domain above before any output is
+// written; the error names the first element outside it. ggx and beckmann
+// take them (BatchSupportsElements); the other models take one set of
+// parameters per call.
+struct BatchElements {
+  const float* alpha_x = nullptr;
+  const float* alpha_y = nullptr;
+  const float* f0 = nullptr;
+};
+bool BatchSupportsElements(ModelKind kind);
+
 // out[j] = q(w[j]) for a one-direction quantity, or q(a[j], b[j]) for a
 // pair: (wi, wo) for G2 and brdf, (wo, m) for pdf_visible. A model that
 // does not define q, a model left out of this build, or the wrong shape
@@ -95,6 +120,34 @@ void EvalBatch(const BatchModel& model, Quantity q, DirArrays a, DirArrays b, fl
 // m[j] drawn by sampler s from (u1[j], u2[j]); wo is read by kVisible only.
 void SampleBatch(const BatchModel& model, Sampler s, DirArrays wo, const float* u1, const float* u2,
                  DirOutArrays m, size_t n);
+
+// The same with per-element parameters.
+void EvalBatch(const BatchModel& model, const BatchElements& elements, Quantity q, DirArrays w,
+               float* out, size_t n);
+void EvalBatch(const BatchModel& model, const BatchElements& elements, Quantity q, DirArrays a,
+               DirArrays b, float* out, size_t n);
+void SampleBatch(const BatchModel& model, const BatchElements& elements, Sampler s, DirArrays wo,
+                 const float* u1, const float* u2, DirOutArrays m, size_t n);
+
+// Light directions as a path tracer consumes them: wi[j] reflects wo[j]
+// about a visible normal m drawn from (u1[j], u2[j]), with
+//   pdf[j]    = pdf_visible(wo, m) / (4 wo.m), the density of wi in solid angle;
+//   weight[j] = f(wi, wo) wi.z / pdf, the sample's estimate of the albedo
+//               (F G2 / G1(wo) for ggx, beckmann and the ellipsoid),
+//               0 where wi is on or below the horizon.
+// For wo.z <= 0: wi = 0, weight = 0, pdf = 0. Models with a visible-normal
+// sampler (BatchSupports(kind, Sampler::kVisible)).
+struct LightSampleArrays {
+  float* x;
+  float* y;
+  float* z;
+  float* weight;
+  float* pdf;
+};
+void SampleLightBatch(const BatchModel& model, DirArrays wo, const float* u1, const float* u2,
+                      LightSampleArrays wi, size_t n);
+void SampleLightBatch(const BatchModel& model, const BatchElements& elements, DirArrays wo,
+                      const float* u1, const float* u2, LightSampleArrays wi, size_t n);
 
 // FresnelDielectric(eta, cos_i[j]) for n cosines (clamped to [0, 1]);
 // eta = n_t / n_i in [0.01, 100].

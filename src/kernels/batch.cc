@@ -8,6 +8,9 @@
 
 #include "brdfbake/batch.h"
 
+#include <algorithm>
+#include <array>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -28,15 +31,18 @@ struct ModelDispatch {
   BatchEvalFn eval = nullptr;
   BatchSampleFn sample = nullptr;
   bool flush_subnormals = false;
+  BatchEvalFn eval_elements = nullptr;  // per-element parameters
+  BatchSampleFn sample_elements = nullptr;
 };
 
 ModelDispatch DispatchOf(ModelKind kind) {
   switch (kind) {
     case ModelKind::kGgx:
-      return {GgxEvalBatch, GgxSampleBatch, false};
+      return {GgxEvalBatch, GgxSampleBatch, false, GgxEvalElementsBatch, GgxSampleElementsBatch};
 #if BRDFBAKE_WITH_BECKMANN
     case ModelKind::kBeckmann:
-      return {BeckmannEvalBatch, BeckmannSampleBatch, true};
+      return {BeckmannEvalBatch, BeckmannSampleBatch, true, BeckmannEvalElementsBatch,
+              BeckmannSampleElementsBatch};
 #endif
 #if BRDFBAKE_WITH_STD
     case ModelKind::kStudentT:
@@ -66,20 +72,87 @@ void MaybeFlushed(bool flush, const F& f) {
   }
 }
 
-// The dispatch of a built model, or a one-line error.
-ModelDispatch Checked(const char* entry, ModelKind kind) {
-  const ModelDispatch m = DispatchOf(kind);
-  if (!m.eval) {
-    Bad(std::string(entry) + ": model " + ModelName(kind) +
-        (kind == ModelKind::kGgxAniso ? " is a table model; give ggx with its two widths"
-                                      : " is not in this build (BRDFBAKE_MODELS)"));
+// `what` = value is outside `domain`, as one line naming the call.
+[[noreturn]] void Outside(const char* entry, const std::string& what, float value,
+                          const char* domain) {
+  std::ostringstream os;
+  os << entry << ": " << what << " = " << value << " is outside " << domain;
+  Bad(os.str());
+}
+
+bool Within(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
+
+void CheckFresnel(const char* entry, const BatchModel& m) {
+  switch (m.fresnel) {
+    case BatchFresnel::kSchlick:
+      if (!Within(m.f0, 0, 1)) Outside(entry, "f0", m.f0, "[0, 1]");
+      return;
+    case BatchFresnel::kDielectric:
+      if (!Within(m.eta, 0.01f, 100)) Outside(entry, "eta", m.eta, "[0.01, 100]");
+      return;
+    case BatchFresnel::kConductor:
+      if (!Within(m.eta, 0.01f, 100)) Outside(entry, "eta", m.eta, "[0.01, 100]");
+      if (!Within(m.k, 0, 100)) Outside(entry, "k", m.k, "[0, 100]");
+      return;
   }
+  Bad(std::string(entry) + ": unknown BatchFresnel");
+}
+
+// The dispatch of a built model whose parameters lie in the domain
+// (batch.h), or a one-line error.
+ModelDispatch Checked(const char* entry, const BatchModel& model) {
+  const ModelDispatch m = DispatchOf(model.kind);
+  if (!m.eval) {
+    Bad(std::string(entry) + ": model " + ModelName(model.kind) +
+        (model.kind == ModelKind::kGgxAniso ? " is a table model; give ggx with its two widths"
+                                            : " is not in this build (BRDFBAKE_MODELS)"));
+  }
+  ModelParams p;
+  p.kind = model.kind;
+  p.alpha_x = model.alpha_x;
+  p.alpha_y = model.alpha_y;
+  p.gamma = model.gamma;
+  p.theta_x = model.theta_x;
+  p.theta_y = model.theta_y;
+  p.theta_z = model.theta_z;
+  try {
+    ValidateModelParams(p);
+  } catch (const std::invalid_argument& e) {
+    Bad(std::string(entry) + ": " + e.what());
+  }
+  CheckFresnel(entry, model);
   return m;
 }
 
-void Eval(const BatchModel& model, Quantity q, bool pair, const float* const* in, float* out,
-          size_t n) {
-  const ModelDispatch m = Checked("EvalBatch", model.kind);
+// The per-element arrays of `e` as the kernels take them (alpha_y falls
+// back on alpha_x), each element checked.
+std::array<const float*, 3> CheckedElements(const char* entry, const BatchModel& model,
+                                            const ModelDispatch& m, const BatchElements& e,
+                                            size_t n) {
+  if (!m.eval_elements) {
+    Bad(std::string(entry) + ": model " + ModelName(model.kind) +
+        " takes its parameters per call (per-element parameters: ggx, beckmann)");
+  }
+  const float* ay = e.alpha_y ? e.alpha_y : e.alpha_x;
+  const auto check = [&](const char* name, const float* a, float lo, bool open_lo, float hi,
+                         const char* domain) {
+    if (!a) return;
+    for (size_t j = 0; j < n; ++j) {
+      if (!(open_lo ? a[j] > lo : a[j] >= lo) || !(a[j] <= hi)) {
+        Outside(entry, std::string(name) + "[" + std::to_string(j) + "]", a[j], domain);
+      }
+    }
+  };
+  check("alpha_x", e.alpha_x, 0, true, 1e4f, "(0, 1e4]");
+  check("alpha_y", e.alpha_y, 0, true, 1e4f, "(0, 1e4]");
+  if (e.f0 && model.fresnel != BatchFresnel::kSchlick) {
+    Bad(std::string(entry) + ": per-element f0 needs BatchFresnel::kSchlick");
+  }
+  check("f0", e.f0, 0, false, 1, "[0, 1]");
+  return {e.alpha_x, ay, e.f0};
+}
+
+void CheckQuantity(const BatchModel& model, Quantity q, bool pair) {
   if (!BatchSupports(model.kind, q)) {
     Bad(std::string("EvalBatch: model ") + ModelName(model.kind) + " has no quantity " +
         QuantityName(q));
@@ -88,8 +161,105 @@ void Eval(const BatchModel& model, Quantity q, bool pair, const float* const* in
     Bad(std::string("EvalBatch: ") + QuantityName(q) + " takes " +
         (IsPairQuantity(q) ? "a pair of directions" : "one direction"));
   }
+}
+
+void CheckSampler(const char* entry, const BatchModel& model, Sampler s) {
+  if (!BatchSupports(model.kind, s)) {
+    Bad(std::string(entry) + ": model " + ModelName(model.kind) + " has no " +
+        (s == Sampler::kNdf ? "NDF" : "visible-normal") + " sampler");
+  }
+}
+
+// Evaluation of checked arguments: `in` holds the 3 or 6 direction arrays,
+// then (with elements) the 3 per-element arrays.
+void EvalChecked(const ModelDispatch& m, const BatchModel& model, bool elements, Quantity q,
+                 const float* const* in, float* out, size_t n) {
+  (elements ? m.eval_elements : m.eval)(model, q, in, out, n);
+}
+
+void Eval(const BatchModel& model, const BatchElements* e, Quantity q, const DirArrays* dirs,
+          int count, float* out, size_t n) {
+  const ModelDispatch m = Checked("EvalBatch", model);
+  CheckQuantity(model, q, count == 2);
+  const float* in[9] = {};
+  for (int k = 0; k < count; ++k) {
+    in[3 * k] = dirs[k].x;
+    in[3 * k + 1] = dirs[k].y;
+    in[3 * k + 2] = dirs[k].z;
+  }
+  if (e) {
+    const std::array<const float*, 3> pe = CheckedElements("EvalBatch", model, m, *e, n);
+    for (int k = 0; k < 3; ++k) in[3 * count + k] = pe[k];
+  }
   if (n == 0) return;
-  MaybeFlushed(m.flush_subnormals, [&] { m.eval(model, q, in, out, n); });
+  MaybeFlushed(m.flush_subnormals, [&] { EvalChecked(m, model, e != nullptr, q, in, out, n); });
+}
+
+void Sample(const BatchModel& model, const BatchElements* e, Sampler s, DirArrays wo,
+            const float* u1, const float* u2, DirOutArrays mo, size_t n) {
+  const ModelDispatch m = Checked("SampleBatch", model);
+  CheckSampler("SampleBatch", model, s);
+  const float* in[8] = {wo.x, wo.y, wo.z, u1, u2};
+  if (e) {
+    const std::array<const float*, 3> pe = CheckedElements("SampleBatch", model, m, *e, n);
+    for (int k = 0; k < 3; ++k) in[5 + k] = pe[k];
+  }
+  if (n == 0) return;
+  float* out[3] = {mo.x, mo.y, mo.z};
+  MaybeFlushed(m.flush_subnormals,
+               [&] { (e ? m.sample_elements : m.sample)(model, s, in, out, n); });
+}
+
+// Light directions: per chunk of elements, the visible normals, the
+// reflection, the normals' density and the BRDF (each one vector loop of
+// the model's kernels), then pdf and weight.
+void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, const float* u1,
+                 const float* u2, LightSampleArrays wi, size_t n) {
+  const char* entry = "SampleLightBatch";
+  const ModelDispatch m = Checked(entry, model);
+  CheckSampler(entry, model, Sampler::kVisible);
+  std::array<const float*, 3> pe = {};
+  if (e) pe = CheckedElements(entry, model, m, *e, n);
+  if (n == 0) return;
+  constexpr size_t kChunk = 256;
+  alignas(64) float mx[kChunk], my[kChunk], mz[kChunk], pdf_m[kChunk], f[kChunk];
+  MaybeFlushed(m.flush_subnormals, [&] {
+    for (size_t i = 0; i < n; i += kChunk) {
+      const size_t c = std::min(kChunk, n - i);
+      const float* ox = wo.x + i;
+      const float* oy = wo.y + i;
+      const float* oz = wo.z + i;
+      float* ix = wi.x + i;
+      float* iy = wi.y + i;
+      float* iz = wi.z + i;
+      const float* in[11] = {ox, oy, oz, u1 + i, u2 + i};
+      for (int k = 0; k < 3; ++k) in[5 + k] = pe[k] ? pe[k] + i : nullptr;
+      float* normal[3] = {mx, my, mz};
+      (e ? m.sample_elements : m.sample)(model, Sampler::kVisible, in, normal, c);
+      for (size_t j = 0; j < c; ++j) {
+        const float om = ox[j] * mx[j] + oy[j] * my[j] + oz[j] * mz[j];
+        ix[j] = 2 * om * mx[j] - ox[j];
+        iy[j] = 2 * om * my[j] - oy[j];
+        iz[j] = 2 * om * mz[j] - oz[j];
+      }
+      // (wo, m) for the density, (wi, wo) for the BRDF, then the elements.
+      const float* pair[9] = {ox, oy, oz, mx, my, mz};
+      for (int k = 0; k < 3; ++k) pair[6 + k] = in[5 + k];
+      EvalChecked(m, model, e != nullptr, Quantity::kPdfVisible, pair, pdf_m, c);
+      const float* brdf[9] = {ix, iy, iz, ox, oy, oz};
+      for (int k = 0; k < 3; ++k) brdf[6 + k] = in[5 + k];
+      EvalChecked(m, model, e != nullptr, Quantity::kBrdf, brdf, f, c);
+      float* weight = wi.weight + i;
+      float* pdf = wi.pdf + i;
+      for (size_t j = 0; j < c; ++j) {
+        const float om = ox[j] * mx[j] + oy[j] * my[j] + oz[j] * mz[j];
+        const bool valid = oz[j] > 0 && om > 0 && pdf_m[j] > 0;
+        pdf[j] = valid ? pdf_m[j] / (4 * om) : 0.0f;
+        weight[j] = valid && iz[j] > 0 ? f[j] * iz[j] * (4 * om) / pdf_m[j] : 0.0f;
+        if (!(oz[j] > 0)) ix[j] = iy[j] = iz[j] = 0.0f;
+      }
+    }
+  });
 }
 
 }  // namespace
@@ -181,28 +351,47 @@ bool BatchSupports(ModelKind kind, Sampler s) {
   return false;
 }
 
+bool BatchSupportsElements(ModelKind kind) { return DispatchOf(kind).eval_elements != nullptr; }
+
 void EvalBatch(const BatchModel& model, Quantity q, DirArrays w, float* out, size_t n) {
-  const float* in[3] = {w.x, w.y, w.z};
-  Eval(model, q, false, in, out, n);
+  Eval(model, nullptr, q, &w, 1, out, n);
 }
 
 void EvalBatch(const BatchModel& model, Quantity q, DirArrays a, DirArrays b, float* out,
                size_t n) {
-  const float* in[6] = {a.x, a.y, a.z, b.x, b.y, b.z};
-  Eval(model, q, true, in, out, n);
+  const DirArrays dirs[2] = {a, b};
+  Eval(model, nullptr, q, dirs, 2, out, n);
+}
+
+void EvalBatch(const BatchModel& model, const BatchElements& elements, Quantity q, DirArrays w,
+               float* out, size_t n) {
+  Eval(model, &elements, q, &w, 1, out, n);
+}
+
+void EvalBatch(const BatchModel& model, const BatchElements& elements, Quantity q, DirArrays a,
+               DirArrays b, float* out, size_t n) {
+  const DirArrays dirs[2] = {a, b};
+  Eval(model, &elements, q, dirs, 2, out, n);
 }
 
 void SampleBatch(const BatchModel& model, Sampler s, DirArrays wo, const float* u1, const float* u2,
                  DirOutArrays m, size_t n) {
-  const ModelDispatch d = Checked("SampleBatch", model.kind);
-  if (!BatchSupports(model.kind, s)) {
-    Bad(std::string("SampleBatch: model ") + ModelName(model.kind) + " has no " +
-        (s == Sampler::kNdf ? "NDF" : "visible-normal") + " sampler");
-  }
-  if (n == 0) return;
-  const float* in[5] = {wo.x, wo.y, wo.z, u1, u2};
-  float* out[3] = {m.x, m.y, m.z};
-  MaybeFlushed(d.flush_subnormals, [&] { d.sample(model, s, in, out, n); });
+  Sample(model, nullptr, s, wo, u1, u2, m, n);
+}
+
+void SampleBatch(const BatchModel& model, const BatchElements& elements, Sampler s, DirArrays wo,
+                 const float* u1, const float* u2, DirOutArrays m, size_t n) {
+  Sample(model, &elements, s, wo, u1, u2, m, n);
+}
+
+void SampleLightBatch(const BatchModel& model, DirArrays wo, const float* u1, const float* u2,
+                      LightSampleArrays wi, size_t n) {
+  SampleLight(model, nullptr, wo, u1, u2, wi, n);
+}
+
+void SampleLightBatch(const BatchModel& model, const BatchElements& elements, DirArrays wo,
+                      const float* u1, const float* u2, LightSampleArrays wi, size_t n) {
+  SampleLight(model, &elements, wo, u1, u2, wi, n);
 }
 
 }  // namespace brdfbake

@@ -22,28 +22,64 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using DF = hn::ScalableTag<float>;
 
-void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
-  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  if (MicrofacetRows(BeckmannKernels<DF>{c}, p, q, in, out, n)) return;
+// The rows of a call with one model (kP = 0) or per-element parameters
+// (kP = kElementParams; batch_rows-inl.h).
+template <int kP>
+void BeckmannEvalRows(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                      size_t n) {
+  const BeckmannConsts<DF> call(DF(), p.alpha_x, p.alpha_y, p.f0);
+  const auto make = [](const auto* pv) { return BeckmannConsts<DF>(DF(), pv[0], pv[1], pv[2]); };
+  const auto with = [&](auto, const auto* pv, const auto& body) {
+    return WithConsts<kP>(call, make, pv,
+                          [&](const auto& c) { return body(BeckmannKernels<DF>{c}); });
+  };
+  if (MicrofacetRowsWith<kP, BeckmannKernels<DF>>(with, p, q, in, out, n)) return;
   if (q != Quantity::kPdfVisible) return;
-  PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
-               auto mz) { return BeckmannPdfVisible(d, c, ox, oy, oz, mx, my, mz); },
-           in, out, n);
+  Rows<6, kP>(p, in, out, n, [&](auto d, const auto* v, const auto* pv) {
+    return WithConsts<kP>(call, make, pv, [&](const auto& c) {
+      return BeckmannPdfVisible(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
+    });
+  });
 }
 
+template <int kP>
+void BeckmannSampleRows(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                        size_t n) {
+  const BeckmannConsts<DF> call(DF(), p.alpha_x, p.alpha_y, p.f0);
+  const auto make = [](const auto* pv) { return BeckmannConsts<DF>(DF(), pv[0], pv[1], pv[2]); };
+  if (s == Sampler::kVisible) {
+    return VisibleRows<kP>(p,
+                           [&](auto d, const auto* pv, auto ox, auto oy, auto oz, auto u1, auto u2,
+                               auto* mx, auto* my, auto* mz) {
+                             WithConsts<kP>(call, make, pv, [&](const auto& c) {
+                               BeckmannSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+                             });
+                           },
+                           in, out, n);
+  }
+  NdfSampleRows<kP>(p,
+                    [&](auto d, const auto* pv, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
+                      WithConsts<kP>(call, make, pv, [&](const auto& c) {
+                        BeckmannSampleNdf(d, c, u1, u2, mx, my, mz);
+                      });
+                    },
+                    in, out, n);
+}
+
+void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  BeckmannEvalRows<0>(p, q, in, out, n);
+}
+void BeckmannEvalElements(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                          size_t n) {
+  BeckmannEvalRows<kElementParams>(p, q, in, out, n);
+}
 void BeckmannSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
                     size_t n) {
-  const BeckmannConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  if (s == Sampler::kVisible) {
-    return VisibleRows(
-        [&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
-          BeckmannSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
-        },
-        in, out, n);
-  }
-  NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
-                    auto* mz) { BeckmannSampleNdf(d, c, u1, u2, mx, my, mz); },
-                in, out, n);
+  BeckmannSampleRows<0>(p, s, in, out, n);
+}
+void BeckmannSampleElements(const BatchModel& p, Sampler s, const float* const* in,
+                            float* const* out, size_t n) {
+  BeckmannSampleRows<kElementParams>(p, s, in, out, n);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -55,6 +91,7 @@ namespace brdfbake {
 
 BRDFBAKE_BATCH_EVAL_DISPATCH(Beckmann)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Beckmann)
+BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Beckmann)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -36,6 +36,16 @@ void EllipsoidEvalBatch(const BatchModel& p, Quantity q, const float* const* in,
                         size_t n);
 void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
                           size_t n);
+// Per-element parameters (batch.h BatchElements): `in` has 3 more arrays
+// after the directions (alpha_x, alpha_y, F0; null for the call's value).
+void GgxEvalElementsBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                          size_t n);
+void GgxSampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,
+                            float* const* out, size_t n);
+void BeckmannEvalElementsBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                               size_t n);
+void BeckmannSampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,
+                                 float* const* out, size_t n);
 void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
 
 // In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
@@ -51,6 +61,18 @@ void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float
   void Model##SampleBatch(const BatchModel& p, Sampler s, const float* const* in,             \
                           float* const* out, size_t n) {                                      \
     HWY_DYNAMIC_DISPATCH(Model##Sample)(p, s, in, out, n);                                    \
+  }
+
+#define BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Model)                                              \
+  HWY_EXPORT(Model##EvalElements);                                                           \
+  HWY_EXPORT(Model##SampleElements);                                                         \
+  void Model##EvalElementsBatch(const BatchModel& p, Quantity q, const float* const* in,     \
+                                float* out, size_t n) {                                      \
+    HWY_DYNAMIC_DISPATCH(Model##EvalElements)(p, q, in, out, n);                             \
+  }                                                                                          \
+  void Model##SampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,    \
+                                  float* const* out, size_t n) {                             \
+    HWY_DYNAMIC_DISPATCH(Model##SampleElements)(p, s, in, out, n);                           \
   }
 
 }  // namespace brdfbake

@@ -36,9 +36,12 @@ void EllipsoidEval(const BatchModel& p, Quantity q, const float* const* in, floa
 void EllipsoidSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
                      size_t n) {
   const EllipsoidConsts<DF> c = MakeEllipsoidConsts(p);
-  VisibleRows([&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my,
-                  auto* mz) { EllipsoidSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz); },
-              in, out, n);
+  VisibleRows<0>(p,
+                 [&](auto d, const auto*, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx,
+                     auto* my, auto* mz) {
+                   EllipsoidSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+                 },
+                 in, out, n);
 }
 
 }  // namespace HWY_NAMESPACE

@@ -21,32 +21,72 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 using DF = hn::ScalableTag<float>;
 
-void GgxEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+// The rows of a call with one model (kP = 0) or per-element parameters
+// (kP = kElementParams; batch_rows-inl.h).
+template <int kP>
+void GgxEvalRows(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
   if (q == Quantity::kPdfNdf || q == Quantity::kPdfVisible) {
     const GgxSamplingConsts<DF> s(DF(), p.alpha_x, p.alpha_y);
+    const auto make = [](const auto* pv) { return GgxSamplingConsts<DF>(DF(), pv[0], pv[1]); };
     if (q == Quantity::kPdfNdf) {
-      return DirRows([&](auto d, auto x, auto y, auto z) { return GgxPdfNdf(d, s, x, y, z); }, in,
-                     out, n);
+      return Rows<3, kP>(p, in, out, n, [&](auto d, const auto* v, const auto* pv) {
+        return WithConsts<kP>(s, make, pv,
+                              [&](const auto& c) { return GgxPdfNdf(d, c, v[0], v[1], v[2]); });
+      });
     }
-    return PairRows([&](auto d, auto ox, auto oy, auto oz, auto mx, auto my,
-                        auto mz) { return GgxPdfVisible(d, s, ox, oy, oz, mx, my, mz); },
-                    in, out, n);
+    return Rows<6, kP>(p, in, out, n, [&](auto d, const auto* v, const auto* pv) {
+      return WithConsts<kP>(s, make, pv, [&](const auto& c) {
+        return GgxPdfVisible(d, c, v[0], v[1], v[2], v[3], v[4], v[5]);
+      });
+    });
   }
-  const GgxConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0);
-  MicrofacetRows(GgxKernels<DF>{c}, p, q, in, out, n);
+  const GgxConsts<DF> call(DF(), p.alpha_x, p.alpha_y, p.f0);
+  const auto make = [](const auto* pv) { return GgxConsts<DF>(DF(), pv[0], pv[1], pv[2]); };
+  MicrofacetRowsWith<kP, GgxKernels<DF>>(
+      [&](auto, const auto* pv, const auto& body) {
+        return WithConsts<kP>(call, make, pv, [&](const auto& c) { return body(GgxKernels<DF>{c}); });
+      },
+      p, q, in, out, n);
 }
 
+template <int kP>
+void GgxSampleRows(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                   size_t n) {
+  const GgxSamplingConsts<DF> call(DF(), p.alpha_x, p.alpha_y);
+  const auto make = [](const auto* pv) { return GgxSamplingConsts<DF>(DF(), pv[0], pv[1]); };
+  if (s == Sampler::kVisible) {
+    return VisibleRows<kP>(p,
+                           [&](auto d, const auto* pv, auto ox, auto oy, auto oz, auto u1, auto u2,
+                               auto* mx, auto* my, auto* mz) {
+                             WithConsts<kP>(call, make, pv, [&](const auto& c) {
+                               GgxSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+                             });
+                           },
+                           in, out, n);
+  }
+  NdfSampleRows<kP>(p,
+                    [&](auto d, const auto* pv, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
+                      WithConsts<kP>(call, make, pv, [&](const auto& c) {
+                        GgxSampleNdf(d, c, u1, u2, mx, my, mz);
+                      });
+                    },
+                    in, out, n);
+}
+
+void GgxEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {
+  GgxEvalRows<0>(p, q, in, out, n);
+}
+void GgxEvalElements(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                     size_t n) {
+  GgxEvalRows<kElementParams>(p, q, in, out, n);
+}
 void GgxSample(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
                size_t n) {
-  const GgxSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y);
-  if (s == Sampler::kVisible) {
-    return VisibleRows([&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my,
-                           auto* mz) { GgxSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz); },
-                       in, out, n);
-  }
-  NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
-                    auto* mz) { GgxSampleNdf(d, c, u1, u2, mx, my, mz); },
-                in, out, n);
+  GgxSampleRows<0>(p, s, in, out, n);
+}
+void GgxSampleElements(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                       size_t n) {
+  GgxSampleRows<kElementParams>(p, s, in, out, n);
 }
 
 }  // namespace HWY_NAMESPACE
@@ -58,6 +98,7 @@ namespace brdfbake {
 
 BRDFBAKE_BATCH_EVAL_DISPATCH(Ggx)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ggx)
+BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Ggx)
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -47,21 +47,24 @@ void StudentTSample(const BatchModel& p, Sampler s, const float* const* in, floa
                     size_t n) {
   if (s == Sampler::kVisible) {
     const StudentTSamplingConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.gamma);
-    return VisibleRows(
-        [&](auto d, auto ox, auto oy, auto oz, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
-          StudentTSamplePseudoVnis(d, c, ox, oy, oz, u1, u2, mx, my, mz);
-        },
-        in, out, n);
+    return VisibleRows<0>(p,
+                          [&](auto d, const auto*, auto ox, auto oy, auto oz, auto u1, auto u2,
+                              auto* mx, auto* my, auto* mz) {
+                            StudentTSamplePseudoVnis(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+                          },
+                          in, out, n);
   }
   const StudentTConsts<DF> c(DF(), p.alpha_x, p.alpha_y, p.f0, p.gamma);
   if (c.beckmann) {
-    return NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
-                             auto* mz) { BeckmannSampleNdf(d, c.b, u1, u2, mx, my, mz); },
-                         in, out, n);
+    return NdfSampleRows<0>(p,
+                            [&](auto d, const auto*, auto u1, auto u2, auto* mx, auto* my,
+                                auto* mz) { BeckmannSampleNdf(d, c.b, u1, u2, mx, my, mz); },
+                            in, out, n);
   }
-  NdfSampleRows([&](auto d, auto u1, auto u2, auto* mx, auto* my,
-                    auto* mz) { StudentTSampleNdf(d, c, u1, u2, mx, my, mz); },
-                in, out, n);
+  NdfSampleRows<0>(p,
+                   [&](auto d, const auto*, auto u1, auto u2, auto* mx, auto* my,
+                       auto* mz) { StudentTSampleNdf(d, c, u1, u2, mx, my, mz); },
+                   in, out, n);
 }
 
 }  // namespace HWY_NAMESPACE

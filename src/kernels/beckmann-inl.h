@@ -85,6 +85,19 @@ struct BeckmannConsts {
     inv_pi_axay = hn::Set(d, static_cast<T>(0.31830988618379067 / (double(ax_) * ay_)));
     f0 = hn::Set(d, f0_);
   }
+  // Per-element widths and F0, one per lane (the reciprocals round in the
+  // lanes' type, not from double as above).
+  BeckmannConsts(D d, hn::Vec<D> ax_, hn::Vec<D> ay_, hn::Vec<D> f0_) {
+    const hn::Vec<D> one = hn::Set(d, T(1)), lo = hn::Set(d, T(1e-4));
+    ax = hn::Max(ax_, lo);
+    ay = hn::Max(ay_, lo);
+    ax2 = hn::Mul(ax, ax);
+    ay2 = hn::Mul(ay, ay);
+    inv_ax2 = hn::Div(one, ax2);
+    inv_ay2 = hn::Div(one, ay2);
+    inv_pi_axay = hn::Div(hn::Set(d, T(0.31830988618379067)), hn::Mul(ax, ay));
+    f0 = f0_;
+  }
 };
 
 // Where exp(-r2) leaves the lanes' range: D and the BRDF are 0 beyond. Float:

@@ -52,6 +52,19 @@ struct GgxConsts {
     inv_pi_axay = hn::Set(d, static_cast<T>(0.31830988618379067 / (double(ax) * ay)));
     f0 = hn::Set(d, f0_);
   }
+  // Per-element widths and F0, one per lane (alpha clamped the same way;
+  // 1 / (pi ax ay) rounds once more than the per-call constant).
+  GgxConsts(D d, hn::Vec<D> ax, hn::Vec<D> ay, hn::Vec<D> f0_) {
+    const hn::Vec<D> one = hn::Set(d, T(1)), lo = hn::Set(d, T(1e-4));
+    ax = hn::Max(ax, lo);
+    ay = hn::Max(ay, lo);
+    ax2 = hn::Mul(ax, ax);
+    ay2 = hn::Mul(ay, ay);
+    inv_ax2 = hn::Div(one, ax2);
+    inv_ay2 = hn::Div(one, ay2);
+    inv_pi_axay = hn::Div(hn::Set(d, T(0.31830988618379067)), hn::Mul(ax, ay));
+    f0 = f0_;
+  }
 };
 
 template <class D, class V>

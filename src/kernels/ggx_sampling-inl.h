@@ -140,6 +140,11 @@ struct GgxSamplingConsts {
     ax = hn::Set(d, ax_ < T(1e-4) ? T(1e-4) : ax_);
     ay = hn::Set(d, ay_ < T(1e-4) ? T(1e-4) : ay_);
   }
+  // Per-element widths, one per lane.
+  GgxSamplingConsts(D d, hn::Vec<D> ax_, hn::Vec<D> ay_) : ggx(d, ax_, ay_, hn::Set(d, T(1))) {
+    ax = hn::Max(ax_, hn::Set(d, T(1e-4)));
+    ay = hn::Max(ay_, hn::Set(d, T(1e-4)));
+  }
 };
 
 // The crescent step shared by GGX and the ellipsoid ([Heitz18] section 4.2,

@@ -29,51 +29,56 @@ namespace brdfbake {
 
 HWY_EXPORT(ThisTarget);
 
-std::vector<std::string> CompiledTargets() {
+namespace {
+
+// The names of the targets in `mask`, best first.
+std::vector<std::string> Names(int64_t mask) {
   std::vector<std::string> names;
-  for (int64_t targets = HWY_TARGETS; targets != 0; targets &= targets - 1) {
-    const int64_t bit = targets & (~targets + 1);
-    names.push_back(hwy::TargetName(bit));
-  }
+  for (int64_t t = mask; t != 0; t &= t - 1) names.push_back(hwy::TargetName(t & (~t + 1)));
   return names;
 }
 
+// The compiled targets this CPU runs. hwy::SupportedTargets() returns the
+// forced set once ForceTarget has narrowed it, so the CPU's own set is read
+// once, before this file's functions first narrow anything.
+int64_t UsableTargets() {
+  static const int64_t usable = hwy::SupportedTargets() & HWY_TARGETS;
+  return usable;
+}
+
+}  // namespace
+
+std::vector<std::string> CompiledTargets() { return Names(HWY_TARGETS); }
+
 std::string BestTarget() {
-  const int64_t usable = hwy::SupportedTargets() & HWY_TARGETS;
+  const int64_t usable = UsableTargets();
   if (usable == 0) return "none";
   return hwy::TargetName(usable & (~usable + 1));
 }
 
 std::string BatchTarget() { return hwy::TargetName(HWY_DYNAMIC_DISPATCH(ThisTarget)()); }
 
-std::vector<std::string> AvailableTargets() {
-  std::vector<std::string> names;
-  hwy::SetSupportedTargetsForTest(0);
-  const int64_t usable = hwy::SupportedTargets() & HWY_TARGETS;
-  for (int64_t t = usable; t != 0; t &= t - 1) names.push_back(hwy::TargetName(t & (~t + 1)));
-  return names;
-}
+std::vector<std::string> AvailableTargets() { return Names(UsableTargets()); }
 
 void ForceTarget(const std::string& name) {
-  hwy::SetSupportedTargetsForTest(0);
-  if (name == "best") return;
-  const int64_t usable = hwy::SupportedTargets() & HWY_TARGETS;
+  const int64_t usable = UsableTargets();
+  if (name == "best") {
+    hwy::SetSupportedTargetsForTest(0);
+    return;
+  }
   for (int64_t t = HWY_TARGETS; t != 0; t &= t - 1) {
     const int64_t bit = t & (~t + 1);
     if (name == hwy::TargetName(bit)) {
       if (!(usable & bit)) {
-        throw std::invalid_argument("--target: " + name + " is compiled in but this CPU lacks it");
+        throw std::invalid_argument("target " + name + " is compiled in but this CPU lacks it");
       }
       hwy::SetSupportedTargetsForTest(bit);
       return;
     }
   }
   std::string list;
-  for (int64_t t = HWY_TARGETS; t != 0; t &= t - 1) {
-    list += std::string(list.empty() ? "" : ", ") + hwy::TargetName(t & (~t + 1));
-  }
-  throw std::invalid_argument("--target: unknown target '" + name + "' (compiled: " + list +
-                              ", or best)");
+  for (const std::string& n : CompiledTargets()) list += (list.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown target '" + name + "' (compiled: " + list + ", or best)");
 }
 
 }  // namespace brdfbake

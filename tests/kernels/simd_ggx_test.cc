@@ -126,5 +126,34 @@ TEST(SimdGgxTest, ForceTargetRejectsUnknownNames) {
   ForceTarget("best");
   EXPECT_EQ(BatchTarget(), AvailableTargets().front());
 }
+
+// Forcing a target narrows dispatch only: listing the targets keeps the
+// forced one, BestTarget stays the CPU's best, and "best" restores it.
+TEST(SimdGgxTest, TargetFunctionsAgreeWhileForced) {
+  const std::vector<std::string> available = AvailableTargets();
+  const std::string best = BestTarget();
+  ASSERT_FALSE(available.empty());
+  EXPECT_EQ(best, available.front());
+  EXPECT_EQ(BatchTarget(), best);
+  const std::vector<std::string> compiled = CompiledTargets();
+  for (const std::string& t : available) {
+    EXPECT_NE(std::find(compiled.begin(), compiled.end(), t), compiled.end()) << t;
+  }
+  for (const std::string& t : available) {
+    ForceTarget(t);
+    EXPECT_EQ(AvailableTargets(), available) << "after forcing " << t;
+    EXPECT_EQ(BatchTarget(), t) << "listing the targets undid forcing " << t;
+    EXPECT_EQ(BestTarget(), best) << "while " << t << " is forced";
+    // Evaluating a batch runs on the forced target too.
+    const float x = 0.0f, y = 0.6f, z = 0.8f;
+    float d = 0;
+    EvalBatch(BatchModel{}, Quantity::kD, DirArrays{&x, &y, &z}, &d, 1);
+    EXPECT_GT(d, 0.0f);
+    EXPECT_EQ(BatchTarget(), t);
+  }
+  ForceTarget("best");
+  EXPECT_EQ(BatchTarget(), best);
+  EXPECT_EQ(AvailableTargets(), available);
+}
 }  // namespace brdfbake
 #endif

@@ -3,7 +3,8 @@
 #
 # The installed package as a consumer sees it: `cmake --install` of this
 # build into a fresh prefix, then examples/consumer configured with
-# find_package(brdfbake) against that prefix, built and run; and the same
+# find_package(brdfbake) against that prefix, built and run; compiled with
+# the flags pkg-config gives for the installed .pc files; and the same
 # example with brdfbake as a subdirectory (add_subdirectory).
 # Run as cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P consumer_test.cmake.
 
@@ -30,7 +31,36 @@ run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/installed
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/installed -j2)
 run(${WORK_DIR}/installed/shade)
+run(${WORK_DIR}/installed/mixed_batch)
 run(${WORK_DIR}/installed/bake_one)
+
+# pkg-config against the installed tree: the batch examples compiled and
+# linked with brdfbake-core's flags alone.
+find_program(PKG_CONFIG pkg-config REQUIRED)
+foreach(pc brdfbake-core brdfbake-baker brdfbake)
+  if(NOT EXISTS ${prefix}/lib/pkgconfig/${pc}.pc)
+    message(FATAL_ERROR "not installed: lib/pkgconfig/${pc}.pc")
+  endif()
+endforeach()
+set(ENV{PKG_CONFIG_PATH} ${prefix}/lib/pkgconfig)
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs brdfbake-core OUTPUT_VARIABLE flags
+                RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "pkg-config --cflags --libs brdfbake-core: exit ${rc}")
+endif()
+separate_arguments(flags UNIX_COMMAND "${flags}")
+foreach(example shade mixed_batch)
+  run(c++ -std=c++17 -O2 ${SOURCE_DIR}/examples/consumer/${example}.cc ${flags}
+      -o ${WORK_DIR}/pc_${example})
+  run(${WORK_DIR}/pc_${example})
+endforeach()
+# The baker's flags name everything it needs: a program using it links.
+execute_process(COMMAND ${PKG_CONFIG} --cflags --libs brdfbake-baker OUTPUT_VARIABLE flags
+                RESULT_VARIABLE rc OUTPUT_STRIP_TRAILING_WHITESPACE)
+separate_arguments(flags UNIX_COMMAND "${flags}")
+run(c++ -std=c++17 -O2 ${SOURCE_DIR}/examples/consumer/bake_one.cc ${flags}
+    -o ${WORK_DIR}/pc_bake_one)
+run(${WORK_DIR}/pc_bake_one)
 
 # add_subdirectory: configured (not built: that would compile the library a
 # second time) with a parent build type it must keep, and with the

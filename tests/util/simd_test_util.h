@@ -77,7 +77,8 @@ inline double RelErr(double got, double ref) {
   return std::abs(got - ref) / std::max(std::abs(ref), 1e-30);
 }
 
-// A batch call on 8 input arrays writing n_out output arrays of n floats.
+// A batch call on n_in input arrays (8 unless given) writing n_out output
+// arrays of n floats.
 using BatchCall = std::function<void(const float* const*, float* const*, size_t)>;
 
 // Counts 0..max_n at input misalignments 0..3 (each input array at least
@@ -85,22 +86,32 @@ using BatchCall = std::function<void(const float* const*, float* const*, size_t)
 // between sentinels at odd and even offsets: every call writes exactly its n
 // outputs, each equal to that of one call over the whole arrays.
 inline void CheckCountsAndSentinels(const float* const* in, size_t len, size_t max_n, int n_out,
-                                    const BatchCall& call) {
+                                    const BatchCall& call, int n_in = 8) {
+  constexpr int kMaxIn = 16, kMaxOut = 5;
+  ASSERT_LE(n_in, kMaxIn);
+  ASSERT_LE(n_out, kMaxOut);
   std::vector<std::vector<float>> full(n_out, std::vector<float>(len));
-  float* full_ptr[3];
+  float* full_ptr[kMaxOut];
   for (int k = 0; k < n_out; ++k) full_ptr[k] = full[k].data();
   call(in, full_ptr, len);
   const float kSentinel = -12345.0f;
   for (size_t misalign = 0; misalign < 4; ++misalign) {
     for (size_t n = 0; n <= max_n; ++n) {
-      const float* in_o[8];
-      for (int k = 0; k < 8; ++k) in_o[k] = in[k] + misalign;
+      const float* in_o[kMaxIn];
+      for (int k = 0; k < n_in; ++k) in_o[k] = in[k] + misalign;
       std::vector<std::vector<float>> out(n_out, std::vector<float>(n + 8, kSentinel));
-      float* dst[3];
+      float* dst[kMaxOut];
       for (int k = 0; k < n_out; ++k) dst[k] = out[k].data() + 1 + misalign % 2;
       call(in_o, dst, n);
       for (int k = 0; k < n_out; ++k) {
-        for (size_t i = 0; i < n; ++i) ASSERT_EQ(dst[k][i], full[k][i + misalign]) << n << " " << i;
+        for (size_t i = 0; i < n; ++i) {
+          const float want = full[k][i + misalign];
+          if (std::isnan(want)) {
+            ASSERT_TRUE(std::isnan(dst[k][i])) << n << " " << i;
+          } else {
+            ASSERT_EQ(dst[k][i], want) << "output " << k << " n " << n << " " << i;
+          }
+        }
         for (float* s = out[k].data(); s < dst[k]; ++s) ASSERT_EQ(*s, kSentinel);
         for (float* s = dst[k] + n; s < out[k].data() + out[k].size(); ++s) {
           ASSERT_EQ(*s, kSentinel) << "output " << k << " n " << n;

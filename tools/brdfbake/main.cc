@@ -52,6 +52,15 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 [[noreturn]] void Bad(const std::string& what) { throw std::invalid_argument(what); }
 
+// brdfbake::ForceTarget with its message as the --target option's.
+void ForceTargetOption(const std::string& target) {
+  try {
+    brdfbake::ForceTarget(target);
+  } catch (const std::invalid_argument& e) {
+    Bad(std::string("--target: ") + e.what());
+  }
+}
+
 // A message on one line: control characters (a newline inside an argument,
 // say) are shown as escapes.
 std::string OneLine(const std::string& s) {
@@ -368,7 +377,7 @@ struct BakeOptions {
         brdfbake::ForceTarget(target);
       } catch (const std::invalid_argument& e) {
         // The bake also takes scalar, the double scalar reference.
-        std::string what = e.what();
+        std::string what = std::string("--target: ") + e.what();
         const std::string best = ", or best)";
         const size_t at = what.rfind(best);
         if (at != std::string::npos && at + best.size() == what.size()) {
@@ -835,7 +844,7 @@ struct EvalOptions {
 };
 
 int RunGrid(const EvalOptions& o) {
-  brdfbake::ForceTarget(o.target);
+  ForceTargetOption(o.target);
   brdfbake::GridRequest gr;
   gr.model = o.model.Get();
   gr.fresnel = o.fresnel.Get();
@@ -864,7 +873,7 @@ int RunGrid(const EvalOptions& o) {
 
 int RunEval(const EvalOptions& o) {
   if (!o.grid_kind.empty()) return RunGrid(o);
-  if (o.target != "best") brdfbake::ForceTarget(o.target);
+  if (o.target != "best") ForceTargetOption(o.target);
   EvalRequest req = o.req;
   req.model = o.model.Get();
   req.fresnel = o.fresnel.Get();
