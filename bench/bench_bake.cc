@@ -1,21 +1,32 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Whole bakes: BM_Bake/<table>/<model>/<integrand>/<size>/threads:<n>, the
-// quadrature at the default tolerance (1e-7) with the integrand in double
-// SIMD lanes (`simd`, the default) or the double scalar reference
-// (`scalar`, `bake --target scalar`). Wall time of Bake() (the table in
-// memory, no file; with the tables it builds, ReleaseBakeCaches), median of
-// the repetitions. Counters: the claimed
-// maximum error before storage (integration_error) and the true one, against
-// the same table baked at tolerance 1e-10 (outside the timed loop; where the
-// rules' claims stop near 1e-9, the reference is still far more accurate
-// than the tables measured).
+// Whole bakes: BM_Bake/<table>/<model>/<integrator>/<implementation>/<axes>/threads:<n>,
+// on every core (n = the machine's hardware threads) and some on 1, the
+// wall time of Bake() with the table in memory (no file), each bake
+// building its own tables (ReleaseBakeCaches before every one, as one CLI
+// run does). The implementation is `simd` (the integrand in double SIMD
+// lanes of the target dispatch picks, the default) or `double_reference`
+// (the double scalar reference of the same rule, `bake --target scalar`).
+// The axes are the table's sizes: size:N is an N x N table (E, dfg) or N
+// entries (E_avg); tables with other axes name each one (mu, phi,
+// roughness, anisotropy, alpha_x, alpha_y) and gammas:D adds D gamma slices
+// (std). Items are texels.
+//
+// Counters: integration_error, the claimed maximum error before storage,
+// and true_error, the largest difference of the values before storage from
+// the same table baked by the quadrature at tolerance 1e-10 (once per
+// table, outside the timed loop). The quadrature bakes run at the default
+// tolerance 1e-7, qmc and engine at their default samples (qmc 4096 per
+// texel, engine 1024, whose bake includes its own error against the
+// quadrature at 1e-10).
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+#include <map>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -24,106 +35,71 @@
 namespace brdfbake {
 namespace {
 
-struct BakeCase {
-  TableKind table;
-  const char* model;
-  double gamma;
-  bool simd;
-  bool gamma_axis = false;  // std over a gamma axis of state.range(2) slices
+struct BakeRow {
+  BakeSpec spec;                   // everything but the sizes and threads
+  std::vector<std::string> axes;   // the arguments' names, threads last
+  double reference_tolerance;      // 0: no true error
 };
 
-void BM_Bake(benchmark::State& state, BakeCase c) {
-  BakeSpec spec;
-  spec.table = c.table;
-  spec.model.kind = ParseModelKind(c.model);
-  spec.model.gamma = c.gamma;
-  spec.simd = c.simd;
-  spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
-  spec.threads = static_cast<int>(state.range(1));
-  if (c.gamma_axis) spec.gamma.size = static_cast<int>(state.range(2));
-  Table t;
-  for (auto _ : state) {
-    ReleaseBakeCaches();  // each bake builds its tables, as one CLI run does
-    t = Bake(spec);
-    benchmark::DoNotOptimize(t.channels[0].values.data());
+void ApplyArg(const std::string& name, int value, BakeSpec* spec) {
+  if (name == "size") {
+    spec->mu.size = spec->roughness.size = value;
+  } else if (name == "mu") {
+    spec->mu.size = value;
+  } else if (name == "phi") {
+    spec->phi.size = value;
+  } else if (name == "roughness") {
+    spec->roughness.size = value;
+  } else if (name == "anisotropy") {
+    spec->anisotropy.size = value;
+  } else if (name == "alpha_x") {
+    spec->alpha_x.size = value;
+  } else if (name == "alpha_y") {
+    spec->alpha_y.size = value;
+  } else if (name == "gammas") {
+    spec->gamma.size = value;
+  } else if (name == "threads") {
+    spec->threads = value;
   }
-  BakeSpec ref_spec = spec;
-  ref_spec.simd = true;
-  ref_spec.threads = 0;
-  ref_spec.tolerance = 1e-10;
-  const Table ref = Bake(ref_spec);
-  double true_err = 0;
-  for (size_t k = 0; k < ref.channels.size(); ++k) {
-    for (size_t i = 0; i < ref.channels[k].values.size(); ++i) {
-      true_err = std::max(true_err, std::abs(t.channels[k].values[i] - ref.channels[k].values[i]));
-    }
-  }
-  state.counters["integration_error"] = t.integration_error;
-  state.counters["true_error"] = true_err;
-  const int64_t texels =
-      (c.table == TableKind::kEavg ? spec.roughness.size : int64_t(spec.mu.size) * spec.roughness.size) *
-      (c.gamma_axis ? spec.gamma.size : 1);
-  state.SetItemsProcessed(state.iterations() * texels);
 }
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+double MaxDifference(const Table& a, const Table& b) {
+  double d = 0;
+  for (size_t k = 0; k < b.channels.size(); ++k) {
+    for (size_t i = 0; i < b.channels[k].values.size(); ++i) {
+      d = std::max(d, std::abs(a.channels[k].values[i] - b.channels[k].values[i]));
+    }
+  }
+  return d;
+}
 
-#define BRDFBAKE_BAKE_BENCH(name, table, model, gamma, simd) \
-  BENCHMARK_CAPTURE(BM_Bake, name, BakeCase{table, model, gamma, simd})
+// The reference of a table: the quadrature at `tolerance`, baked once per
+// run and kept (every repetition, and the rows that bake the same table in
+// another way, compare with it).
+const Table& Reference(const BakeSpec& spec, double tolerance) {
+  BakeSpec ref = spec;
+  ref.integrator = IntegratorKind::kQuadrature;
+  ref.samples = 0;
+  ref.simd = true;
+  ref.threads = 0;
+  ref.tolerance = tolerance;
+  std::string key = std::string(TableName(ref.table)) + " " + ref.model.ToJson();
+  for (const Axis* a : {&ref.mu, &ref.roughness, &ref.gamma, &ref.phi, &ref.anisotropy,
+                        &ref.alpha_x, &ref.alpha_y}) {
+    key += " " + a->ToJson();
+  }
+  key += " " + std::to_string(tolerance);
+  static std::map<std::string, Table> references;
+  auto it = references.find(key);
+  if (it == references.end()) it = references.emplace(key, Bake(ref)).first;
+  return it->second;
+}
 
-// docs/performance.md, "Bakes": the SIMD rules at 2 threads (and 1 for the scaling),
-// then the double scalar reference of the same rules for the ratio.
-#define BRDFBAKE_BAKE_ARGS(reps) \
-  Unit(benchmark::kMillisecond)->UseRealTime()->Repetitions(reps)->ReportAggregatesOnly(true)
-
-BRDFBAKE_BAKE_BENCH(dfg/ggx/simd, TableKind::kDfg, "ggx", 2, true)
-    ->Args({32, 2})->Args({128, 2})->Args({128, 1})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/ggx/simd, TableKind::kE, "ggx", 2, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E_avg/ggx/simd, TableKind::kEavg, "ggx", 2, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/beckmann/simd, TableKind::kE, "beckmann", 2, true)
-    ->Args({32, 2})->Args({32, 1})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(dfg/beckmann/simd, TableKind::kDfg, "beckmann", 2, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E_avg/beckmann/simd, TableKind::kEavg, "beckmann", 2, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/std_gamma1.501/simd, TableKind::kE, "std", 1.501, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/std_gamma1.6/simd, TableKind::kE, "std", 1.6, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/std_gamma3/simd, TableKind::kE, "std", 3, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/std_gamma30/simd, TableKind::kE, "std", 30, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E/std_gamma_inf/simd, TableKind::kE, "std", kInf, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E_avg/std_gamma1.501/simd, TableKind::kEavg, "std", 1.501, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E_avg/std_gamma3/simd, TableKind::kEavg, "std", 3, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-BRDFBAKE_BAKE_BENCH(E_avg/std_gamma30/simd, TableKind::kEavg, "std", 30, true)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(5);
-// std over the gamma axis (1.501 to inf, tail warp): mu x roughness x gamma,
-// and E_avg over roughness x gamma.
-BENCHMARK_CAPTURE(BM_Bake, E/std_gamma_axis/simd, BakeCase{TableKind::kE, "std", 2, true, true})
-    ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_Bake, E_avg/std_gamma_axis/simd, BakeCase{TableKind::kEavg, "std", 2, true, true})
-    ->Args({32, 2, 16})->BRDFBAKE_BAKE_ARGS(3);
-
-// The sampling integrators (their default samples: qmc and mc 4096 per
-// texel, engine 1024 plus its error against the quadrature at 1e-10), E
-// 32x32 at 2 threads, their points in lanes (`simd`) or the scalar
-// reference (`scalar`). range(2) is the integrator.
-void BM_BakeSampling(benchmark::State& state, const char* model, bool simd) {
-  BakeSpec spec;
-  spec.table = TableKind::kE;
-  spec.model.kind = ParseModelKind(model);
-  spec.model.gamma = 3;
-  spec.integrator = static_cast<IntegratorKind>(state.range(2));
-  spec.simd = simd;
-  spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
-  spec.threads = static_cast<int>(state.range(1));
+void BM_Bake(benchmark::State& state, BakeRow row) {
+  BakeSpec spec = row.spec;
+  for (size_t i = 0; i < row.axes.size(); ++i) {
+    ApplyArg(row.axes[i], static_cast<int>(state.range(static_cast<int>(i))), &spec);
+  }
   Table t;
   for (auto _ : state) {
     ReleaseBakeCaches();
@@ -131,105 +107,113 @@ void BM_BakeSampling(benchmark::State& state, const char* model, bool simd) {
     benchmark::DoNotOptimize(t.channels[0].values.data());
   }
   state.counters["integration_error"] = t.integration_error;
-  state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
-}
-#define BRDFBAKE_SAMPLING_ARGS(integrator) \
-  Args({32, 2, static_cast<int64_t>(IntegratorKind::integrator)})
-BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/qmc/simd, "ggx", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/qmc/scalar, "ggx", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/qmc/simd, "beckmann", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/qmc/scalar, "beckmann", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/qmc/simd, "std", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/qmc/scalar, "std", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kQmc)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/engine/simd, "ggx", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/ggx/engine/scalar, "ggx", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/engine/simd, "beckmann", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/beckmann/engine/scalar, "beckmann", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/engine/simd, "std", true)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeSampling, E/std_gamma3/engine/scalar, "std", false)
-    ->BRDFBAKE_SAMPLING_ARGS(kEngine)->BRDFBAKE_BAKE_ARGS(3);
-
-// The timed loop of the model-specific entries below.
-void TimeBake(benchmark::State& state, const BakeSpec& spec) {
-  Table t;
-  for (auto _ : state) {
-    t = Bake(spec);
-    benchmark::DoNotOptimize(t.channels[0].values.data());
+  if (row.reference_tolerance > 0) {
+    state.counters["true_error"] = MaxDifference(t, Reference(spec, row.reference_tolerance));
   }
-  state.counters["integration_error"] = t.integration_error;
   state.SetItemsProcessed(state.iterations() * int64_t(t.channels[0].values.size()));
 }
 
-// ggx-aniso: E over mu x phi_o x roughness x anisotropy (the sizes in the
-// name; range(0) and range(1) are the size of the mu and roughness axes and
-// the threads), E_avg over roughness x anisotropy.
-void BM_BakeAniso(benchmark::State& state, TableKind table) {
+BakeSpec Spec(TableKind table, ModelKind kind,
+              IntegratorKind integrator = IntegratorKind::kQuadrature, bool simd = true) {
   BakeSpec spec;
   spec.table = table;
-  spec.model.kind = ModelKind::kGgxAniso;
-  spec.mu.size = spec.roughness.size = static_cast<int>(state.range(0));
-  spec.phi.size = spec.anisotropy.size = static_cast<int>(state.range(0)) / 2;
-  spec.threads = static_cast<int>(state.range(1));
-  TimeBake(state, spec);
+  spec.model.kind = kind;
+  spec.integrator = integrator;
+  spec.simd = simd;
+  return spec;
 }
-BENCHMARK_CAPTURE(BM_BakeAniso, E/ggx-aniso/simd/32x16x32x16, TableKind::kE)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeAniso, E_avg/ggx-aniso/simd/8x4, TableKind::kEavg)
-    ->Args({8, 2})->BRDFBAKE_BAKE_ARGS(3);
 
-// One ellipsoid material (alpha 0.3 x 0.6, theta_x 20, theta_z 30 degrees):
-// E over mu x phi_o, and its E_avg.
-void BM_BakeEllipsoid(benchmark::State& state, TableKind table) {
-  BakeSpec spec;
-  spec.table = table;
-  spec.model.kind = ModelKind::kEllipsoid;
+BakeSpec Std(TableKind table, double gamma, IntegratorKind integrator = IntegratorKind::kQuadrature,
+             bool simd = true) {
+  BakeSpec spec = Spec(table, ModelKind::kStudentT, integrator, simd);
+  spec.model.gamma = gamma;
+  return spec;
+}
+
+// One ellipsoid material: alpha 0.3 x 0.6, theta_x 20, theta_z 30 degrees;
+// E over mu x phi_o in [0, 2 pi].
+BakeSpec Ellipsoid(TableKind table) {
+  BakeSpec spec = Spec(table, ModelKind::kEllipsoid);
   spec.model.alpha_x = 0.3;
   spec.model.alpha_y = 0.6;
   spec.model.theta_x = 20 * 3.14159265358979323846 / 180;
   spec.model.theta_z = 30 * 3.14159265358979323846 / 180;
-  spec.mu.size = spec.phi.size = static_cast<int>(state.range(0));
   spec.phi.max = 2 * 3.14159265358979323846;
-  spec.threads = static_cast<int>(state.range(1));
-  TimeBake(state, spec);
+  return spec;
 }
-BENCHMARK_CAPTURE(BM_BakeEllipsoid, E/ellipsoid/64x64, TableKind::kE)
-    ->Args({64, 2})->BRDFBAKE_BAKE_ARGS(3);
-BENCHMARK_CAPTURE(BM_BakeEllipsoid, E_avg/ellipsoid, TableKind::kEavg)
-    ->Args({1, 2})->BRDFBAKE_BAKE_ARGS(3);
 
-// The sel lobe's integral over (alpha_x, alpha_y), 32x32 (lanes or
-// --target scalar).
-void BM_BakeSel(benchmark::State& state, bool simd) {
-  BakeSpec spec;
-  spec.table = TableKind::kSelNorm;
-  spec.model.kind = ModelKind::kSel;
-  spec.alpha_x.size = spec.alpha_y.size = static_cast<int>(state.range(0));
-  spec.threads = static_cast<int>(state.range(1));
-  spec.simd = simd;
-  TimeBake(state, spec);
+void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string> axes,
+         const std::vector<std::vector<int64_t>>& args, double reference_tolerance = 1e-10) {
+  axes.push_back("threads");
+  const std::string name = std::string("BM_Bake/") + TableName(spec.table) + "/" + model + "/" +
+                           IntegratorName(spec.integrator) + "/" +
+                           (spec.simd ? "simd" : "double_reference");
+  benchmark::internal::Benchmark* b =
+      benchmark::RegisterBenchmark(name.c_str(), BM_Bake, BakeRow{spec, axes, reference_tolerance});
+  b->ArgNames(axes)->Unit(benchmark::kMillisecond)->UseRealTime();
+  for (const std::vector<int64_t>& a : args) b->Args(a);
 }
-BENCHMARK_CAPTURE(BM_BakeSel, sel_norm/sel/simd/32x32, true)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
-BENCHMARK_CAPTURE(BM_BakeSel, sel_norm/sel/scalar/32x32, false)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(5);
 
-BRDFBAKE_BAKE_BENCH(dfg/ggx/scalar, TableKind::kDfg, "ggx", 2, false)
-    ->Args({128, 2})->BRDFBAKE_BAKE_ARGS(3);
-BRDFBAKE_BAKE_BENCH(E/beckmann/scalar, TableKind::kE, "beckmann", 2, false)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(3);
-BRDFBAKE_BAKE_BENCH(E/std_gamma3/scalar, TableKind::kE, "std", 3, false)
-    ->Args({32, 2})->BRDFBAKE_BAKE_ARGS(3);
+[[maybe_unused]] const int kRegistered = [] {
+  using I = IntegratorKind;
+  using T = TableKind;
+  const ModelKind ggx = ModelKind::kGgx, beckmann = ModelKind::kBeckmann;
+  const std::vector<std::string> size{"size"};
+  const int64_t c = std::max(1u, std::thread::hardware_concurrency());
+  // The quadrature in SIMD lanes on every core, and on 1 for the scaling.
+  std::vector<std::vector<int64_t>> dfg_ggx{{32, c}, {128, c}}, e_beckmann{{32, c}};
+  if (c > 1) {
+    dfg_ggx.push_back({128, 1});
+    e_beckmann.push_back({32, 1});
+  }
+  Add("ggx", Spec(T::kE, ggx), size, {{32, c}, {128, c}});
+  Add("ggx", Spec(T::kEavg, ggx), size, {{128, c}});
+  Add("ggx", Spec(T::kDfg, ggx), size, dfg_ggx);
+  Add("beckmann", Spec(T::kE, beckmann), size, e_beckmann);
+  Add("beckmann", Spec(T::kEavg, beckmann), size, {{128, c}});
+  Add("beckmann", Spec(T::kDfg, beckmann), size, {{32, c}});
+  for (const auto& [label, gamma] : std::vector<std::pair<const char*, double>>{
+           {"std_gamma1.501", 1.501}, {"std_gamma1.6", 1.6}, {"std_gamma3", 3},
+           {"std_gamma30", 30}, {"std_gamma_inf", kInfinity}}) {
+    Add(label, Std(T::kE, gamma), size, {{32, c}});
+  }
+  for (const auto& [label, gamma] : std::vector<std::pair<const char*, double>>{
+           {"std_gamma1.501", 1.501}, {"std_gamma3", 3}, {"std_gamma30", 30}}) {
+    Add(label, Std(T::kEavg, gamma), size, {{128, c}});
+  }
+  // std over its gamma axis (1.501 to inf, the tail warp).
+  Add("std_gamma_axis", Std(T::kE, 2), {"size", "gammas"}, {{32, 16, c}});
+  Add("std_gamma_axis", Std(T::kEavg, 2), {"size", "gammas"}, {{32, 16, c}});
+  // ggx-aniso: its default E table, a smaller one that the double reference
+  // bakes too, and E_avg; no true error (no reference bake of these tables).
+  const std::vector<std::string> aniso_e{"mu", "phi", "roughness", "anisotropy"};
+  Add("ggx-aniso", Spec(T::kE, ModelKind::kGgxAniso), aniso_e,
+      {{32, 16, 32, 16, c}, {32, 16, 32, 4, c}}, 0);
+  Add("ggx-aniso", Spec(T::kEavg, ModelKind::kGgxAniso), {"roughness", "anisotropy"}, {{8, 4, c}},
+      0);
+  Add("ellipsoid", Ellipsoid(T::kE), {"mu", "phi"}, {{64, 64, c}});
+  Add("ellipsoid", Ellipsoid(T::kEavg), {}, {{c}});
+  Add("sel", Spec(T::kSelNorm, ModelKind::kSel), {"alpha_x", "alpha_y"}, {{32, 32, c}});
+
+  // The double scalar reference of the same rules.
+  Add("ggx", Spec(T::kDfg, ggx, I::kQuadrature, false), size, {{128, c}});
+  Add("beckmann", Spec(T::kE, beckmann, I::kQuadrature, false), size, {{32, c}});
+  Add("std_gamma3", Std(T::kE, 3, I::kQuadrature, false), size, {{32, c}});
+  Add("ggx-aniso", Spec(T::kE, ModelKind::kGgxAniso, I::kQuadrature, false), aniso_e,
+      {{32, 16, 32, 4, c}}, 0);
+  Add("sel", Spec(T::kSelNorm, ModelKind::kSel, I::kQuadrature, false), {"alpha_x", "alpha_y"},
+      {{32, 32, c}});
+
+  // The sampling integrators, their points in lanes or in the reference.
+  for (I integrator : {I::kQmc, I::kEngine}) {
+    for (bool simd : {true, false}) {
+      Add("ggx", Spec(T::kE, ggx, integrator, simd), size, {{32, c}});
+      Add("beckmann", Spec(T::kE, beckmann, integrator, simd), size, {{32, c}});
+      Add("std_gamma3", Std(T::kE, 3, integrator, simd), size, {{32, c}});
+    }
+  }
+  return 0;
+}();
 
 }  // namespace
 }  // namespace brdfbake

@@ -1,14 +1,17 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Benchmarks of the Beckmann visible-normal sampler and the STD pseudo-VNIS
-// (batch_sampling.h): BM_SampleVisible/<model>/<TARGET> runs the batch
-// kernel forced to each available target, BM_SampleVisible/<model>/scalar
-// the float scalar reference one sample at a time (compiled without
-// auto-vectorization, as bench.cc's scalar_float baseline). Items are
-// samples: 4096 views (mu uniform in [0.02, 1], any azimuth) with uniform
-// (u1, u2). alpha = 0.3; STD at gamma = 3.3 as in bench.cc, the GGX branch
-// of Algorithm 1 at sigma = 0.3 (the Beckmann branch is the beckmann row).
+// The visible-normal samplers (Sampler::kVisible of batch.h):
+// BM_SampleVisible/<model>/<implementation>/n:4096, the implementation as in
+// bench.cc: double_reference and float_reference (one sample per call, the
+// float one compiled without auto-vectorization) or the batch call forced
+// to a Highway target. ggx [Heitz18], beckmann (exact CDF inversion),
+// ellipsoid [Walter15], and for std the pseudo-VNIS of [Ribardiere17]
+// Algorithm 1 (SamplePseudoVnis: the GGX branch at sigma = 0.3, the
+// Beckmann branch being the beckmann row). Items are samples: 4096 views
+// (mu uniform in [0.02, 1], any azimuth) with uniform (u1, u2); the models
+// of bench.cc (alpha 0.3, std gamma 3.3, the ellipsoid 0.3 x 0.5 rotated
+// by (0.2, 0.1, 0.4) radians).
 
 #include <random>
 #include <string>
@@ -18,6 +21,8 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/models/beckmann.h"
+#include "brdfbake/models/ellipsoid.h"
+#include "brdfbake/models/ggx.h"
 #include "brdfbake/models/std_ndf.h"
 #include "brdfbake/targets.h"
 
@@ -25,22 +30,23 @@ namespace brdfbake {
 namespace {
 
 constexpr int kSamples = 4096;
-constexpr float kAlpha = 0.3f, kGamma = 3.3f;
-
-enum class Model { kBeckmann, kStd };
 
 struct SampleData {
-  std::vector<float> wx, wy, wz, u1, u2, mx, my, mz;
+  std::vector<Vec3<double>> w;
+  std::vector<double> u1, u2;
+  std::vector<float> wx, wy, wz, u1f, u2f, mx, my, mz;
   SampleData() : mx(kSamples), my(kSamples), mz(kSamples) {
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
     for (int i = 0; i < kSamples; ++i) {
-      const Vec3<double> w = FromMuPhi(0.02 + 0.98 * uni(rng), 6.283185307179586 * uni(rng));
-      wx.push_back(static_cast<float>(w.x));
-      wy.push_back(static_cast<float>(w.y));
-      wz.push_back(static_cast<float>(w.z));
-      u1.push_back(static_cast<float>(uni(rng)));
-      u2.push_back(static_cast<float>(uni(rng)));
+      w.push_back(FromMuPhi(0.02 + 0.98 * uni(rng), 6.283185307179586 * uni(rng)));
+      u1.push_back(uni(rng));
+      u2.push_back(uni(rng));
+      wx.push_back(static_cast<float>(w[i].x));
+      wy.push_back(static_cast<float>(w[i].y));
+      wz.push_back(static_cast<float>(w[i].z));
+      u1f.push_back(static_cast<float>(u1[i]));
+      u2f.push_back(static_cast<float>(u2[i]));
     }
   }
 };
@@ -49,69 +55,115 @@ SampleData& Data() {
   return data;
 }
 
-void BM_SampleVisibleBatch(benchmark::State& state, Model model, std::string target) {
+int Count(const benchmark::State& state) { return static_cast<int>(state.range(0)); }
+
+BatchModel SamplerModel(ModelKind kind) {
+  BatchModel p{kind};
+  p.alpha_x = p.alpha_y = 0.3f;
+  if (kind == ModelKind::kStudentT) p.gamma = 3.3f;
+  if (kind == ModelKind::kEllipsoid) {
+    p.alpha_y = 0.5f;
+    p.theta_x = 0.2f;
+    p.theta_y = 0.1f;
+    p.theta_z = 0.4f;
+  }
+  return p;
+}
+
+void BM_SampleBatch(benchmark::State& state, ModelKind kind, std::string target) {
   ForceTarget(target);
   SampleData& s = Data();
-  BatchModel bp{ModelKind::kBeckmann};
-  bp.alpha_x = bp.alpha_y = kAlpha;
-  BatchModel sp{ModelKind::kStudentT};
-  sp.alpha_x = sp.alpha_y = kAlpha;
-  sp.gamma = kGamma;
+  const size_t n = static_cast<size_t>(Count(state));
+  const BatchModel p = SamplerModel(kind);
   for (auto _ : state) {
-    if (model == Model::kBeckmann) {
-      SampleBatch(bp, Sampler::kVisible, {s.wx.data(), s.wy.data(), s.wz.data()}, s.u1.data(),
-                  s.u2.data(), {s.mx.data(), s.my.data(), s.mz.data()}, kSamples);
-    } else {
-      SampleBatch(sp, Sampler::kVisible, {s.wx.data(), s.wy.data(), s.wz.data()}, s.u1.data(),
-                  s.u2.data(), {s.mx.data(), s.my.data(), s.mz.data()}, kSamples);
-    }
+    SampleBatch(p, Sampler::kVisible, {s.wx.data(), s.wy.data(), s.wz.data()}, s.u1f.data(),
+                s.u2f.data(), {s.mx.data(), s.my.data(), s.mz.data()}, n);
     benchmark::DoNotOptimize(s.mz.data());
   }
   ForceTarget("best");
-  state.SetItemsProcessed(state.iterations() * kSamples);
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
 }
 
-template <class Sampler>
-__attribute__((optimize("no-tree-vectorize"))) void ScalarSamples(const Sampler& sample,
-                                                                   SampleData& s) {
-  for (int i = 0; i < kSamples; ++i) {
-    const Vec3<float> m = sample(Vec3<float>(s.wx[i], s.wy[i], s.wz[i]), s.u1[i], s.u2[i]);
+// The scalar sampler of a model in precision T: SampleVisible, or
+// SamplePseudoVnis for std.
+template <class T>
+Vec3<T> Sample(const GgxNdf<T>& ndf, const Vec3<T>& w, T u1, T u2) {
+  return ndf.SampleVisible(w, u1, u2);
+}
+template <class T>
+Vec3<T> Sample(const BeckmannNdf<T>& ndf, const Vec3<T>& w, T u1, T u2) {
+  return ndf.SampleVisible(w, u1, u2);
+}
+template <class T>
+Vec3<T> Sample(const EllipsoidNdf<T>& ndf, const Vec3<T>& w, T u1, T u2) {
+  return ndf.SampleVisible(w, u1, u2);
+}
+template <class T>
+Vec3<T> Sample(const StudentTNdf<T>& ndf, const Vec3<T>& w, T u1, T u2) {
+  return ndf.SamplePseudoVnis(w, u1, u2);
+}
+
+template <class Ndf>
+void BM_SampleDouble(benchmark::State& state, Ndf ndf) {
+  const SampleData& s = Data();
+  const int n = Count(state);
+  for (auto _ : state) {
+    double acc = 0;
+    for (int i = 0; i < n; ++i) acc += Sample(ndf, s.w[i], s.u1[i], s.u2[i]).z;
+    benchmark::DoNotOptimize(acc);
+  }
+  state.SetItemsProcessed(state.iterations() * n);
+}
+
+template <class Ndf>
+__attribute__((optimize("no-tree-vectorize"))) void FloatSamples(const Ndf& ndf, SampleData& s,
+                                                                 int n) {
+  for (int i = 0; i < n; ++i) {
+    const Vec3<float> m = Sample(ndf, Vec3<float>(s.wx[i], s.wy[i], s.wz[i]), s.u1f[i], s.u2f[i]);
     s.mx[i] = m.x;
     s.my[i] = m.y;
     s.mz[i] = m.z;
   }
 }
 
-void BM_SampleVisibleScalar(benchmark::State& state, Model model) {
+template <class Ndf>
+void BM_SampleFloat(benchmark::State& state, Ndf ndf) {
   SampleData& s = Data();
-  const BeckmannNdf<float> beckmann(kAlpha);
-  const StudentTNdf<float> std_ndf(kAlpha, kAlpha, kGamma);
+  const int n = Count(state);
   for (auto _ : state) {
-    if (model == Model::kBeckmann) {
-      ScalarSamples([&](const Vec3<float>& w, float u1, float u2) {
-        return beckmann.SampleVisible(w, u1, u2);
-      }, s);
-    } else {
-      ScalarSamples([&](const Vec3<float>& w, float u1, float u2) {
-        return std_ndf.SamplePseudoVnis(w, u1, u2);
-      }, s);
-    }
+    FloatSamples(ndf, s, n);
     benchmark::DoNotOptimize(s.mz.data());
   }
-  state.SetItemsProcessed(state.iterations() * kSamples);
+  state.SetItemsProcessed(state.iterations() * n);
 }
 
-[[maybe_unused]] const int registered = [] {
-  for (const std::string& t : AvailableTargets()) {
-    benchmark::RegisterBenchmark(("BM_SampleVisible/beckmann/" + t).c_str(),
-                                 BM_SampleVisibleBatch, Model::kBeckmann, t);
-    benchmark::RegisterBenchmark(("BM_SampleVisible/std/" + t).c_str(), BM_SampleVisibleBatch,
-                                 Model::kStd, t);
+template <template <class> class Ndf, class... Params>
+void RegisterReferences(const char* model, Params... params) {
+  const std::string prefix = std::string("BM_SampleVisible/") + model;
+  benchmark::RegisterBenchmark((prefix + "/double_reference").c_str(), BM_SampleDouble<Ndf<double>>,
+                               Ndf<double>(static_cast<double>(params)...))
+      ->ArgNames({"n"})
+      ->Arg(kSamples);
+  benchmark::RegisterBenchmark((prefix + "/float_reference").c_str(), BM_SampleFloat<Ndf<float>>,
+                               Ndf<float>(static_cast<float>(params)...))
+      ->ArgNames({"n"})
+      ->Arg(kSamples);
+}
+
+[[maybe_unused]] const int kRegistered = [] {
+  RegisterReferences<GgxNdf>("ggx", 0.3, 0.3);
+  RegisterReferences<BeckmannNdf>("beckmann", 0.3, 0.3);
+  RegisterReferences<StudentTNdf>("std", 0.3, 0.3, 3.3);
+  RegisterReferences<EllipsoidNdf>("ellipsoid", 0.3, 0.5, 0.2, 0.1, 0.4);
+  for (ModelKind kind :
+       {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid}) {
+    for (const std::string& t : AvailableTargets()) {
+      const std::string name = "BM_SampleVisible/" + std::string(ModelName(kind)) + "/" + t;
+      benchmark::RegisterBenchmark(name.c_str(), BM_SampleBatch, kind, t)
+          ->ArgNames({"n"})
+          ->Arg(kSamples);
+    }
   }
-  benchmark::RegisterBenchmark("BM_SampleVisible/beckmann/scalar", BM_SampleVisibleScalar,
-                               Model::kBeckmann);
-  benchmark::RegisterBenchmark("BM_SampleVisible/std/scalar", BM_SampleVisibleScalar,
-                               Model::kStd);
   return 0;
 }();
 
