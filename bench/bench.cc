@@ -11,8 +11,9 @@
 //   AVX3, AVX2, ...   the batch call (batch.h) forced to that Highway target
 // Items are evaluations. BM_Brdf/ggx/<target> also runs at n = 16 and 17:
 // one or two whole vectors, and the same plus one lane, so the cost of a
-// partial vector shows. The visible-normal samplers are in
-// bench_sampling.cc, the grid below.
+// partial vector shows. Mixed materials and light directions
+// (BM_BrdfMixed, BM_SampleLight, BM_SampleLightMixed) and the grid are
+// below; the visible-normal samplers are in bench_sampling.cc.
 
 #include <algorithm>
 #include <cmath>
@@ -182,6 +183,74 @@ void BM_EvalBatch(benchmark::State& state, ModelKind kind, Quantity q, std::stri
   ForceTarget("best");
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(n));
 }
+
+// A shading batch of mixed materials on one target, n = 4096: the GGX or
+// Beckmann BRDF with alpha and F0 per element (BM_BrdfMixed), and light
+// directions with weight and pdf (BM_SampleLight, one material per call;
+// BM_SampleLightMixed, per element). Items are elements.
+struct Mixed {
+  std::vector<float> alpha, f0, u1, u2, x, y, z, weight, pdf;
+  Mixed() {
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<float> uni(0.0f, 1.0f);
+    for (int i = 0; i < kN; ++i) {
+      const float r = 0.05f + 0.95f * uni(rng);
+      alpha.push_back(r * r);
+      f0.push_back(i % 2 ? 0.04f : uni(rng));
+      u1.push_back(uni(rng));
+      u2.push_back(uni(rng));
+    }
+    x = y = z = weight = pdf = std::vector<float>(kN);
+  }
+};
+Mixed& MixedIn() {
+  static Mixed m;
+  return m;
+}
+enum class MixedCall { kBrdf, kLight, kLightMixed };
+void BM_Mixed(benchmark::State& state, ModelKind kind, MixedCall call, std::string target) {
+  ForceTarget(target);
+  Inputs& in = In();
+  Mixed& m = MixedIn();
+  const BatchModel p = BenchModel(kind);
+  const BatchElements elements{m.alpha.data(), nullptr, m.f0.data()};
+  const DirArrays wi{in.ix.data(), in.iy.data(), in.iz.data()};
+  const DirArrays wo{in.ox.data(), in.oy.data(), in.oz.data()};
+  const LightSampleArrays light{m.x.data(), m.y.data(), m.z.data(), m.weight.data(), m.pdf.data()};
+  for (auto _ : state) {
+    switch (call) {
+      case MixedCall::kBrdf:
+        EvalBatch(p, elements, Quantity::kBrdf, wi, wo, in.out.data(), kN);
+        break;
+      case MixedCall::kLight:
+        SampleLightBatch(p, wo, m.u1.data(), m.u2.data(), light, kN);
+        break;
+      case MixedCall::kLightMixed:
+        SampleLightBatch(p, elements, wo, m.u1.data(), m.u2.data(), light, kN);
+        break;
+    }
+    benchmark::DoNotOptimize(in.out.data());
+    benchmark::DoNotOptimize(m.weight.data());
+  }
+  ForceTarget("best");
+  state.SetItemsProcessed(state.iterations() * kN);
+}
+[[maybe_unused]] const int kMixedRegistered = [] {
+  const std::pair<const char*, MixedCall> calls[] = {{"BM_BrdfMixed/", MixedCall::kBrdf},
+                                                     {"BM_SampleLight/", MixedCall::kLight},
+                                                     {"BM_SampleLightMixed/", MixedCall::kLightMixed}};
+  for (const auto& [prefix, call] : calls) {
+    for (ModelKind kind : {ModelKind::kGgx, ModelKind::kBeckmann}) {
+      for (const std::string& t : AvailableTargets()) {
+        const std::string name = prefix + std::string(ModelName(kind)) + "/" + t;
+        benchmark::RegisterBenchmark(name.c_str(), BM_Mixed, kind, call, t)
+            ->ArgNames({"n"})
+            ->Arg(kN);
+      }
+    }
+  }
+  return 0;
+}();
 
 #define BRDFBAKE_REFERENCE(family, model, ndf)                                   \
   BENCHMARK_CAPTURE(BM_##family, model/double_reference, ndf)->ArgNames({"n"}) \

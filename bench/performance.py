@@ -187,6 +187,18 @@ more lane): nanoseconds per call, and what 16 evaluations cost inside the
 
 @TAIL@
 
+### Mixed materials and light directions
+
+A shading batch where every element has its own material
+(`BM_BrdfMixed/<model>/<target>`: alpha and F0 per element, the model's
+constants built per vector), and light directions with their weight and
+pdf (`BM_SampleLight`, one material per call; `BM_SampleLightMixed`, per
+element: the visible-normal sampler, the density and the BRDF over chunks
+of 256 elements), n = 4096, in millions of elements per second; the BRDF
+of one material is `BM_Brdf` above.
+
+@MIXED@
+
 ## The hardware limit
 
 `BM_Peak/<op>/<target>` (`bench/bench_peak.cc`) measures the arithmetic
@@ -441,7 +453,21 @@ def kernel_tables(r):
     tail = table(["target", "n = 16 (ns)", "n = 17 (ns)", "16 evaluations within n = 4096 (ns)",
                   "n = 17 / n = 16"],
                  tail_rows)
-    return kernels, grid, tail
+    mixed_rows = []
+    for model in ("ggx", "beckmann"):
+        for t in targets:
+            rate = lambda bench: r.rate(f"{bench}/{model}/{t}/n:4096")
+            one = rate("BM_Brdf")
+            mixed = rate("BM_BrdfMixed")
+            light, light_mixed = rate("BM_SampleLight"), rate("BM_SampleLightMixed")
+            if mixed is None:
+                continue
+            mixed_rows.append([f"{model} {t}", mps(one), mps(mixed), fmt_ratio(ratio(one, mixed)),
+                               mps(light), mps(light_mixed)])
+    mixed = table(["model, target", "BRDF, one material", "BRDF, per element",
+                   "one / per element", "light samples, one material",
+                   "light samples, per element"], mixed_rows)
+    return kernels, grid, tail, mixed
 
 
 def peak_table(r):
@@ -689,7 +715,7 @@ def main():
     if build_type != "Release":
         print(f"warning: the benchmark was built as '{build_type}', not Release", file=sys.stderr)
 
-    kernels, grid, tail = kernel_tables(r)
+    kernels, grid, tail, mixed = kernel_tables(r)
     bakes, readme = bake_table(r)
     reps = saved["repetitions"]
     repetition_text = (f"each benchmark {reps} times, the repetitions of all of them interleaved "
@@ -709,7 +735,7 @@ def main():
                                                           for a in saved["bench_args"]))
     for key, value in {"@MACHINE@": machine_table(r, saved["os"]), "@BAKES@": bakes,
                        "@PROCESSES@": process_table(saved["processes"]), "@KERNELS@": kernels,
-                       "@GRID@": grid, "@TAIL@": tail, "@PEAK@": peak_table(r),
+                       "@GRID@": grid, "@TAIL@": tail, "@MIXED@": mixed, "@PEAK@": peak_table(r),
                        "@LIMIT@": limit_table(r)}.items():
         text = text.replace(key, value)
 

@@ -136,7 +136,7 @@ std::array<const float*, 3> CheckedElements(const char* entry, const BatchModel&
   const float* ay = e.alpha_y ? e.alpha_y : e.alpha_x;
   const auto check = [&](const char* name, const float* a, float lo, bool open_lo, float hi,
                          const char* domain) {
-    if (!a) return;
+    if (!a || AllWithinBatch(a, n, lo, hi, open_lo)) return;
     for (size_t j = 0; j < n; ++j) {
       if (!(open_lo ? a[j] > lo : a[j] >= lo) || !(a[j] <= hi)) {
         Outside(entry, std::string(name) + "[" + std::to_string(j) + "]", a[j], domain);
@@ -144,7 +144,7 @@ std::array<const float*, 3> CheckedElements(const char* entry, const BatchModel&
     }
   };
   check("alpha_x", e.alpha_x, 0, true, 1e4f, "(0, 1e4]");
-  check("alpha_y", e.alpha_y, 0, true, 1e4f, "(0, 1e4]");
+  if (e.alpha_y != e.alpha_x) check("alpha_y", e.alpha_y, 0, true, 1e4f, "(0, 1e4]");
   if (e.f0 && model.fresnel != BatchFresnel::kSchlick) {
     Bad(std::string(entry) + ": per-element f0 needs BatchFresnel::kSchlick");
   }
@@ -211,8 +211,8 @@ void Sample(const BatchModel& model, const BatchElements* e, Sampler s, DirArray
 }
 
 // Light directions: per chunk of elements, the visible normals, the
-// reflection, the normals' density and the BRDF (each one vector loop of
-// the model's kernels), then pdf and weight.
+// reflection, the normals' density, the BRDF, then pdf and weight (each
+// one vector loop on the dispatched target).
 void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, const float* u1,
                  const float* u2, LightSampleArrays wi, size_t n) {
   const char* entry = "SampleLightBatch";
@@ -236,12 +236,9 @@ void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, 
       for (int k = 0; k < 3; ++k) in[5 + k] = pe[k] ? pe[k] + i : nullptr;
       float* normal[3] = {mx, my, mz};
       (e ? m.sample_elements : m.sample)(model, Sampler::kVisible, in, normal, c);
-      for (size_t j = 0; j < c; ++j) {
-        const float om = ox[j] * mx[j] + oy[j] * my[j] + oz[j] * mz[j];
-        ix[j] = 2 * om * mx[j] - ox[j];
-        iy[j] = 2 * om * my[j] - oy[j];
-        iz[j] = 2 * om * mz[j] - oz[j];
-      }
+      const float* wo_m[6] = {ox, oy, oz, mx, my, mz};
+      float* wi_out[3] = {ix, iy, iz};
+      ReflectBatch(wo_m, wi_out, c);
       // (wo, m) for the density, (wi, wo) for the BRDF, then the elements.
       const float* pair[9] = {ox, oy, oz, mx, my, mz};
       for (int k = 0; k < 3; ++k) pair[6 + k] = in[5 + k];
@@ -249,15 +246,9 @@ void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, 
       const float* brdf[9] = {ix, iy, iz, ox, oy, oz};
       for (int k = 0; k < 3; ++k) brdf[6 + k] = in[5 + k];
       EvalChecked(m, model, e != nullptr, Quantity::kBrdf, brdf, f, c);
-      float* weight = wi.weight + i;
-      float* pdf = wi.pdf + i;
-      for (size_t j = 0; j < c; ++j) {
-        const float om = ox[j] * mx[j] + oy[j] * my[j] + oz[j] * mz[j];
-        const bool valid = oz[j] > 0 && om > 0 && pdf_m[j] > 0;
-        pdf[j] = valid ? pdf_m[j] / (4 * om) : 0.0f;
-        weight[j] = valid && iz[j] > 0 ? f[j] * iz[j] * (4 * om) / pdf_m[j] : 0.0f;
-        if (!(oz[j] > 0)) ix[j] = iy[j] = iz[j] = 0.0f;
-      }
+      const float* parts[9] = {ox, oy, oz, mx, my, mz, iz, pdf_m, f};
+      float* light[2] = {wi.weight + i, wi.pdf + i};
+      LightWeightBatch(parts, light, c);
     }
   });
 }

@@ -46,6 +46,16 @@ void BeckmannEvalElementsBatch(const BatchModel& p, Quantity q, const float* con
                                size_t n);
 void BeckmannSampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,
                                  float* const* out, size_t n);
+// True if every a[j], j < n, lies in (lo, hi] (open_low) or [lo, hi];
+// false for NaN (batch_check.cc).
+bool AllWithinBatch(const float* a, size_t n, float lo, float hi, bool open_low);
+
+// The steps of SampleLightBatch around the model's kernels
+// (batch_light.cc): wi from (wo, m), then (weight, pdf) from
+// (wo, m, wi.z, pdf_visible(wo, m), f(wi, wo)).
+void ReflectBatch(const float* const* in, float* const* out, size_t n);
+void LightWeightBatch(const float* const* in, float* const* out, size_t n);
+
 void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
 
 // In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target

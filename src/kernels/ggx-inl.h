@@ -60,9 +60,11 @@ struct GgxConsts {
     ay = hn::Max(ay, lo);
     ax2 = hn::Mul(ax, ax);
     ay2 = hn::Mul(ay, ay);
-    inv_ax2 = hn::Div(one, ax2);
-    inv_ay2 = hn::Div(one, ay2);
-    inv_pi_axay = hn::Div(hn::Set(d, T(0.31830988618379067)), hn::Mul(ax, ay));
+    // Two divisions per vector: 1 / alpha^2 and 1 / (pi ax ay) from 1 / ax, 1 / ay.
+    const hn::Vec<D> inv_ax = hn::Div(one, ax), inv_ay = hn::Div(one, ay);
+    inv_ax2 = hn::Mul(inv_ax, inv_ax);
+    inv_ay2 = hn::Mul(inv_ay, inv_ay);
+    inv_pi_axay = hn::Mul(hn::Set(d, T(0.31830988618379067)), hn::Mul(inv_ax, inv_ay));
     f0 = f0_;
   }
 };
