@@ -128,6 +128,9 @@ void ValidateBakeSpec(const BakeSpec& spec);
 
 // Bytes of memory Bake() allocates for its outputs (checked before baking).
 size_t BakeOutputBytes(const BakeSpec& spec);
+// The values a bake of `spec` stores: texels times channels (with the
+// error channel).
+int64_t BakeOutputValues(const BakeSpec& spec);
 
 // Channel names sort into the intended order (OpenEXR stores channels
 // sorted by name), so a loader that takes channels by index gets

@@ -80,6 +80,17 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
 // AtomicFile. `symbol` names the arrays of the header and js containers.
 // Throws std::runtime_error (or std::invalid_argument for a pixel type the
 // container cannot hold).
+// The memory arranging and writing `values` stored values in `container`
+// takes at its peak (the Image, the text or bytes of the file and their
+// copies while they are put together), and a check, before a bake, that
+// this much can be allocated beside the `held` bytes the bakes will hold
+// (BakeOutputBytes): throws std::runtime_error naming the size and the
+// file if not, so that a file that cannot be written fails before the work
+// rather than after it.
+size_t ContainerWriteBytes(Container container, int64_t values);
+void CheckContainerMemory(Container container, int64_t values, size_t held,
+                          const std::string& path);
+
 void WriteImage(const Table& table, const Image& image, Container container,
                 const std::string& path, const std::string& symbol, const std::string& preset);
 

@@ -66,6 +66,9 @@ inline constexpr double kMaxAlpha = 1e4;
 // Throws std::invalid_argument with a one-line message naming the bad
 // parameter if `p` is outside the documented domain.
 void ValidateModelParams(const ModelParams& p);
+// Throws std::invalid_argument naming the parameter outside the domain of
+// fresnel.h (F0 in [0, 1]; eta, n in [0.01, 100]; k in [0, 100]; NaN).
+void ValidateFresnel(const Fresnel& f);
 
 // A validated model, evaluated in double. Quantities a model does not define
 // (Lambda for sel, say) throw std::invalid_argument.

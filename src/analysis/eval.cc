@@ -99,19 +99,7 @@ void ValidateEvalRequest(const EvalRequest& req) {
   }
   if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("--mu-o must lie in [0, 1]");
   if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("--phi/--phi-o must be finite");
-  if (req.fresnel.kind == FresnelKind::kDielectric &&
-      (!std::isfinite(req.fresnel.eta) || !(req.fresnel.eta > 0))) {
-    Bad("--eta must be a finite number > 0");
-  }
-  for (int c = 0; c < 3; ++c) {
-    if (!std::isfinite(req.fresnel.f0[c]) || req.fresnel.f0[c] < 0 || req.fresnel.f0[c] > 1) {
-      Bad("--f0 values must lie in [0, 1]");
-    }
-    if (!std::isfinite(req.fresnel.n[c]) || !(req.fresnel.n[c] > 0) ||
-        !std::isfinite(req.fresnel.k[c]) || req.fresnel.k[c] < 0) {
-      Bad("--n must be > 0 and --k >= 0, finite");
-    }
-  }
+  ValidateFresnel(req.fresnel);
 }
 
 namespace {

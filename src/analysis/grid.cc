@@ -96,6 +96,7 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
 
 void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
+  ValidateFresnel(req.fresnel);
   if (req.model.kind == ModelKind::kSel) throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
   if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
     throw std::invalid_argument("--width/--height must be in [1, 16384]");

@@ -975,6 +975,10 @@ size_t BakeOutputBytes(const BakeSpec& spec) {
   return n * (channels * (sizeof(double) + sizeof(float) + half) + sizeof(double));
 }
 
+int64_t BakeOutputValues(const BakeSpec& spec) {
+  return TexelCount(spec) * (ValueChannels(spec) + (spec.error_channel ? 1 : 0));
+}
+
 Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   ValidateBakeSpec(spec);
   const auto start = std::chrono::steady_clock::now();

@@ -9,7 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -475,6 +477,45 @@ void WriteHeader(const std::vector<std::pair<const Table*, const Image*>>& array
          std::to_string(im.values.size()) + "] = {\n" + ArrayBody(im, half_bits, "f") + "};\n\n";
   }
   WriteFileAtomically(path, s);
+}
+
+size_t ContainerWriteBytes(Container container, int64_t values) {
+  // Per value: the arranged Image (a double and 16 bits), then the file.
+  size_t per_value = sizeof(double) + sizeof(uint16_t);
+  switch (container) {
+    case Container::kExr:
+      per_value += 2 * (sizeof(float) + sizeof(uint16_t));  // planes, and OpenEXR's copy
+      break;
+    case Container::kHeader:
+    case Container::kJs:
+      per_value += 3 * 24;  // up to 24 characters a value; the array, the file, their sum
+      break;
+    case Container::kKtx2:
+    case Container::kDds:
+      per_value += 3 * sizeof(float);  // the pixels, the file, their sum
+      break;
+  }
+  return size_t(values) * per_value;
+}
+
+void CheckContainerMemory(Container container, int64_t values, size_t held,
+                          const std::string& path) {
+  const size_t bytes = ContainerWriteBytes(container, values) + held;
+  // Allocated and released at once: where the address space or memory is
+  // limited (ulimit -v), a write that cannot fit fails here. The volatile
+  // store keeps the compiler from eliding the pair.
+  static char* volatile probe = nullptr;
+  probe = static_cast<char*>(std::malloc(bytes));
+  const bool ok = probe != nullptr || bytes == 0;
+  std::free(probe);
+  probe = nullptr;
+  if (!ok) {
+    char msg[200];
+    std::snprintf(msg, sizeof(msg),
+                  "cannot allocate %.1f MiB to bake and write the %s file %s (out of memory)",
+                  double(bytes) / (1 << 20), ContainerName(container), path.c_str());
+    throw std::runtime_error(msg);
+  }
 }
 
 void WriteImage(const Table& table, const Image& im, Container container, const std::string& path,

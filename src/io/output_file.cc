@@ -60,7 +60,19 @@ void Unregister(int slot) {
   g_slots[slot].used.store(false);
 }
 
+// Temporaries being created (between mkstemp and Register). The thread
+// creating one blocks the signals, but another thread (a oneTBB worker)
+// may take one meanwhile: its handler marks the process as dying, so that
+// no creation starts after that, and waits for those under way to finish
+// before it removes what is registered. (Each side writes its flag, then
+// reads the other's: one of them sees the other.)
+std::atomic<int> g_creating{0};
+std::atomic<bool> g_dying{false};
+
 extern "C" void RemoveTemporariesAndDie(int sig) {
+  g_dying.store(true);
+  while (g_creating.load() != 0) {
+  }
   for (Slot& s : g_slots) {
     if (s.used.load()) ::unlink(s.path);  // async-signal-safe
   }
@@ -122,6 +134,10 @@ void InstallTemporaryCleanup() {
     if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;
     ::sigaction(sig, &sa, nullptr);
   }
+  // A write beyond the file-size limit (ulimit -f) then fails with EFBIG,
+  // which removes the temporary and reports "File too large", instead of
+  // killing the process with the temporary left behind.
+  ::signal(SIGXFSZ, SIG_IGN);
 }
 
 AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
@@ -141,11 +157,26 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
   sigemptyset(&block);
   for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&block, sig);
   ::pthread_sigmask(SIG_BLOCK, &block, &old);
-  fd_ = ::mkstemp(tmpl.data());
-  const int err = errno;
-  if (fd_ >= 0) {
-    tmp_ = tmpl;
-    slot_ = Register(tmp_);
+  int err = 0;
+  {
+    struct Creating {
+      Creating() {
+        g_creating.fetch_add(1);
+        if (g_dying.load()) {
+          // A handler on another thread is removing the temporaries and
+          // ending the process: create nothing more.
+          g_creating.fetch_sub(1);
+          for (;;) ::pause();
+        }
+      }
+      ~Creating() { g_creating.fetch_sub(1); }
+    } creating;
+    fd_ = ::mkstemp(tmpl.data());
+    err = errno;
+    if (fd_ >= 0) {
+      tmp_ = tmpl;
+      slot_ = Register(tmp_);
+    }
   }
   ::pthread_sigmask(SIG_SETMASK, &old, nullptr);
   if (fd_ < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(err));

@@ -82,17 +82,20 @@ void MaybeFlushed(bool flush, const F& f) {
 
 bool Within(float v, float lo, float hi) { return v >= lo && v <= hi; }  // false for NaN
 
+// The Fresnel domain of fresnel.h in float.
+constexpr float kMinIndex = float(kMinFresnelIndex), kMaxIndex = float(kMaxFresnelIndex);
+
 void CheckFresnel(const char* entry, const BatchModel& m) {
   switch (m.fresnel) {
     case BatchFresnel::kSchlick:
       if (!Within(m.f0, 0, 1)) Outside(entry, "f0", m.f0, "[0, 1]");
       return;
     case BatchFresnel::kDielectric:
-      if (!Within(m.eta, 0.01f, 100)) Outside(entry, "eta", m.eta, "[0.01, 100]");
+      if (!Within(m.eta, kMinIndex, kMaxIndex)) Outside(entry, "eta", m.eta, "[0.01, 100]");
       return;
     case BatchFresnel::kConductor:
-      if (!Within(m.eta, 0.01f, 100)) Outside(entry, "eta", m.eta, "[0.01, 100]");
-      if (!Within(m.k, 0, 100)) Outside(entry, "k", m.k, "[0, 100]");
+      if (!Within(m.eta, kMinIndex, kMaxIndex)) Outside(entry, "eta", m.eta, "[0.01, 100]");
+      if (!Within(m.k, 0, kMaxIndex)) Outside(entry, "k", m.k, "[0, 100]");
       return;
   }
   Bad(std::string(entry) + ": unknown BatchFresnel");

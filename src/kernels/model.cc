@@ -219,6 +219,25 @@ void ValidateModelParams(const ModelParams& p) {
   }
 }
 
+void ValidateFresnel(const Fresnel& f) {
+  const auto check = [](const char* name, int channel, double v, double lo, double hi) {
+    if (v >= lo && v <= hi) return;  // false for NaN
+    std::ostringstream os;
+    os << "Fresnel " << name;
+    if (channel >= 0) os << "[" << channel << "]";
+    os << " = " << v << " is outside [" << lo << ", " << hi << "]";
+    Bad(os.str());
+  };
+  for (int c = 0; c < 3; ++c) {
+    if (f.kind == FresnelKind::kSchlick) check("f0", c, f.f0[c], 0, 1);
+    if (f.kind == FresnelKind::kConductor) {
+      check("n", c, f.n[c], kMinFresnelIndex, kMaxFresnelIndex);
+      check("k", c, f.k[c], 0, kMaxFresnelIndex);
+    }
+  }
+  if (f.kind == FresnelKind::kDielectric) check("eta", -1, f.eta, kMinFresnelIndex, kMaxFresnelIndex);
+}
+
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
 #if BRDFBAKE_WITH_BECKMANN

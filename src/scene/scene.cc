@@ -8,14 +8,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 #include <tbb/parallel_for.h>
-#include <tiny_gltf.h>
 #include <toml++/toml.h>
 
 #include "base/error.h"
@@ -211,52 +213,160 @@ Scene LoadToml(const std::string& path) {
   return s;
 }
 
-bool NoImages(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) {
-  return true;  // textures only tell that a factor is modulated; their pixels are not needed
+// glTF 2.0 is read for its materials alone: the JSON of a .gltf file, or
+// the JSON chunk of a .glb container. The scene file is the one file
+// opened: buffers, images and every other URI are never read, so a scene
+// from anywhere cannot make the tool read, block on or reveal another file.
+
+constexpr int kMaxJsonDepth = 512;  // far beyond any real glTF file
+
+[[noreturn]] void NotGltf(const std::string& path, const std::string& why) {
+  Bad(path + ": not a valid glTF 2.0 file: " + why);
 }
 
+// The bytes of `path`, or of its first `limit` bytes.
+std::string ReadBytes(const std::string& path, size_t limit = std::string::npos) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) Bad(path + ": cannot be read");
+  std::string bytes;
+  if (limit == std::string::npos) {
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  } else {
+    bytes.resize(limit);
+    in.read(bytes.data(), static_cast<std::streamsize>(limit));
+    bytes.resize(static_cast<size_t>(in.gcount()));
+  }
+  if (in.bad()) Bad(path + ": read error");
+  return bytes;
+}
+
+uint32_t Le32(const std::string& b, size_t at) {
+  return uint32_t(uint8_t(b[at])) | uint32_t(uint8_t(b[at + 1])) << 8 |
+         uint32_t(uint8_t(b[at + 2])) << 16 | uint32_t(uint8_t(b[at + 3])) << 24;
+}
+
+// The JSON chunk of a .glb file (glTF 2.0 section 4.4: a 12-byte header,
+// then chunks of length, type and data; the first chunk is the JSON).
+std::string GlbJson(const std::string& path) {
+  const std::string head = ReadBytes(path, 20);
+  if (head.size() < 20) NotGltf(path, "shorter than a GLB header");
+  if (Le32(head, 0) != 0x46546C67u) NotGltf(path, "no GLB magic 'glTF'");
+  if (Le32(head, 4) != 2) NotGltf(path, "GLB version " + std::to_string(Le32(head, 4)) + ", not 2");
+  const uint32_t length = Le32(head, 8), chunk = Le32(head, 12);
+  if (Le32(head, 16) != 0x4E4F534Au) NotGltf(path, "the first GLB chunk is not JSON");
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || length > size || uint64_t(chunk) + 20 > length) {
+    NotGltf(path, "the GLB lengths exceed the file");
+  }
+  const std::string bytes = ReadBytes(path, 20 + size_t(chunk));
+  if (bytes.size() != 20 + size_t(chunk)) NotGltf(path, "the JSON chunk is cut short");
+  return bytes.substr(20);
+}
+
+// Refuses JSON nested deeper than kMaxJsonDepth before it is parsed.
+void CheckJsonDepth(const std::string& path, const std::string& text) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth) {
+        NotGltf(path, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
+// The JSON type of v, for messages.
+std::string JsonType(const nlohmann::json& v) { return v.type_name(); }
+
 Scene LoadGltf(const std::string& path) {
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(NoImages, nullptr);
-  tinygltf::Model model;
-  std::string err, warn;
   const bool binary = Lowercase(std::filesystem::path(path).extension().string()) == ".glb";
-  bool ok = false;
+  const std::string text = binary ? GlbJson(path) : ReadBytes(path);
+  CheckJsonDepth(path, text);
+  nlohmann::json doc;
   try {
-    ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-  } catch (const std::exception& e) {
-    err = e.what();
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    NotGltf(path, std::string("invalid JSON: ") + e.what());
   }
-  if (!ok) {
-    for (char& c : err) if (c == '\n') c = ' ';
-    while (!err.empty() && err.back() == ' ') err.pop_back();
-    Bad(path + ": not a valid glTF 2.0 file" + (err.empty() ? "" : ": " + err));
-  }
+  if (!doc.is_object()) NotGltf(path, "the top level is a " + JsonType(doc) + ", not an object");
+  const auto asset = doc.find("asset");
+  if (asset == doc.end() || !asset->is_object()) NotGltf(path, "no 'asset' object");
+  const auto version = asset->find("version");
+  if (version == asset->end() || !version->is_string()) NotGltf(path, "no 'asset.version' string");
+  const std::string v = version->get<std::string>();
+  if (v.rfind("2.", 0) != 0) NotGltf(path, "asset.version is '" + v + "', not 2.x");
+  const auto materials = doc.find("materials");
+  if (materials == doc.end()) Bad(path + ": the glTF file has no materials");
+  if (!materials->is_array()) NotGltf(path, "'materials' is a " + JsonType(*materials) + ", not an array");
+
   Scene s;
   s.path = path;
-  for (size_t i = 0; i < model.materials.size(); ++i) {
-    const tinygltf::Material& m = model.materials[i];
+  for (size_t i = 0; i < materials->size(); ++i) {
+    const nlohmann::json& m = (*materials)[i];
+    const std::string at = path + ": materials[" + std::to_string(i) + "]";
+    if (!m.is_object()) Bad(at + ": a " + JsonType(m) + ", not an object");
     SceneMaterial mat;
-    mat.name = m.name.empty() ? "material " + std::to_string(i) : m.name;
+    const auto name = m.find("name");
+    if (name != m.end() && !name->is_string()) Bad(at + ": field 'name': expected a string");
+    mat.name = name != m.end() && !name->get<std::string>().empty() ? name->get<std::string>()
+                                                                       : "material " + std::to_string(i);
     mat.source = "glTF material " + std::to_string(i);
     const std::string where = path + ": material '" + mat.name + "'";
-    const double factor = m.pbrMetallicRoughness.roughnessFactor;
+    // A number field of an object, `fallback` when absent.
+    const auto number = [&](const nlohmann::json& obj, const char* key, const std::string& field,
+                            double fallback) {
+      const auto it = obj.find(key);
+      if (it == obj.end()) return fallback;
+      if (!it->is_number()) Bad(where + ": field '" + field + "': expected a number, got a " + JsonType(*it));
+      return it->get<double>();
+    };
+    double factor = 1.0;
+    bool textured = false;
+    const auto pbr = m.find("pbrMetallicRoughness");
+    if (pbr != m.end()) {
+      if (!pbr->is_object()) Bad(where + ": field 'pbrMetallicRoughness': expected an object");
+      factor = number(*pbr, "roughnessFactor", "pbrMetallicRoughness.roughnessFactor", 1.0);
+      const auto tex = pbr->find("metallicRoughnessTexture");
+      if (tex != pbr->end()) {
+        const auto index = tex->is_object() ? tex->find("index") : tex->end();
+        if (!tex->is_object() || index == tex->end() || !index->is_number_unsigned()) {
+          Bad(where + ": field 'pbrMetallicRoughness.metallicRoughnessTexture': expected an object "
+                      "with an integer 'index' >= 0");
+        }
+        textured = true;
+      }
+    }
     if (!(factor >= 0 && factor <= 1)) {
       Bad(where + ": field 'pbrMetallicRoughness.roughnessFactor': " + Num(factor) + " is outside [0, 1]");
     }
     // A metallic-roughness texture multiplies the factor: any roughness in [0, factor].
-    mat.roughness_min = m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0 ? 0.0 : factor;
+    mat.roughness_min = textured ? 0.0 : factor;
     mat.roughness_max = factor;
-    for (const auto& ext : m.extensions) {
-      const std::string& name = ext.first;
-      if (name == "KHR_materials_anisotropy") {
-        double strength = 0;
-        if (ext.second.Has("anisotropyStrength")) {
-          const tinygltf::Value& v = ext.second.Get("anisotropyStrength");
-          if (!v.IsNumber()) Bad(where + ": field 'KHR_materials_anisotropy.anisotropyStrength': expected a number");
-          strength = v.GetNumberAsDouble();
-        }
+    const auto extensions = m.find("extensions");
+    if (extensions != m.end() && !extensions->is_object()) {
+      Bad(where + ": field 'extensions': expected an object");
+    }
+    const nlohmann::json none = nlohmann::json::object();
+    for (const auto& item : (extensions != m.end() ? *extensions : none).items()) {
+      const std::string& name_ext = item.key();
+      const nlohmann::json& ext = item.value();
+      if (!ext.is_object()) Bad(where + ": field 'extensions." + name_ext + "': expected an object");
+      if (name_ext == "KHR_materials_anisotropy") {
+        const double strength = number(ext, "anisotropyStrength", "KHR_materials_anisotropy.anisotropyStrength", 0.0);
         if (!(strength >= 0 && strength <= 1)) {
           Bad(where + ": field 'KHR_materials_anisotropy.anisotropyStrength': " + Num(strength) + " is outside [0, 1]");
         }
@@ -264,16 +374,16 @@ Scene LoadGltf(const std::string& path) {
           mat.model = ModelKind::kGgxAniso;
           mat.anisotropy = strength;
         }
-      } else if (name == "KHR_materials_ior" || name == "KHR_materials_specular") {
+      } else if (name_ext == "KHR_materials_ior" || name_ext == "KHR_materials_specular") {
         // The F0 and F90 these set weight the split-sum terms: dfg covers them.
-      } else if (name == "KHR_materials_transmission") {
-        mat.unsupported.push_back({name, "a transmission (BTDF) albedo table over roughness and IOR"});
-      } else if (name == "KHR_materials_sheen") {
-        mat.unsupported.push_back({name, "a sheen (Charlie NDF) albedo table over roughness"});
-      } else if (name == "KHR_materials_clearcoat") {
-        mat.unsupported.push_back({name, "the clearcoat layer's GGX tables at its own roughness (not planned yet)"});
+      } else if (name_ext == "KHR_materials_transmission") {
+        mat.unsupported.push_back({name_ext, "a transmission (BTDF) albedo table over roughness and IOR"});
+      } else if (name_ext == "KHR_materials_sheen") {
+        mat.unsupported.push_back({name_ext, "a sheen (Charlie NDF) albedo table over roughness"});
+      } else if (name_ext == "KHR_materials_clearcoat") {
+        mat.unsupported.push_back({name_ext, "the clearcoat layer's GGX tables at its own roughness (not planned yet)"});
       } else {
-        mat.unsupported.push_back({name, "an extension brdfbake does not know"});
+        mat.unsupported.push_back({name_ext, "an extension brdfbake does not know"});
       }
     }
     s.materials.push_back(mat);

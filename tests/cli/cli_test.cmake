@@ -84,6 +84,11 @@ expect_one_line_error(eval --masking none)
 expect_one_line_error(eval --model sel --quantity D)
 expect_one_line_error(eval --no-such-flag)
 expect_one_line_error(eval --model ellipsoid --theta-y 120)
+# Fresnel parameters outside the domain (they gave NaN with exit 0).
+expect_one_line_error(eval --fresnel dielectric --eta 1e-300)
+expect_one_line_error(eval --fresnel conductor --n 1e-300,1,1 --k 0,0,0)
+expect_one_line_error(eval --fresnel conductor --n 1e-170,1,1 --k 0,0,0)
+expect_one_line_error(eval --grid slice --fresnel dielectric --eta 1e-300 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
 
 # bake: writes the file, prints the wall time and the error; bad input leaves no file.
 set(out_dir "${CMAKE_CURRENT_BINARY_DIR}/cli_bake")

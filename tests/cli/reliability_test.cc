@@ -13,12 +13,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <Imath/half.h>
@@ -157,6 +159,55 @@ TEST(OutputFileTest, SignalsRemoveTheTemporary) {
   }
 }
 
+// A signal sent to the process lands on any thread that does not block it:
+// on a second thread while the main thread creates a temporary (with the
+// signals blocked there), the handler waits for the creation to finish and
+// removes it. 400 children create temporaries in a loop beside an idle
+// thread and are killed at random times; none may leave one.
+TEST(OutputFileTest, SignalsOnAnotherThreadRemoveTheTemporary) {
+  std::mt19937 rng(7);
+  int left = 0;
+  for (int run = 0; run < 400; ++run) {
+    const std::string dir = ScratchDir("thread_signal" + std::to_string(run));
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      InstallTemporaryCleanup();
+      std::thread idle([] {
+        for (;;) ::pause();
+      });
+      idle.detach();
+      for (;;) {
+        AtomicFile f(dir + "/out.exr");
+      }
+    }
+    ::usleep(1000 + rng() % 3000);
+    ::kill(pid, SIGTERM);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
+    left += Listing(dir).empty() ? 0 : 1;
+  }
+  EXPECT_EQ(left, 0) << "runs that left a temporary";
+}
+
+// Past the file-size limit (ulimit -f) the write fails with "File too
+// large", as one line, and leaves neither the target nor a temporary (the
+// default SIGXFSZ killed the process with the temporary left behind).
+TEST(CliReliabilityTest, FileSizeLimitIsAnErrorWithoutLeftovers) {
+  const std::string dir = ScratchDir("fsize");
+  for (const char* out : {"big.exr", "big.h", "big.ktx2"}) {
+    const ToolRun r = ExecuteShell("cd " + Quote(dir) + " && ulimit -f 20 && \"$BRDFBAKE\" bake -t E "
+                                   "--size 256x256 -o " + std::string(out), dir);
+    EXPECT_EQ(r.status, 1) << out << ": " << r.err;
+    EXPECT_FALSE(r.signaled) << out;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    for (const std::string& f : Listing(dir)) {
+      EXPECT_TRUE(f == "stdout" || f == "stderr") << out << ": " << f << " left behind";
+    }
+  }
+}
+
 TEST(OutputFileTest, ReportFilesAreAllOrNothing) {
   ReportSpec rs;
   rs.table.mu.size = rs.table.roughness.size = 4;
@@ -224,6 +275,71 @@ TEST(CliReliabilityTest, DeviceTargetsAreRefusedBeforeTheBake) {
   EXPECT_EQ(r.err.find("brdfbake-"), std::string::npos) << r.err;
 }
 
+// A glTF scene naming a FIFO as a buffer and as an image: the tool never
+// opens it (opening a FIFO blocks until a writer comes), plans the
+// material, and says nothing of the file (a timeout ends a run that
+// blocks).
+TEST(CliReliabilityTest, GltfUrisNamingAFifoDoNotBlock) {
+  const std::string dir = ScratchDir("fifo");
+  const ToolRun r = ExecuteShell(
+      "cd " + Quote(dir) + " && rm -f pipe && mkfifo pipe && printf '%s' "
+      "'{\"asset\":{\"version\":\"2.0\"},\"buffers\":[{\"uri\":\"pipe\",\"byteLength\":4}],"
+      "\"images\":[{\"uri\":\"pipe\"}],\"materials\":[{\"name\":\"m\"}]}' > scene.gltf && "
+      "timeout 60 \"$BRDFBAKE\" plan scene.gltf",
+      dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("m"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("pipe"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find("pipe"), std::string::npos) << r.err;
+}
+
+// Under a memory limit a text or binary container that cannot be written
+// is refused before the bake, naming the size (it ran the whole bake, then
+// died with a bare std::bad_alloc), and leaves no file.
+TEST(CliReliabilityTest, ContainersThatCannotFitFailBeforeTheBake) {
+  const std::string dir = ScratchDir("memory");
+  for (const char* ext : {".h", ".js"}) {
+    const std::string out = std::string("mem") + ext;
+    const ToolRun r = ExecuteShell("cd " + Quote(dir) + " && ulimit -v 60000 && \"$BRDFBAKE\" bake -t E "
+                                   "--size 1024x1024 -o " + out, dir);
+    EXPECT_NE(r.status, 0) << ext;
+    EXPECT_FALSE(r.signaled) << ext;
+    EXPECT_NE(r.err.find("MiB to bake and write the"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("baked"), std::string::npos) << r.out;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/" + out)) << ext;
+  }
+  // Every outcome is whole: the file written, or a one-line error and none.
+  for (const char* ext : {".ktx2", ".dds"}) {
+    const std::string out = std::string("mem") + ext;
+    const ToolRun r = ExecuteShell("cd " + Quote(dir) + " && ulimit -v 60000 && \"$BRDFBAKE\" bake -t E "
+                                   "--size 1024x1024 -o " + out, dir);
+    EXPECT_FALSE(r.signaled) << ext;
+    if (r.status != 0) {
+      EXPECT_NE(r.err.find("brdfbake: error: "), std::string::npos) << r.err;
+      EXPECT_EQ(r.err.find("std::bad_alloc"), std::string::npos) << r.err;
+      EXPECT_FALSE(std::filesystem::exists(dir + "/" + out)) << ext;
+    }
+  }
+}
+
+// eval's CSV under a memory limit: the whole CSV, or a one-line error, a
+// non-zero exit and nothing on standard output (it printed 134 MB of 321 MB,
+// cut mid-row, and exited 0).
+TEST(CliReliabilityTest, EvalCsvIsWholeOrAnError) {
+  const std::string dir = ScratchDir("csv");
+  const ToolRun r = ExecuteShell("cd " + Quote(dir) + " && ulimit -v 250000 && \"$BRDFBAKE\" eval "
+                                 "--quantity D,G1,Lambda,brdf --sweep theta --count 3000000 > out.csv",
+                                 dir);
+  EXPECT_FALSE(r.signaled);
+  const std::string csv = test::Slurp(dir + "/out.csv");
+  if (r.status == 0) {
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3000001) << r.err;
+  } else {
+    EXPECT_TRUE(csv.empty()) << csv.size() << " bytes";
+    EXPECT_NE(r.err.find("brdfbake: error: "), std::string::npos) << r.err;
+  }
+}
+
 TEST(CliReliabilityTest, FailedWritesToStdoutAreErrors) {
   const std::string dir = ScratchDir("stdout");
   const std::vector<std::string> commands = {
@@ -231,6 +347,9 @@ TEST(CliReliabilityTest, FailedWritesToStdoutAreErrors) {
       "eval --quantity D --count 5",
       "bake --table E --size 4x4 -o " + Quote(dir + "/e.exr"),
       "report --table E --size 4x4 --repeats 1 -o " + Quote(dir + "/report"),
+      "--help",
+      "--version",
+      "bake --help",
   };
   for (const std::string& c : commands) {
     const ToolRun r = ExecuteShell("\"$BRDFBAKE\" " + c + " >/dev/full", dir);

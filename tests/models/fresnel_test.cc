@@ -4,8 +4,14 @@
 #include "brdfbake/models/fresnel.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
+
+#include "brdfbake/model.h"
 
 namespace brdfbake {
 namespace {
@@ -73,6 +79,49 @@ TEST(FresnelTest, ModelDispatchAndGrey) {
   const Fresnel c = Fresnel::Conductor({0.2, 0.9, 1.1}, {3.9, 2.4, 2.1});
   EXPECT_NEAR(c.Eval(0.6, 1), FresnelConductor(0.9, 2.4, 0.6), 1e-15);
   EXPECT_EQ(Fresnel::Dielectric(1.5).Name(), "dielectric");
+}
+
+// Over the whole domain (eta and n in [0.01, 100], k in [0, 100], every
+// cosine, float and double) the reflectances are finite and in [0, 1]; the
+// parameters outside it are refused in one line naming the parameter.
+TEST(FresnelTest, FiniteOverTheDomainAndRefusedOutside) {
+  std::vector<double> indices, cosines = {0.0, 1e-300, 1e-30, 1e-7, 1e-3, 0.1, 0.5, 0.9, 1 - 1e-7, 1.0};
+  for (double e = -2; e <= 2.0001; e += 0.125) indices.push_back(std::pow(10.0, e));
+  for (double eta : indices) {
+    for (double c : cosines) {
+      const double fd = FresnelDielectric(eta, c);
+      const float ff = FresnelDielectric(float(eta), float(c));
+      ASSERT_TRUE(fd >= 0 && fd <= 1) << eta << " " << c << " " << fd;
+      ASSERT_TRUE(ff >= 0 && ff <= 1) << eta << " " << c << " " << ff;
+      for (double k : {0.0, 1e-3, 0.5, 3.0, 30.0, 100.0}) {
+        const double fc = FresnelConductor(eta, k, c);
+        const float fcf = FresnelConductor(float(eta), float(k), float(c));
+        ASSERT_TRUE(fc >= 0 && fc <= 1 + 1e-12) << eta << " " << k << " " << c << " " << fc;
+        ASSERT_TRUE(fcf >= 0 && fcf <= 1 + 1e-6f) << eta << " " << k << " " << c << " " << fcf;
+      }
+    }
+  }
+  const double nan = std::nan("");
+  const std::vector<std::pair<Fresnel, std::string>> bad = {
+      {Fresnel::Dielectric(1e-300), "eta"},
+      {Fresnel::Dielectric(0), "eta"},
+      {Fresnel::Dielectric(1e3), "eta"},
+      {Fresnel::Dielectric(nan), "eta"},
+      {Fresnel::Conductor({1e-300, 1, 1}, {0, 0, 0}), "n[0]"},
+      {Fresnel::Conductor({1, 1, 1}, {0, -1, 0}), "k[1]"},
+      {Fresnel::Conductor({1, 1, nan}, {0, 0, 0}), "n[2]"},
+      {Fresnel::Schlick({0.04, 1.5, 0.04}), "f0[1]"},
+  };
+  for (const auto& [f, field] : bad) {
+    try {
+      ValidateFresnel(f);
+      ADD_FAILURE() << "accepted " << field;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_NO_THROW(ValidateFresnel(Fresnel::Conductor({0.01, 100, 1}, {0, 100, 3})));
+  EXPECT_NO_THROW(ValidateFresnel(Fresnel::Dielectric(0.01)));
 }
 
 }  // namespace

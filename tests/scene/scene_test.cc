@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -232,6 +234,22 @@ TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
       {"{\"asset\": {\"version\": \"2.0\"}}", "no materials"},
       {"{\"asset\": ", "not a valid glTF"},
       {"not json at all", "not a valid glTF"},
+      // Types and versions are checked, not coerced.
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"c\", \"pbrMetallicRoughness\": "
+       "{\"roughnessFactor\": \"high\"}}]}",
+       "material 'c': field 'pbrMetallicRoughness.roughnessFactor': expected a number"},
+      {"{\"asset\": {\"version\": \"1.0\"}, \"materials\": [{}]}", "asset.version is '1.0', not 2.x"},
+      {"{\"materials\": [{}]}", "no 'asset' object"},
+      {"{\"asset\": {\"version\": 2}, \"materials\": [{}]}", "no 'asset.version' string"},
+      {"[1, 2]", "the top level is a array, not an object"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": {}}", "'materials' is a object, not an array"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [3]}", "materials[0]: a number, not an object"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": 7}]}", "materials[0]: field 'name'"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"d\", \"extensions\": []}]}",
+       "material 'd': field 'extensions': expected an object"},
+      {"{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"e\", \"pbrMetallicRoughness\": "
+       "{\"metallicRoughnessTexture\": {\"index\": -1}}}]}",
+       "material 'e': field 'pbrMetallicRoughness.metallicRoughnessTexture'"},
   };
   for (const BadScene& c : gltf) {
     const std::string path = dir + "/bad" + std::to_string(n++) + ".gltf";
@@ -241,6 +259,92 @@ TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
   EXPECT_THROW(LoadScene(dir + "/missing.toml"), std::invalid_argument);
   WriteText(dir + "/scene.yaml", "a: 1");
   EXPECT_THROW(LoadScene(dir + "/scene.yaml"), std::invalid_argument);
+}
+
+// Nesting deep enough to exhaust a recursive parser's stack is refused
+// before parsing, in the materials' extras as anywhere else.
+TEST(SceneTest, DeeplyNestedGltfIsRefused) {
+  const std::string dir = Scratch("deep");
+  for (int depth : {600, 20000, 200000}) {
+    const std::string path = dir + "/deep" + std::to_string(depth) + ".gltf";
+    WriteText(path, "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"extras\":" +
+                        std::string(depth, '[') + std::string(depth, ']') + "}]}");
+    ExpectRejected(path, {"deep", "nested deeper than 512 levels"});
+  }
+  // Brackets inside strings do not count; 100 levels load.
+  const std::string path = dir + "/fine.gltf";
+  WriteText(path, "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"name\":\"[[[\\\"[[\",\"extras\":" +
+                      std::string(100, '[') + std::string(100, ']') + "}]}");
+  const Scene s = LoadScene(path);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "[[[\"[[");
+}
+
+// A glTF scene is read for its materials alone: buffer and image URIs
+// (absolute, traversing, percent-encoded, missing, huge, a FIFO, a data
+// URI) are never opened, so they can neither fail the load nor reveal
+// anything about other files. (The FIFO, which blocks whoever opens it,
+// is in tests/cli/reliability_test.cc, under a timeout.)
+TEST(SceneTest, GltfUrisAreNeverOpened) {
+  const std::string dir = Scratch("uris");
+  const std::string huge = dir + "/huge.bin";
+  {
+    std::ofstream f(huge);
+  }
+  std::filesystem::resize_file(huge, uintmax_t(3) << 30);  // sparse, 3 GiB
+  const std::string uris[] = {"/etc/shadow", "../../../../../../etc/passwd", "%2fetc%2fpasswd",
+                              "missing.bin", huge, "data:application/octet-stream;base64,AAAA"};
+  std::string buffers, images;
+  for (const std::string& u : uris) {
+    buffers += std::string(buffers.empty() ? "" : ",") + "{\"uri\":\"" + u + "\",\"byteLength\":16}";
+    images += std::string(images.empty() ? "" : ",") + "{\"uri\":\"" + u + "\"}";
+  }
+  const std::string path = dir + "/scene.gltf";
+  WriteText(path, "{\"asset\":{\"version\":\"2.0\"},\"buffers\":[" + buffers + "],\"images\":[" + images +
+                      "],\"materials\":[{\"name\":\"m\",\"pbrMetallicRoughness\":{\"roughnessFactor\":0.4}}]}");
+  const Scene s = LoadScene(path);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].roughness_max, 0.4);
+  std::filesystem::remove(huge);
+}
+
+// Binary glTF: the JSON chunk is read, the BIN chunk never; a truncated or
+// foreign container is refused in one line.
+TEST(SceneTest, GlbReadsTheJsonChunk) {
+  const std::string dir = Scratch("glb");
+  const auto le32 = [](uint32_t v) {
+    std::string b(4, '\0');
+    for (int k = 0; k < 4; ++k) b[k] = char((v >> (8 * k)) & 0xff);
+    return b;
+  };
+  std::string json = "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"name\":\"g\"}]}";
+  while (json.size() % 4) json += ' ';
+  const std::string bin(64, '\x7f');
+  const std::string glb = "glTF" + le32(2) + le32(uint32_t(12 + 8 + json.size() + 8 + bin.size())) +
+                          le32(uint32_t(json.size())) + "JSON" + json + le32(uint32_t(bin.size())) +
+                          std::string("BIN\0", 4) + bin;
+  const std::string path = dir + "/scene.glb";
+  WriteText(path, glb);
+  const Scene s = LoadScene(path);
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].name, "g");
+  const BadScene bad[] = {{"glTF", "shorter than a GLB header"},
+                          {"glTX", "no GLB magic"},
+                          {"version", "GLB version 1, not 2"},
+                          {"cut", "the GLB lengths exceed the file"},
+                          {"type", "the first GLB chunk is not JSON"}};
+  for (const BadScene& c : bad) {
+    std::string b = glb;
+    const std::string what = c.text;
+    if (what == "glTF") b = b.substr(0, 10);
+    if (what == "glTX") b[3] = 'X';
+    if (what == "version") b.replace(4, 4, le32(1));
+    if (what == "cut") b = b.substr(0, 40);
+    if (what == "type") b.replace(16, 4, std::string("BIN\0", 4));
+    const std::string p = dir + "/bad_" + what + ".glb";
+    WriteText(p, b);
+    ExpectRejected(p, c);
+  }
 }
 
 // Seeded mutations of the example scenes: every load either succeeds with

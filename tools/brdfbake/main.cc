@@ -640,6 +640,18 @@ int RunPreset(const BakeOptions& opts) {
   std::vector<brdfbake::Image> images;
   tables.reserve(preset.tables.size());
   images.reserve(preset.tables.size());
+  // Every table's file must fit in memory once its bake is done: checked
+  // for all of them before the first bake.
+  int64_t all_values = 0;
+  size_t held = 0;
+  for (const brdfbake::PresetTable& pt : preset.tables) {
+    all_values += brdfbake::BakeOutputValues(pt.spec);
+    held += brdfbake::BakeOutputBytes(pt.spec);
+  }
+  for (const brdfbake::PresetTable& pt : preset.tables) {
+    brdfbake::CheckContainerMemory(pt.container, all_values, held,
+                                   dir + "/" + (pt.file.empty() ? preset.header_file : pt.file));
+  }
   for (const brdfbake::PresetTable& pt : preset.tables) {
     brdfbake::BakeSpec spec = pt.spec;
     spec.threads = opts.threads;
@@ -724,6 +736,10 @@ int RunBake(const BakeOptions& opts) {
   }
   brdfbake::CheckOutputPath(opts.output);
   if (shader) brdfbake::CheckOutputPath(ShaderPath(opts.output, lang));
+  if (container != brdfbake::Container::kExr || shader) {
+    brdfbake::CheckContainerMemory(container, brdfbake::BakeOutputValues(spec),
+                                   brdfbake::BakeOutputBytes(spec), opts.output);
+  }
   Progress progress;
   const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
   progress.Finish();
@@ -890,9 +906,15 @@ int RunEval(const EvalOptions& o) {
   }
   req.phi = o.phi_deg * kDegree;
   req.phi_o = o.phi_o_deg * kDegree;
-  std::ostringstream out;  // nothing is printed unless the whole sweep succeeds
+  // Nothing is printed unless the whole sweep succeeds. (Read and write:
+  // the buffer is copied to standard output from its get area.)
+  std::stringstream out;
   brdfbake::EvalCsv(req, out);
-  std::cout << out.str();
+  if (!out) {
+    // The stream sets badbit where memory runs out, and drops the rest.
+    Bad("eval: the CSV could not be held in memory; ask for fewer values (--count)");
+  }
+  std::cout << out.rdbuf();
   return 0;
 }
 
@@ -995,14 +1017,24 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   stability->add_option("--seed", stability_seed, "seed, in [0, 2^64 - 1]")->capture_default_str();
 
+  // Help and the version go to standard output, which must take them.
+  const auto exit_printed = [&](const CLI::Error& e) {
+    const int status = app.exit(e);
+    if (!FlushStdout()) {
+      std::fprintf(stderr, "brdfbake: error: cannot write to standard output: %s\n",
+                   std::strerror(errno ? errno : EIO));
+      return 1;
+    }
+    return status;
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
+    return exit_printed(e);
   } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
+    return exit_printed(e);
   } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
+    return exit_printed(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
     return 2;
@@ -1024,6 +1056,9 @@ int main(int argc, char** argv) {
     if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
     if (*stability) status = RunStabilityCommand(stability_samples, stability_seed);
     if (*eval) status = RunEval(eval_opts);
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "brdfbake: error: out of memory\n");
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(e.what()).c_str());
     return 1;

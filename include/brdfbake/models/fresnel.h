@@ -19,6 +19,13 @@ namespace brdfbake {
 
 enum class FresnelKind { kOne, kSchlick, kDielectric, kConductor };
 
+// The domain of the Fresnel parameters everywhere (ValidateFresnel in
+// model.h, the batch API): F0 in [0, 1]; a dielectric's eta and a
+// conductor's n in [kMinFresnelIndex, kMaxFresnelIndex]; a conductor's k in
+// [0, kMaxFresnelIndex]. Every value inside is evaluated finitely.
+constexpr double kMinFresnelIndex = 0.01;
+constexpr double kMaxFresnelIndex = 100;
+
 // Schlick's weight (1 - c)^5; the split-sum DFG tables use it as Fc.
 template <typename T>
 T SchlickWeight(T cos_theta) {
