@@ -147,6 +147,10 @@ int BakeSpec::EffectiveSamples() const {
   return 32;
 }
 
+namespace {
+int64_t TexelCount(const BakeSpec& spec);  // below
+}  // namespace
+
 void ValidateBakeSpec(const BakeSpec& spec) {
   const bool aniso = spec.Anisotropic();
   ModelParams params = spec.model;
@@ -237,6 +241,12 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     Bad("--threads must be in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores)");
   }
   if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance)) Bad("--tolerance must be a finite number >= 0");
+  // A table is one image of int width and height (a 3D or 4D table stacks
+  // its slices): at most 2^31 - 1 texels.
+  const int64_t texels = TexelCount(spec);
+  if (texels > int64_t(std::numeric_limits<int>::max())) {
+    Bad("--size: " + std::to_string(texels) + " texels exceed the 2147483647 a table holds");
+  }
 }
 
 namespace {

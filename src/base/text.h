@@ -25,6 +25,44 @@ inline std::string NumG9(double v) {
   return buf;
 }
 
+// `s` with every character that could rewrite a terminal or reorder the
+// text around it shown as an escape: the C0 controls and DEL as \n, \t, \r
+// or \xNN; in UTF-8, the C1 controls (U+0080 to U+009F) and the
+// bidirectional embeddings, overrides and isolates (U+202A to U+202E,
+// U+2066 to U+2069) as \u{NNNN}. Everything else is kept as it is.
+inline std::string Printable(const std::string& s) {
+  std::string out;
+  char buf[16];
+  for (size_t i = 0; i < s.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    const unsigned char c1 = i + 1 < s.size() ? static_cast<unsigned char>(s[i + 1]) : 0;
+    const unsigned char c2 = i + 2 < s.size() ? static_cast<unsigned char>(s[i + 2]) : 0;
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else if (c < 0x20 || c == 0x7f) {
+      std::snprintf(buf, sizeof(buf), "\\x%02x", c);
+      out += buf;
+    } else if (c == 0xc2 && c1 >= 0x80 && c1 <= 0x9f) {  // U+0080 to U+009F
+      std::snprintf(buf, sizeof(buf), "\\u{%04x}", c1);
+      out += buf;
+      i += 1;
+    } else if (c == 0xe2 && ((c1 == 0x80 && c2 >= 0xaa && c2 <= 0xae) ||
+                             (c1 == 0x81 && c2 >= 0xa6 && c2 <= 0xa9))) {
+      // U+202A to U+202E, U+2066 to U+2069
+      std::snprintf(buf, sizeof(buf), "\\u{%04x}", 0x2000 | ((c1 & 0x3f) << 6) | (c2 & 0x3f));
+      out += buf;
+      i += 2;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_SRC_BASE_TEXT_H_

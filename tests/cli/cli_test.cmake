@@ -84,6 +84,12 @@ expect_one_line_error(eval --masking none)
 expect_one_line_error(eval --model sel --quantity D)
 expect_one_line_error(eval --no-such-flag)
 expect_one_line_error(eval --model ellipsoid --theta-y 120)
+# Sizes whose texel count overflows a table's image (reported "8192x0").
+expect_one_line_error(bake --table E --model ggx-aniso --size 8192x8192x8192x8192 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
+run_tool(FALSE out err bake --table E --model ggx-aniso --size 8192x8192x8192x8192 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
+if(NOT err MATCHES "4503599627370496 texels exceed")
+  message(FATAL_ERROR "bake --size 8192x8192x8192x8192: unexpected error '${err}'")
+endif()
 # Fresnel parameters outside the domain (they gave NaN with exit 0).
 expect_one_line_error(eval --fresnel dielectric --eta 1e-300)
 expect_one_line_error(eval --fresnel conductor --n 1e-300,1,1 --k 0,0,0)

@@ -340,6 +340,18 @@ TEST(CliReliabilityTest, EvalCsvIsWholeOrAnError) {
   }
 }
 
+// Error lines show C1 controls and bidirectional overrides from the
+// command line as escapes, like the C0 controls.
+TEST(CliReliabilityTest, ErrorsEscapeC1AndBidiControls) {
+  const std::string dir = ScratchDir("bidi");
+  const ToolRun r = ExecuteShell(
+      "\"$BRDFBAKE\" eval --model \"$(printf 'x\\342\\200\\256y\\302\\205z\\033')\"", dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.err.find("\xe2\x80\xae"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("\xc2\x85"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("x\\u{202e}y\\u{0085}z\\x1b"), std::string::npos) << r.err;
+}
+
 TEST(CliReliabilityTest, FailedWritesToStdoutAreErrors) {
   const std::string dir = ScratchDir("stdout");
   const std::vector<std::string> commands = {

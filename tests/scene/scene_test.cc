@@ -347,6 +347,28 @@ TEST(SceneTest, GlbReadsTheJsonChunk) {
   }
 }
 
+// Material names with terminal controls (ESC, BEL, a newline), a C1
+// control (U+0085) and a bidirectional override (U+202E) are printed by
+// the plan as escapes, never raw.
+TEST(SceneTest, PlanPrintsControlCharactersAsEscapes) {
+  const std::string dir = Scratch("controls");
+  const std::string path = dir + "/names.toml";
+  WriteText(path,
+            "[[material]]\nname = \"a\\u001b[31mred\\u0007\"\nmodel = \"ggx\"\nroughness = 0.5\n"
+            "[[material]]\nname = \"b\\nc\\u0085d\\u202ee\"\nmodel = \"ggx\"\nroughness = 0.3\n");
+  const Scene scene = LoadScene(path);
+  ASSERT_EQ(scene.materials.size(), 2u);
+  const std::string text = PlanText(scene, PlanScene(scene));
+  for (size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    ASSERT_TRUE(c == '\n' || (c >= 0x20 && c != 0x7f)) << "raw control " << int(c) << " in\n" << text;
+  }
+  EXPECT_EQ(text.find("\xc2\x85"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\xe2\x80\xae"), std::string::npos) << text;
+  EXPECT_NE(text.find("a\\x1b[31mred\\x07"), std::string::npos) << text;
+  EXPECT_NE(text.find("b\\nc\\u{0085}d\\u{202e}e"), std::string::npos) << text;
+}
+
 // Seeded mutations of the example scenes: every load either succeeds with
 // valid materials or throws one line naming the file.
 TEST(SceneTest, FuzzedScenesNeverCrash) {

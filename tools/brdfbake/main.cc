@@ -26,6 +26,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/text.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
 #include "brdfbake/containers.h"
@@ -62,26 +63,8 @@ void ForceTargetOption(const std::string& target) {
 }
 
 // A message on one line: control characters (a newline inside an argument,
-// say) are shown as escapes.
-std::string OneLine(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (c == '\n') {
-      out += "\\n";
-    } else if (c == '\t') {
-      out += "\\t";
-    } else if (c == '\r') {
-      out += "\\r";
-    } else if (c < 0x20 || c == 0x7f) {
-      char buf[8];
-      std::snprintf(buf, sizeof(buf), "\\x%02x", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out;
-}
+// say), C1 controls and bidirectional overrides shown as escapes.
+std::string OneLine(const std::string& s) { return brdfbake::Printable(s); }
 
 double ParseNumber(const std::string& opt, const std::string& text) {
   errno = 0;
