@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace brdfbake {
 
@@ -50,12 +51,16 @@ class AtomicFile {
   // Writes `n` bytes at byte offset `offset` of the temporary.
   void WriteAt(const void* data, size_t n, size_t offset);
   void Append(const std::string& bytes);
-  // Flushes to disk, gives the temporary the old file's mode (or the
-  // umask's), renames it over the target. Throws on failure (the temporary
-  // is removed).
+  // Gives the temporary the old file's mode (or the umask's), flushes it
+  // to disk and closes it: everything of Commit() that can fail but the
+  // rename. Throws on failure (the temporary is removed).
+  void Prepare();
+  // Prepare(), then renames the temporary over the target.
   void Commit();
 
  private:
+  friend void CommitAll(const std::vector<AtomicFile*>& files);
+  void Rename();
   [[noreturn]] void Fail(const std::string& what);
   std::string path_;    // target as given, for messages
   std::string target_;  // where the rename goes (a symbolic link resolved)
@@ -63,8 +68,19 @@ class AtomicFile {
   int fd_ = -1;
   int slot_ = -1;  // signal-cleanup registry slot
   size_t size_ = 0;
+  bool prepared_ = false;
   bool committed_ = false;
 };
+
+// Commits a set of files together, all or nothing as far as a process can
+// make it: every file is prepared (flushed, closed) before any is renamed,
+// so a write or fsync error leaves every target as it was; then the renames
+// run back to back with the cleanup signals held, on this thread and (by
+// the handler waiting for them) on every other, so a signal leaves either
+// the whole old set or the whole new one. Only a rename failing part-way
+// (or SIGKILL in those microseconds) leaves a mixed set: the error then
+// names the targets already renamed.
+void CommitAll(const std::vector<AtomicFile*>& files);
 
 }  // namespace brdfbake
 

@@ -453,25 +453,18 @@ std::string LogLogSvg(const std::string& title, const std::string& x_label,
 
 namespace {
 
-// All or nothing: every file is written to its temporary first; only when
-// all are complete are they renamed, one after the other.
+// All or nothing: every file is written to its temporary first, and the
+// set is committed together (CommitAll).
 void WriteFiles(const std::vector<std::pair<std::string, std::string>>& files,
                 const std::string& dir) {
   std::vector<std::unique_ptr<AtomicFile>> out;
+  std::vector<AtomicFile*> set;
   for (const auto& f : files) {
     out.push_back(std::make_unique<AtomicFile>(dir + "/" + f.first));
     out.back()->Append(f.second);
+    set.push_back(out.back().get());
   }
-  std::string renamed;
-  for (size_t i = 0; i < out.size(); ++i) {
-    try {
-      out[i]->Commit();
-    } catch (const std::exception& e) {
-      throw std::runtime_error(std::string(e.what()) + (renamed.empty() ? "; no report file was written"
-                                                                         : "; written before the failure:" + renamed));
-    }
-    renamed += " " + files[i].first;
-  }
+  CommitAll(set);
 }
 
 void WriteCollapse(const Report& report, const std::string& dir) {

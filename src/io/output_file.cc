@@ -60,18 +60,47 @@ void Unregister(int slot) {
   g_slots[slot].used.store(false);
 }
 
-// Temporaries being created (between mkstemp and Register). The thread
-// creating one blocks the signals, but another thread (a oneTBB worker)
+// Sections the signal handler must not cut: a temporary being created
+// (between mkstemp and Register) and a set of renames (CommitAll). The
+// thread in one blocks the signals, but another thread (a oneTBB worker)
 // may take one meanwhile: its handler marks the process as dying, so that
-// no creation starts after that, and waits for those under way to finish
+// no section starts after that, and waits for those under way to finish
 // before it removes what is registered. (Each side writes its flag, then
 // reads the other's: one of them sees the other.)
-std::atomic<int> g_creating{0};
+std::atomic<int> g_critical{0};
 std::atomic<bool> g_dying{false};
+
+// Holds the cleanup signals on this thread and marks a critical section;
+// if the process is already dying, waits for the end instead.
+class Critical {
+ public:
+  Critical() {
+    sigset_t block;
+    sigemptyset(&block);
+    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&block, sig);
+    ::pthread_sigmask(SIG_BLOCK, &block, &old_);
+    g_critical.fetch_add(1);
+    if (g_dying.load()) {
+      // A handler on another thread is removing the temporaries and ending
+      // the process: start nothing more.
+      g_critical.fetch_sub(1);
+      for (;;) ::pause();
+    }
+  }
+  ~Critical() {
+    g_critical.fetch_sub(1);
+    ::pthread_sigmask(SIG_SETMASK, &old_, nullptr);
+  }
+  Critical(const Critical&) = delete;
+  Critical& operator=(const Critical&) = delete;
+
+ private:
+  sigset_t old_;
+};
 
 extern "C" void RemoveTemporariesAndDie(int sig) {
   g_dying.store(true);
-  while (g_creating.load() != 0) {
+  while (g_critical.load() != 0) {
   }
   for (Slot& s : g_slots) {
     if (s.used.load()) ::unlink(s.path);  // async-signal-safe
@@ -153,24 +182,9 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
   std::string tmpl = DirectoryOf(target_) + "/.brdfbake-XXXXXX";
   // Signals are held while the temporary is created and registered, so
   // none can leave it behind unregistered.
-  sigset_t block, old;
-  sigemptyset(&block);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&block, sig);
-  ::pthread_sigmask(SIG_BLOCK, &block, &old);
   int err = 0;
   {
-    struct Creating {
-      Creating() {
-        g_creating.fetch_add(1);
-        if (g_dying.load()) {
-          // A handler on another thread is removing the temporaries and
-          // ending the process: create nothing more.
-          g_creating.fetch_sub(1);
-          for (;;) ::pause();
-        }
-      }
-      ~Creating() { g_creating.fetch_sub(1); }
-    } creating;
+    const Critical critical;
     fd_ = ::mkstemp(tmpl.data());
     err = errno;
     if (fd_ >= 0) {
@@ -178,7 +192,6 @@ AtomicFile::AtomicFile(const std::string& path) : path_(path), target_(path) {
       slot_ = Register(tmp_);
     }
   }
-  ::pthread_sigmask(SIG_SETMASK, &old, nullptr);
   if (fd_ < 0) throw std::runtime_error("cannot write '" + path_ + "': " + std::strerror(err));
 }
 
@@ -224,7 +237,8 @@ void WriteFileAtomically(const std::string& path, const std::string& text) {
   f.Commit();
 }
 
-void AtomicFile::Commit() {
+void AtomicFile::Prepare() {
+  if (prepared_) return;
   if (fd_ < 0) Fail("the file is already closed");
   struct stat st;
   mode_t mode;
@@ -242,14 +256,36 @@ void AtomicFile::Commit() {
   if (::fsync(fd_) != 0) Fail(std::strerror(errno));
   const int fd = fd_;
   fd_ = -1;
-  if (::close(fd) != 0) {
-    fd_ = -1;
-    Fail(std::strerror(errno));
-  }
+  if (::close(fd) != 0) Fail(std::strerror(errno));
+  prepared_ = true;
+}
+
+void AtomicFile::Rename() {
   if (::rename(tmp_.c_str(), target_.c_str()) != 0) Fail(std::strerror(errno));
   committed_ = true;
   Unregister(slot_);
   slot_ = -1;
+}
+
+void AtomicFile::Commit() {
+  Prepare();
+  Rename();
+}
+
+void CommitAll(const std::vector<AtomicFile*>& files) {
+  for (AtomicFile* f : files) f->Prepare();
+  std::string renamed;
+  const Critical critical;
+  for (AtomicFile* f : files) {
+    try {
+      f->Rename();
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string(e.what()) +
+                               (renamed.empty() ? "; no file of the set was written"
+                                                : "; written before the failure:" + renamed));
+    }
+    renamed += " " + f->path();
+  }
 }
 
 }  // namespace brdfbake

@@ -47,23 +47,9 @@ void BeckmannSampleRows(const BatchModel& p, Sampler s, const float* const* in, 
                         size_t n) {
   const BeckmannConsts<DF> call(DF(), p.alpha_x, p.alpha_y, p.f0);
   const auto make = [](const auto* pv) { return BeckmannConsts<DF>(DF(), pv[0], pv[1], pv[2]); };
-  if (s == Sampler::kVisible) {
-    return VisibleRows<kP>(p,
-                           [&](auto d, const auto* pv, auto ox, auto oy, auto oz, auto u1, auto u2,
-                               auto* mx, auto* my, auto* mz) {
-                             WithConsts<kP>(call, make, pv, [&](const auto& c) {
-                               BeckmannSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
-                             });
-                           },
-                           in, out, n);
-  }
-  NdfSampleRows<kP>(p,
-                    [&](auto d, const auto* pv, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
-                      WithConsts<kP>(call, make, pv, [&](const auto& c) {
-                        BeckmannSampleNdf(d, c, u1, u2, mx, my, mz);
-                      });
-                    },
-                    in, out, n);
+  SampleRowsWith<kP>(
+      p, s, call, make, [](auto d, const auto& c, auto... v) { BeckmannSampleVisible(d, c, v...); },
+      [](auto d, const auto& c, auto... v) { BeckmannSampleNdf(d, c, v...); }, in, out, n);
 }
 
 void BeckmannEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {

@@ -54,23 +54,9 @@ void GgxSampleRows(const BatchModel& p, Sampler s, const float* const* in, float
                    size_t n) {
   const GgxSamplingConsts<DF> call(DF(), p.alpha_x, p.alpha_y);
   const auto make = [](const auto* pv) { return GgxSamplingConsts<DF>(DF(), pv[0], pv[1]); };
-  if (s == Sampler::kVisible) {
-    return VisibleRows<kP>(p,
-                           [&](auto d, const auto* pv, auto ox, auto oy, auto oz, auto u1, auto u2,
-                               auto* mx, auto* my, auto* mz) {
-                             WithConsts<kP>(call, make, pv, [&](const auto& c) {
-                               GgxSampleVisible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
-                             });
-                           },
-                           in, out, n);
-  }
-  NdfSampleRows<kP>(p,
-                    [&](auto d, const auto* pv, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
-                      WithConsts<kP>(call, make, pv, [&](const auto& c) {
-                        GgxSampleNdf(d, c, u1, u2, mx, my, mz);
-                      });
-                    },
-                    in, out, n);
+  SampleRowsWith<kP>(
+      p, s, call, make, [](auto d, const auto& c, auto... v) { GgxSampleVisible(d, c, v...); },
+      [](auto d, const auto& c, auto... v) { GgxSampleNdf(d, c, v...); }, in, out, n);
 }
 
 void GgxEval(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n) {

@@ -184,6 +184,32 @@ HWY_INLINE void NdfSampleRows(const BatchModel& p, const K& k, const float* cons
   });
 }
 
+// A model's two samplers over its constants (made once per call, or per
+// vector from the per-element parameters; see WithConsts):
+// visible(d, c, wo_x, wo_y, wo_z, u1, u2, &m_x, &m_y, &m_z) and
+// ndf(d, c, u1, u2, &m_x, &m_y, &m_z).
+template <int kP, class C, class Make, class Visible, class Ndf>
+HWY_INLINE void SampleRowsWith(const BatchModel& p, Sampler s, const C& call, const Make& make,
+                               const Visible& visible, const Ndf& ndf, const float* const* in,
+                               float* const* out, size_t n) {
+  if (s == Sampler::kVisible) {
+    return VisibleRows<kP>(p,
+                           [&](auto d, const auto* pv, auto ox, auto oy, auto oz, auto u1, auto u2,
+                               auto* mx, auto* my, auto* mz) {
+                             WithConsts<kP>(call, make, pv, [&](const auto& c) {
+                               visible(d, c, ox, oy, oz, u1, u2, mx, my, mz);
+                             });
+                           },
+                           in, out, n);
+  }
+  NdfSampleRows<kP>(p,
+                    [&](auto d, const auto* pv, auto u1, auto u2, auto* mx, auto* my, auto* mz) {
+                      WithConsts<kP>(call, make, pv,
+                                     [&](const auto& c) { ndf(d, c, u1, u2, mx, my, mz); });
+                    },
+                    in, out, n);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
 HWY_AFTER_NAMESPACE();

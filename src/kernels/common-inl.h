@@ -70,6 +70,27 @@ struct SchlickFresnel {
   }
 };
 
+// The width terms of the GGX and Beckmann constants from per-element
+// widths, one per lane: alpha clamped below at 1e-4, alpha^2, 1 / alpha^2
+// and 1 / (pi ax ay), with two divisions per vector (1 / ax, 1 / ay); they
+// round in the lanes' type, a little apart from the per-call constants.
+template <class D>
+struct WidthLanes {
+  hn::Vec<D> ax, ay, ax2, ay2, inv_ax2, inv_ay2, inv_pi_axay;
+  WidthLanes(D d, hn::Vec<D> ax_, hn::Vec<D> ay_) {
+    using T = hn::TFromD<D>;
+    const hn::Vec<D> one = hn::Set(d, T(1)), lo = hn::Set(d, T(1e-4));
+    ax = hn::Max(ax_, lo);
+    ay = hn::Max(ay_, lo);
+    ax2 = hn::Mul(ax, ax);
+    ay2 = hn::Mul(ay, ay);
+    const hn::Vec<D> inv_ax = hn::Div(one, ax), inv_ay = hn::Div(one, ay);
+    inv_ax2 = hn::Mul(inv_ax, inv_ax);
+    inv_ay2 = hn::Mul(inv_ay, inv_ay);
+    inv_pi_axay = hn::Mul(hn::Set(d, T(0.31830988618379067)), hn::Mul(inv_ax, inv_ay));
+  }
+};
+
 // Calls f(separable) with separable a std::true_type or std::false_type, so
 // that a kernel's `if (separable)` is resolved at compile time and the loop
 // around it has no branch (GCC does not unswitch these loops by itself once

@@ -52,19 +52,14 @@ struct GgxConsts {
     inv_pi_axay = hn::Set(d, static_cast<T>(0.31830988618379067 / (double(ax) * ay)));
     f0 = hn::Set(d, f0_);
   }
-  // Per-element widths and F0, one per lane (alpha clamped the same way;
-  // 1 / (pi ax ay) rounds once more than the per-call constant).
+  // Per-element widths and F0, one per lane (WidthLanes).
   GgxConsts(D d, hn::Vec<D> ax, hn::Vec<D> ay, hn::Vec<D> f0_) {
-    const hn::Vec<D> one = hn::Set(d, T(1)), lo = hn::Set(d, T(1e-4));
-    ax = hn::Max(ax, lo);
-    ay = hn::Max(ay, lo);
-    ax2 = hn::Mul(ax, ax);
-    ay2 = hn::Mul(ay, ay);
-    // Two divisions per vector: 1 / alpha^2 and 1 / (pi ax ay) from 1 / ax, 1 / ay.
-    const hn::Vec<D> inv_ax = hn::Div(one, ax), inv_ay = hn::Div(one, ay);
-    inv_ax2 = hn::Mul(inv_ax, inv_ax);
-    inv_ay2 = hn::Mul(inv_ay, inv_ay);
-    inv_pi_axay = hn::Mul(hn::Set(d, T(0.31830988618379067)), hn::Mul(inv_ax, inv_ay));
+    const WidthLanes<D> w(d, ax, ay);
+    ax2 = w.ax2;
+    ay2 = w.ay2;
+    inv_ax2 = w.inv_ax2;
+    inv_ay2 = w.inv_ay2;
+    inv_pi_axay = w.inv_pi_axay;
     f0 = f0_;
   }
 };

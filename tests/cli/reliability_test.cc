@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <random>
 #include <string>
 #include <thread>
@@ -159,6 +160,29 @@ TEST(OutputFileTest, SignalsRemoveTheTemporary) {
   }
 }
 
+// Forks a child that installs the temporary cleanup, starts an idle second
+// thread (which does not block the signals) and runs `work` forever; kills
+// it with `sig` after `delay_us` and returns its wait status.
+template <class Work>
+int KillWorkingChild(const Work& work, int sig, unsigned delay_us) {
+  const pid_t pid = ::fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    InstallTemporaryCleanup();
+    std::thread idle([] {
+      for (;;) ::pause();
+    });
+    idle.detach();
+    work();
+    ::_exit(0);  // not reached
+  }
+  ::usleep(delay_us);
+  ::kill(pid, sig);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
+}
+
 // A signal sent to the process lands on any thread that does not block it:
 // on a second thread while the main thread creates a temporary (with the
 // signals blocked there), the handler waits for the creation to finish and
@@ -169,22 +193,11 @@ TEST(OutputFileTest, SignalsOnAnotherThreadRemoveTheTemporary) {
   int left = 0;
   for (int run = 0; run < 400; ++run) {
     const std::string dir = ScratchDir("thread_signal" + std::to_string(run));
-    const pid_t pid = ::fork();
-    ASSERT_GE(pid, 0);
-    if (pid == 0) {
-      InstallTemporaryCleanup();
-      std::thread idle([] {
-        for (;;) ::pause();
-      });
-      idle.detach();
-      for (;;) {
-        AtomicFile f(dir + "/out.exr");
-      }
-    }
-    ::usleep(1000 + rng() % 3000);
-    ::kill(pid, SIGTERM);
-    int status = 0;
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    const int status = KillWorkingChild(
+        [&] {
+          for (;;) AtomicFile f(dir + "/out.exr");
+        },
+        SIGTERM, 1000 + rng() % 3000);
     EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM) << status;
     left += Listing(dir).empty() ? 0 : 1;
   }
@@ -206,6 +219,51 @@ TEST(CliReliabilityTest, FileSizeLimitIsAnErrorWithoutLeftovers) {
       EXPECT_TRUE(f == "stdout" || f == "stderr") << out << ": " << f << " left behind";
     }
   }
+}
+
+// A set of four files committed together (CommitAll, as report writes
+// its files), killed at random times while a second thread idles: every
+// run leaves one whole set, the old one or the new one, and no temporary.
+// Each generation writes its number into all four files.
+TEST(OutputFileTest, SetsAreWholeUnderRandomSignals) {
+  std::mt19937 rng(11);
+  const char* names[4] = {"report.csv", "report.svg", "interpolation.csv", "interpolation.svg"};
+  int mixed = 0, runs_with_sets = 0;
+  for (int run = 0; run < 300; ++run) {
+    const std::string dir = ScratchDir("set_signal" + std::to_string(run));
+    const int sig = rng() % 2 ? SIGTERM : SIGINT;
+    const int status = KillWorkingChild(
+        [&] {
+          for (int generation = 0;; ++generation) {
+            std::vector<std::unique_ptr<AtomicFile>> files;
+            std::vector<AtomicFile*> set;
+            for (const char* name : names) {
+              files.push_back(std::make_unique<AtomicFile>(dir + "/" + name));
+              files.back()->Append(std::to_string(generation));
+              set.push_back(files.back().get());
+            }
+            CommitAll(set);
+          }
+        },
+        sig, 3000 + rng() % 40000);
+    ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == sig) << status;
+    std::vector<std::string> seen;
+    for (const std::string& f : Listing(dir)) {
+      ASSERT_NE(f.rfind(".brdfbake-", 0), 0u) << "temporary left: " << f;
+    }
+    for (const char* name : names) {
+      if (std::filesystem::exists(dir + "/" + name)) seen.push_back(test::Slurp(dir + "/" + name));
+    }
+    if (seen.empty()) continue;  // killed before the first set
+    ++runs_with_sets;
+    bool whole = seen.size() == 4;
+    for (const std::string& v : seen) whole &= v == seen[0];
+    mixed += whole ? 0 : 1;
+  }
+  std::printf("300 runs killed at random times: %d left a set, %d of them mixed\n", runs_with_sets,
+              mixed);
+  EXPECT_EQ(mixed, 0);
+  EXPECT_GT(runs_with_sets, 150);
 }
 
 TEST(OutputFileTest, ReportFilesAreAllOrNothing) {
