@@ -1068,7 +1068,16 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
       t.channels.push_back({name, meanings[c], Definition(meanings[c]), {}, {}, {}});
     }
-    if (spec.error_channel) t.channels.push_back({"error", "error", Definition("error"), {}, {}, {}});
+    if (spec.error_channel) {
+      // In the table's layer when it has one (dfg., sel.): a reader that
+      // lists channels layer by layer (OpenImageIO puts unlayered channels
+      // first) then sees the order of brdfbake.channel_order.
+      const std::string n = std::to_string(meanings.size());
+      const std::string name = spec.table == TableKind::kDfg ? "dfg." + n + "_error"
+                               : sel                         ? "sel." + n + "_error"
+                                                             : "error";
+      t.channels.push_back({name, "error", Definition("error"), {}, {}, {}});
+    }
     for (Channel& c : t.channels) {
       c.values.resize(size_t(total));
       c.stored.resize(size_t(total));

@@ -617,10 +617,11 @@ TEST(HeaderTest, ChannelsSortIntoTheirOrderAndDescribeThemselves) {
   EXPECT_EQ(c.channels[0].first, "dfg.0_scale");
   EXPECT_EQ(c.channels[1].first, "dfg.1_bias");
   EXPECT_EQ(c.channels[2].first, "dfg.2_1-E");
-  EXPECT_EQ(c.channels[3].first, "error");
+  EXPECT_EQ(c.channels[3].first, "dfg.3_error");
   const auto order = nlohmann::json::parse(c.Attribute("brdfbake.channel_order"));
   for (size_t i = 0; i < 4; ++i) EXPECT_EQ(order[i], c.channels[i].first);
   const auto channels = nlohmann::json::parse(c.Attribute("brdfbake.channels"));
+  EXPECT_EQ(channels["dfg.3_error"], "error");
   EXPECT_EQ(channels["dfg.0_scale"], "dfg.scale");
   EXPECT_EQ(channels["dfg.1_bias"], "dfg.bias");
   EXPECT_EQ(channels["dfg.2_1-E"], "1-E");
@@ -651,6 +652,35 @@ TEST(HeaderTest, ChannelsSortIntoTheirOrderAndDescribeThemselves) {
           EXPECT_EQ(e.channels[1].first, "error");
         }
       }
+    }
+  }
+}
+
+// OpenImageIO lists the channels of a table with an error channel in the
+// order of brdfbake.channel_order (it lists unlayered channels first: an
+// unlayered `error` came before the dfg layer).
+TEST(HeaderTest, OpenImageIoListsChannelsInTheirOrder) {
+  if (std::system("command -v iinfo >/dev/null 2>&1") != 0) GTEST_SKIP() << "no iinfo";
+  const std::string dir = ScratchDir("oiio_order");
+  for (const bool complement : {false, true}) {
+    for (const TableKind k : {TableKind::kDfg, TableKind::kE}) {
+      BakeSpec spec;
+      spec.table = k;
+      spec.mu.size = spec.roughness.size = 4;
+      spec.error_channel = true;
+      spec.complement = complement;
+      const std::string path = dir + "/t.exr";
+      WriteExr(Bake(spec), path);
+      const auto order = nlohmann::json::parse(ReadExr(path).Attribute("brdfbake.channel_order"));
+      ASSERT_EQ(std::system(("iinfo -v " + path + " > " + dir + "/info.txt 2>&1").c_str()), 0);
+      const std::string info = test::Slurp(dir + "/info.txt");
+      // "    channel list: dfg.0_scale, dfg.1_bias, dfg.2_error"
+      const size_t at = info.find("channel list: ");
+      ASSERT_NE(at, std::string::npos) << info;
+      const std::string list = info.substr(at + 14, info.find('\n', at) - at - 14);
+      std::string want;
+      for (const auto& name : order) want += (want.empty() ? "" : ", ") + name.get<std::string>();
+      EXPECT_EQ(list, want) << TableName(k) << (complement ? " complement" : "");
     }
   }
 }
