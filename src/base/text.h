@@ -8,6 +8,7 @@
 
 #include <cctype>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 namespace brdfbake {
@@ -22,6 +23,18 @@ inline std::string Lowercase(std::string s) {
 inline std::string NumG9(double v) {
   char buf[40];
   std::snprintf(buf, sizeof(buf), "%.9g", v);
+  return buf;
+}
+
+// The shortest "%g" text that reads back as exactly v (up to 17 digits):
+// 0.25 as "0.25", 1 + 2^-52 as "1.0000000000000002", so that a message
+// never shows a value outside a range as one inside it.
+inline std::string ExactText(double v) {
+  char buf[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof(buf), "%.*g", digits, v);
+    if (std::strtod(buf, nullptr) == v) break;
+  }
   return buf;
 }
 

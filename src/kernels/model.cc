@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.h"
+#include "base/text.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/models/ggx.h"
@@ -22,7 +23,7 @@ namespace {
 void CheckAlpha(const char* name, double a) {
   if (!std::isfinite(a) || !(a > 0) || a > kMaxAlpha) {
     std::ostringstream os;
-    os << name << " must lie in (0, " << kMaxAlpha << "] (got " << a << ")";
+    os << name << " must lie in (0, " << kMaxAlpha << "] (got " << ExactText(a) << ")";
     Bad(os.str());
   }
 }
@@ -30,7 +31,7 @@ void CheckAlpha(const char* name, double a) {
 void CheckAngle(const char* name, double t) {
   if (!std::isfinite(t) || std::abs(t) > 1.5707963267948966) {
     std::ostringstream os;
-    os << name << " must be finite and within [-pi/2, pi/2] radians (got " << t << ")";
+    os << name << " must be finite and within [-pi/2, pi/2] radians (got " << ExactText(t) << ")";
     Bad(os.str());
   }
 }
@@ -208,7 +209,7 @@ void ValidateModelParams(const ModelParams& p) {
   if (p.kind == ModelKind::kStudentT) {
     if (std::isnan(p.gamma) || !(p.gamma > 1.5)) {
       std::ostringstream os;
-      os << "gamma must be > 1.5 or inf (got " << p.gamma << ")";
+      os << "gamma must be > 1.5 or inf (got " << ExactText(p.gamma) << ")";
       Bad(os.str());
     }
   }
@@ -225,7 +226,7 @@ void ValidateFresnel(const Fresnel& f) {
     std::ostringstream os;
     os << "Fresnel " << name;
     if (channel >= 0) os << "[" << channel << "]";
-    os << " = " << v << " is outside [" << lo << ", " << hi << "]";
+    os << " = " << ExactText(v) << " is outside [" << lo << ", " << hi << "]";
     Bad(os.str());
   };
   for (int c = 0; c < 3; ++c) {

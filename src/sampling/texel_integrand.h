@@ -125,11 +125,12 @@ inline TexelEstimate FromTwo(const QuadratureResult& fine, const QuadratureResul
 // grazing limit; E is continuous there).
 inline constexpr double kMuMin = 1e-7;
 
-// Mirror (alpha below the clamp): h = n, E = 1, Fc = (1 - mu)^5.
+// Mirror (alpha below the clamp): h = n, E = 1, Fc = (1 - mu)^5, with
+// mu = 0 evaluated at kMuMin like every other texel.
 inline TexelEstimate MirrorTexel(double mu) {
   TexelEstimate v;
   v.e = 1;
-  v.bias = SchlickWeight(mu);
+  v.bias = SchlickWeight(std::max(mu, kMuMin));
   v.scale = 1 - v.bias;
   return v;
 }

@@ -79,7 +79,7 @@ struct Fields {
     } else {
       Fail(f, "expected a number");
     }
-    if (!(v >= lo && v <= hi)) Fail(f, Num(v) + " is outside [" + Num(lo) + ", " + Num(hi) + "]");
+    if (!(v >= lo && v <= hi)) Fail(f, ExactText(v) + " is outside [" + Num(lo) + ", " + Num(hi) + "]");
     return v;
   }
   bool Bool(const std::string& f, bool fallback) const {
@@ -129,7 +129,9 @@ Scene LoadToml(const std::string& path) {
     if (!e->is_table()) Bad(path + ": 'engine' must be a table ([engine])");
     const Fields f{*e->as_table(), path + ": [engine]"};
     f.OnlyKnown({"max_lut_size", "pixel", "placement", "error_target", "complement", "tables", "header", "shaders"});
-    s.engine.max_lut_size = int(f.Number("max_lut_size", 64, 2, 8192));
+    const double lut = f.Number("max_lut_size", 64, 2, 8192);
+    if (lut != std::floor(lut)) f.Fail("max_lut_size", ExactText(lut) + " is not an integer");
+    s.engine.max_lut_size = int(lut);
     const std::string pixel = f.String("pixel", "half");
     if (pixel != "half" && pixel != "float") f.Fail("pixel", "'" + pixel + "' is not half or float");
     s.engine.pixel = pixel == "half" ? PixelType::kHalf : PixelType::kFloat;
@@ -351,7 +353,7 @@ Scene LoadGltf(const std::string& path) {
       }
     }
     if (!(factor >= 0 && factor <= 1)) {
-      Bad(where + ": field 'pbrMetallicRoughness.roughnessFactor': " + Num(factor) + " is outside [0, 1]");
+      Bad(where + ": field 'pbrMetallicRoughness.roughnessFactor': " + ExactText(factor) + " is outside [0, 1]");
     }
     // A metallic-roughness texture multiplies the factor: any roughness in [0, factor].
     mat.roughness_min = textured ? 0.0 : factor;
@@ -368,7 +370,7 @@ Scene LoadGltf(const std::string& path) {
       if (name_ext == "KHR_materials_anisotropy") {
         const double strength = number(ext, "anisotropyStrength", "KHR_materials_anisotropy.anisotropyStrength", 0.0);
         if (!(strength >= 0 && strength <= 1)) {
-          Bad(where + ": field 'KHR_materials_anisotropy.anisotropyStrength': " + Num(strength) + " is outside [0, 1]");
+          Bad(where + ": field 'KHR_materials_anisotropy.anisotropyStrength': " + ExactText(strength) + " is outside [0, 1]");
         }
         if (strength > 0) {
           mat.model = ModelKind::kGgxAniso;

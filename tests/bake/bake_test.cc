@@ -128,6 +128,23 @@ TEST(BakeTest, DfgSumsToE) {
   }
 }
 
+// The mirror texel at mu = 0, r = 0 is evaluated at mu = 1e-7 like every
+// grazing texel, as the header says: (1 - (1 - 1e-7)^5, (1 - 1e-7)^5), not
+// the limit (0, 1); and it agrees with the texel integrated alone.
+TEST(BakeTest, MirrorTexelAtGrazingIsEvaluatedAtMuMin) {
+  BakeSpec spec;
+  spec.table = TableKind::kDfg;
+  spec.mu.size = spec.roughness.size = 4;  // edges: the first texel is mu = 0, r = 0
+  const Table t = Bake(spec);
+  const double fc = std::pow(1 - 1e-7, 5);
+  EXPECT_NEAR(t.channels[0].values[0], 1 - fc, 1e-15);  // 5e-7, against 0 before
+  EXPECT_NEAR(t.channels[1].values[0], fc, 1e-15);
+  const TexelEstimate alone = IntegrateTexel(spec, 0.0, 0.0);
+  EXPECT_EQ(t.channels[0].values[0], alone.scale);
+  EXPECT_EQ(t.channels[1].values[0], alone.bias);
+  EXPECT_NE(t.channels[0].values[0], 0.0);
+}
+
 // Every integrator's claimed maximum error bounds its true error against a
 // converged quadrature.
 TEST(BakeTest, ErrorClaimsBoundTheTrueError) {

@@ -18,7 +18,9 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -66,23 +68,76 @@ void ForceTargetOption(const std::string& target) {
 // say), C1 controls and bidirectional overrides shown as escapes.
 std::string OneLine(const std::string& s) { return brdfbake::Printable(s); }
 
-double ParseNumber(const std::string& opt, const std::string& text) {
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || std::isnan(v)) {
-    Bad(opt + ": '" + text + "' is not a number");
+// One strict grammar for every number on the command line: a decimal
+// number (optional sign, digits, optional fraction and exponent; no hex, no
+// "nan", no empty string, nothing after it), or a decimal integer for the
+// integer options. Messages quote the value as given.
+bool IsDecimalNumber(const std::string& t) {
+  size_t i = 0;
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  size_t digits = 0;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++digits;
   }
+  if (digits == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    size_t exp_digits = 0;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, ++exp_digits;
+    if (exp_digits == 0) return false;
+  }
+  return i == t.size();
+}
+
+bool IsDecimalInteger(const std::string& t) {
+  size_t i = (!t.empty() && (t[0] == '+' || t[0] == '-')) ? 1 : 0;
+  if (i == t.size()) return false;
+  for (; i < t.size(); ++i) {
+    if (!std::isdigit(static_cast<unsigned char>(t[i]))) return false;
+  }
+  return true;
+}
+
+double ParseNumber(const std::string& opt, const std::string& text) {
+  if (!IsDecimalNumber(text)) Bad(opt + ": '" + text + "' is not a decimal number");
+  errno = 0;
+  const double v = std::strtod(text.c_str(), nullptr);
+  // Underflow gives a subnormal or 0, which the option's range then judges.
+  if (std::isinf(v)) Bad(opt + ": '" + text + "' is beyond the largest double");
   return v;
 }
 
-// A seed: a decimal integer in [0, 2^64 - 1], nothing else.
+// A number, or "inf" (the gamma of std, the end of a gamma range).
+double ParseNumberOrInf(const std::string& opt, const std::string& text) {
+  if (text == "inf") return std::numeric_limits<double>::infinity();
+  return ParseNumber(opt, text);
+}
+
+// CLI11 checks of the numeric options, run on the text before conversion.
+const CLI::Validator kNumber(
+    [](std::string& t) -> std::string {
+      return IsDecimalNumber(t) ? "" : "'" + t + "' is not a decimal number";
+    },
+    "NUMBER");
+const CLI::Validator kInteger(
+    [](std::string& t) -> std::string {
+      return IsDecimalInteger(t) ? "" : "'" + t + "' is not a decimal integer";
+    },
+    "INTEGER");
+
 uint64_t ParseSeed(const std::string& opt, const std::string& text) {
-  bool digits = !text.empty() && text.size() <= 20;
+  bool digits = !text.empty();
   for (char c : text) digits &= c >= '0' && c <= '9';
+  // Leading zeros do not count towards the 20 digits of 2^64 - 1.
+  const size_t first = text.find_first_not_of('0');
+  const std::string significant = first == std::string::npos ? "0" : text.substr(first);
   errno = 0;
-  const unsigned long long v = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
-  if (!digits || errno == ERANGE) {
+  const unsigned long long v =
+      digits && significant.size() <= 20 ? std::strtoull(significant.c_str(), nullptr, 10) : 0;
+  if (!digits || significant.size() > 20 || errno == ERANGE) {
     Bad(opt + ": '" + text + "' is not an integer in [0, 18446744073709551615]");
   }
   return v;
@@ -133,15 +188,21 @@ struct ModelOptions {
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ellipsoid | sel, or ggx-aniso (E, E_avg only)")
         ->capture_default_str();
-    app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25");
-    app->add_option("--alpha-x", alpha_x, "alpha along the tangent");
-    app->add_option("--alpha-y", alpha_y, "alpha along the bitangent");
+    app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25")
+        ->check(kNumber);
+    app->add_option("--alpha-x", alpha_x, "alpha along the tangent")
+        ->check(kNumber);
+    app->add_option("--alpha-y", alpha_y, "alpha along the bitangent")
+        ->check(kNumber);
     app->add_option("--roughness,-r", roughness, "perceptual roughness r, alpha = r^2 (both axes)");
     app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]; 'inf' is Beckmann")
         ->capture_default_str();
-    app->add_option("--theta-x", theta_x_deg, "ellipsoid/sel: rotation about x, degrees");
-    app->add_option("--theta-y", theta_y_deg, "ellipsoid/sel: rotation about y, degrees");
-    app->add_option("--theta-z", theta_z_deg, "ellipsoid/sel: rotation about z, degrees");
+    app->add_option("--theta-x", theta_x_deg, "ellipsoid/sel: rotation about x, degrees")
+        ->check(kNumber);
+    app->add_option("--theta-y", theta_y_deg, "ellipsoid/sel: rotation about y, degrees")
+        ->check(kNumber);
+    app->add_option("--theta-z", theta_z_deg, "ellipsoid/sel: rotation about z, degrees")
+        ->check(kNumber);
   }
 
   brdfbake::ModelParams Get() const {
@@ -165,7 +226,7 @@ struct ModelOptions {
     }
     p.alpha_x = alpha_x.empty() ? a : ParseNumber("--alpha-x", alpha_x);
     p.alpha_y = alpha_y.empty() ? a : ParseNumber("--alpha-y", alpha_y);
-    p.gamma = ParseNumber("--gamma", gamma);
+    p.gamma = ParseNumberOrInf("--gamma", gamma);
     p.theta_x = theta_x_deg * kDegree;
     p.theta_y = theta_y_deg * kDegree;
     p.theta_z = theta_z_deg * kDegree;
@@ -306,26 +367,34 @@ struct BakeOptions {
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
     app->add_option("--threads", threads, "worker threads, at most 1024; 0 = all cores")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(kInteger);
     app->add_option("--seed", seed, "seed of the randomized integrators, in [0, 2^64 - 1]")
         ->capture_default_str();
     if (for_report) {
       app->add_option("-o,--output", output, "output directory (created if missing)")->required();
       return;
     }
-    app->add_option("--alpha-x", alpha_x, "ellipsoid: width along x")->capture_default_str();
-    app->add_option("--alpha-y", alpha_y, "ellipsoid: width along y")->capture_default_str();
-    app->add_option("--theta-x", theta_x_deg, "ellipsoid: rotation about x, degrees");
-    app->add_option("--theta-y", theta_y_deg, "ellipsoid: rotation about y, degrees");
-    app->add_option("--theta-z", theta_z_deg, "ellipsoid: rotation about z, degrees");
+    app->add_option("--alpha-x", alpha_x, "ellipsoid: width along x")->capture_default_str()
+        ->check(kNumber);
+    app->add_option("--alpha-y", alpha_y, "ellipsoid: width along y")->capture_default_str()
+        ->check(kNumber);
+    app->add_option("--theta-x", theta_x_deg, "ellipsoid: rotation about x, degrees")
+        ->check(kNumber);
+    app->add_option("--theta-y", theta_y_deg, "ellipsoid: rotation about y, degrees")
+        ->check(kNumber);
+    app->add_option("--theta-z", theta_z_deg, "ellipsoid: rotation about z, degrees")
+        ->check(kNumber);
     app->add_option("--integrator", integrator, "quadrature | qmc | mc | engine")->capture_default_str();
-    app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default");
+    app->add_option("--samples", samples, "max nodes per dimension (quadrature) or samples per texel; 0 = default")
+        ->check(kInteger);
     app->add_option("--target", target,
                     "the SIMD target of the integrand (AVX3, AVX2, SSE4, SSSE3, SCALAR, best), "
                     "or scalar for the double scalar reference")
         ->capture_default_str();
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(kNumber);
     app->add_option("--pixel", pixel, "float | half | unorm16 (dds only)")->capture_default_str();
     app->add_flag("--complement", complement,
                   "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
@@ -347,7 +416,7 @@ struct BakeOptions {
     if (Given(app, "--gamma") && spec.model.kind != brdfbake::ModelKind::kStudentT) {
       Bad("--gamma: model " + model + " has no gamma (only std does)");
     }
-    spec.model.gamma = ParseNumber("--gamma", gamma);
+    spec.model.gamma = ParseNumberOrInf("--gamma", gamma);
     spec.masking = ParseMasking(masking);
     spec.integrator = brdfbake::ParseIntegrator(integrator);
     if (Given(app, "--tolerance") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
@@ -522,8 +591,8 @@ struct BakeOptions {
       per_axis("--range", range, false, [](brdfbake::Axis* a, const std::string& v) {
         const size_t colon = v.find(':');
         if (colon == std::string::npos) Bad("--range: expected " + a->name + "=min:max, got '" + v + "'");
-        a->min = ParseNumber("--range", v.substr(0, colon));
-        a->max = ParseNumber("--range", v.substr(colon + 1));
+        a->min = ParseNumberOrInf("--range", v.substr(0, colon));
+        a->max = ParseNumberOrInf("--range", v.substr(colon + 1));
       });
     }
     if (output.empty()) Bad("-o: an output file is required");
@@ -818,24 +887,34 @@ struct EvalOptions {
     eval->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
     eval->add_option("--sweep", sweep, "mu (cos theta), theta (degrees), roughness or none")
         ->capture_default_str();
-    eval->add_option("--from", req.from, "first value of the sweep")->capture_default_str();
-    eval->add_option("--to", req.to, "last value of the sweep")->capture_default_str();
-    eval->add_option("--count,-n", req.count, "number of samples")->capture_default_str();
-    eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str();
+    eval->add_option("--from", req.from, "first value of the sweep")->capture_default_str()
+        ->check(kNumber);
+    eval->add_option("--to", req.to, "last value of the sweep")->capture_default_str()
+        ->check(kNumber);
+    eval->add_option("--count,-n", req.count, "number of samples")->capture_default_str()
+        ->check(kInteger);
+    eval->add_option("--phi", phi_deg, "azimuth of the swept direction, degrees")->capture_default_str()
+        ->check(kNumber);
     eval->add_option("--mu-o", req.mu_o, "cos(theta) of the view wo (G2, brdf, pdf, E, dfg)")
-        ->capture_default_str();
-    eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str();
+        ->capture_default_str()
+        ->check(kNumber);
+    eval->add_option("--phi-o", phi_o_deg, "azimuth of the view wo, degrees")->capture_default_str()
+        ->check(kNumber);
     eval->add_option("--anisotropy", req.anisotropy,
                      "ggx-aniso: KHR_materials_anisotropy strength s in [0, 1] (alpha_t = "
                      "mix(r^2, 1, s^2), alpha_b = r^2)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(kNumber);
     eval->add_option("--grid", grid_kind,
                      "evaluate a grid to EXR instead of a sweep: slice (theta_h x theta_d BRDF), "
                      "hemisphere (f cos over wi for the view --mu-o/--phi-o), g1 (mu x roughness)");
-    eval->add_option("--width", grid_w, "grid width")->capture_default_str();
-    eval->add_option("--height", grid_h, "grid height")->capture_default_str();
+    eval->add_option("--width", grid_w, "grid width")->capture_default_str()
+        ->check(kInteger);
+    eval->add_option("--height", grid_h, "grid height")->capture_default_str()
+        ->check(kInteger);
     eval->add_option("--threads", grid_threads, "grid: worker threads, at most 1024; 0 = all cores")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(kInteger);
     eval->add_option("-o,--output", grid_out, "grid: output .exr file");
     eval->add_option("--target", target, "force a SIMD target (AVX3, AVX2, SSE4, SSSE3, SCALAR, or best)")
         ->capture_default_str();
@@ -978,10 +1057,12 @@ int main(int argc, char** argv) {
   report_opts.Add(report, true);
   int repeats = 3;
   double reference_tolerance = 1e-11;
-  report->add_option("--repeats", repeats, "timing: median of this many bakes")->capture_default_str();
+  report->add_option("--repeats", repeats, "timing: median of this many bakes")->capture_default_str()
+        ->check(kInteger);
   report->add_option("--reference-tolerance", reference_tolerance,
                      "tolerance of the converged quadrature used as the reference")
-      ->capture_default_str();
+      ->capture_default_str()
+        ->check(kNumber);
 
   CLI::App* plan = app.add_subcommand(
       "plan", "What `bake SCENE -o DIR` would write: the minimal set of tables for a scene's materials, "
@@ -997,7 +1078,8 @@ int main(int argc, char** argv) {
   int stability_samples = 20000;
   std::string stability_seed = "1";
   stability->add_option("--samples", stability_samples, "samples per region and model")
-      ->capture_default_str();
+      ->capture_default_str()
+        ->check(kInteger);
   stability->add_option("--seed", stability_seed, "seed, in [0, 2^64 - 1]")->capture_default_str();
 
   // Help and the version go to standard output, which must take them.
