@@ -75,4 +75,17 @@ file(STRINGS ${WORK_DIR}/subdir/CMakeCache.txt tests REGEX "^BRDFBAKE_BUILD_TEST
 if(NOT tests STREQUAL "BRDFBAKE_BUILD_TESTS:BOOL=OFF")
   message(FATAL_ERROR "a subproject builds brdfbake's tests: ${tests}")
 endif()
+# brdfbake::core alone through add_subdirectory, configured with the
+# packages only the baker and the full library need made unfindable
+# (CMAKE_DISABLE_FIND_PACKAGE_<name>), then the mixed-material example
+# built and run (with the ggx family alone, to keep the build short).
+run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/core_only
+    -DBRDFBAKE_SOURCE_DIR=${SOURCE_DIR} -DBRDFBAKE_CORE_ONLY=ON -DBRDFBAKE_MODELS=ggx
+    -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_DISABLE_FIND_PACKAGE_TBB=ON -DCMAKE_DISABLE_FIND_PACKAGE_OpenEXR=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_Imath=ON -DCMAKE_DISABLE_FIND_PACKAGE_tomlplusplus=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_CLI11=ON -DCMAKE_DISABLE_FIND_PACKAGE_GTest=ON
+    -DCMAKE_DISABLE_FIND_PACKAGE_benchmark=ON)
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/core_only -j2 --target mixed_batch)
+run(${WORK_DIR}/core_only/mixed_batch)
 file(REMOVE_RECURSE ${WORK_DIR})
