@@ -135,8 +135,10 @@ void SampleBatch(const BatchModel& model, const BatchElements& elements, Sampler
 //   weight[j] = f(wi, wo) wi.z / pdf, the sample's estimate of the albedo
 //               (F G2 / G1(wo) for ggx, beckmann and the ellipsoid),
 //               0 where wi is on or below the horizon.
-// For wo.z <= 0: wi = 0, weight = 0, pdf = 0. Models with a visible-normal
-// sampler (BatchSupports(kind, Sampler::kVisible)).
+// For wo.z <= 0: wi = 0, weight = 0, pdf = 0; where the sampled normal's
+// density underflows float (Beckmann's far tail, u at the ends of [0, 1]),
+// pdf = 0 and weight = 0: no sample. Models with a visible-normal sampler
+// (BatchSupports(kind, Sampler::kVisible)).
 struct LightSampleArrays {
   float* x;
   float* y;

@@ -56,14 +56,6 @@ inline Materials MixedMaterials(size_t n, uint64_t seed) {
   return m;
 }
 
-inline std::vector<float> Uniforms(size_t n, uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<float> uni(0.0f, 1.0f);
-  std::vector<float> u(n);
-  for (float& x : u) x = uni(rng);
-  return u;
-}
-
 // The message of the std::invalid_argument `f` throws, or "".
 template <class F>
 std::string ErrorOf(const F& f) {
@@ -106,8 +98,8 @@ void CheckElementsAgainstOneCallPerMaterial() {
   const size_t lanes = hwy::HWY_NAMESPACE::Lanes(hwy::HWY_NAMESPACE::ScalableTag<float>());
   const size_t max_n = 2 * lanes + 3, len = std::max<size_t>(max_n + 8, 200);
   const test::Dirs a = test::RandomDirs(len, 51), b = test::RandomDirs(len, 52);
-  const std::vector<float> u1 = batch_api_test::Uniforms(len, 53),
-                           u2 = batch_api_test::Uniforms(len, 54);
+  const std::vector<float> u1 = test::RandomUniforms(len, 53),
+                           u2 = test::RandomUniforms(len, 54);
   const batch_api_test::Materials mat = batch_api_test::MixedMaterials(len, 55);
   const float* in[11] = {a.x.data(), a.y.data(), a.z.data(), b.x.data(),  b.y.data(),  b.z.data(),
                          u1.data(),  u2.data(),  mat.ax.data(), mat.ay.data(), mat.f0.data()};
@@ -222,8 +214,8 @@ void CheckLightSamplerAgainstReference() {
   const size_t max_n = 2 * lanes + 3, len = 600;  // more than one chunk of 256
   // Views in both hemispheres: one in seven below the horizon.
   const test::Dirs wo = test::RandomDirs(len, 61, 7);
-  const std::vector<float> u1 = batch_api_test::Uniforms(len, 62),
-                           u2 = batch_api_test::Uniforms(len, 63);
+  const std::vector<float> u1 = test::RandomUniforms(len, 62),
+                           u2 = test::RandomUniforms(len, 63);
   const batch_api_test::Materials mat = batch_api_test::MixedMaterials(len, 64);
   const float* in[11] = {wo.x.data(), wo.y.data(), wo.z.data(), wo.x.data(), wo.y.data(),
                          wo.z.data(), u1.data(),   u2.data(),   mat.ax.data(), mat.ay.data(),
@@ -263,6 +255,7 @@ void CheckLightSamplerAgainstReference() {
                          {x.data(), y.data(), z.data(), weight.data(), pdf.data()}, len);
       }
       double worst_pdf = 0, worst_weight = 0;
+      int underflows = 0;
       for (size_t j = 0; j < len; ++j) {
         const Vec3<double> o = batch_api_test::ToDouble(wo.x[j], wo.y[j], wo.z[j]);
         const Vec3<double> wi = batch_api_test::ToDouble(x[j], y[j], z[j]);
@@ -275,8 +268,15 @@ void CheckLightSamplerAgainstReference() {
         }
         ASSERT_TRUE(std::isfinite(weight[j]) && std::isfinite(pdf[j])) << j;
         ASSERT_GE(weight[j], 0.0f);
-        ASSERT_GT(pdf[j], 0.0f);
+        ASSERT_GE(pdf[j], 0.0f);
         ASSERT_NEAR(Length(wi), 1.0, 1e-5) << j;
+        if (pdf[j] == 0.0f) {
+          // A normal from the far tail (u at the ends of [0, 1]) whose
+          // density underflows float: no sample, weight 0.
+          EXPECT_EQ(weight[j], 0.0f) << j;
+          ++underflows;
+          continue;
+        }
         ModelParams mp;
         mp.kind = kind;
         mp.alpha_x = per_element ? mat.ax[j] : p.alpha_x;
@@ -287,8 +287,10 @@ void CheckLightSamplerAgainstReference() {
         const std::unique_ptr<Model> ref = MakeModel(mp);
         const Vec3<double> h = Normalize(wi + o);
         const double oh = Dot(o, h);
-        // The direction is the reflection of wo about its normal.
-        ASSERT_NEAR(Dot(wi, h), oh, 2e-5) << j;
+        // The direction is the reflection of wo about its normal (the half
+        // vector rebuilt from wi + wo, of length 2 wo.m, carries wi's float
+        // rounding divided by that length).
+        ASSERT_NEAR(Dot(wi, h), oh, 2e-5 + 2e-7 / oh) << j;
         const double pdf_ref = ref->Pdf(o, h) / (4 * oh);
         const double f0 = per_element ? mat.f0[j] : p.f0;
         const double f = ref->Brdf(wi, o, Fresnel::Schlick({f0, f0, f0}), p.masking, 0);
@@ -297,7 +299,14 @@ void CheckLightSamplerAgainstReference() {
         // alpha) that rounding moves the half vector by about 1e-7 / alpha^2
         // in the density's units, and grazing wo.h amplifies it further.
         const double narrow = std::min(mp.alpha_x, mp.alpha_y);
-        const double bound = narrow >= 0.05 && oh >= 1e-2 ? 2e-5 : 1e-2;
+        // Beckmann's and STD's exponential tails amplify every rounding by
+        // the squared standard slope r2 of h (their kernel bound is
+        // 1e-6 + 3e-7 r2; here with wi's rounding too).
+        const double r2 = kind == ModelKind::kBeckmann || kind == ModelKind::kStudentT
+                              ? (h.x * h.x / (mp.alpha_x * mp.alpha_x) +
+                                 h.y * h.y / (mp.alpha_y * mp.alpha_y)) / (h.z * h.z)
+                              : 0.0;
+        const double bound = narrow >= 0.05 && oh >= 1e-2 ? 2e-5 + 3e-6 * r2 : 1e-2;
         const double e_pdf = test::RelErr(pdf[j], pdf_ref);
         const double e_weight = std::abs(weight[j] - weight_ref) / std::max(weight_ref, 1e-3);
         if (bound < 1e-3) {
@@ -307,10 +316,11 @@ void CheckLightSamplerAgainstReference() {
         ASSERT_LE(e_pdf, bound) << j << " pdf " << pdf[j] << " against " << pdf_ref;
         ASSERT_LE(e_weight, bound) << j << " weight " << weight[j] << " against " << weight_ref;
       }
+      EXPECT_LE(underflows, 4);  // the ends of u only
       std::printf("%s %s%s: light pdf within %.2g, weight within %.2g of the double reference "
-                  "(alpha >= 0.05)\n",
+                  "(alpha >= 0.05); %d densities underflow\n",
                   hwy::TargetName(HWY_TARGET), ModelName(kind), per_element ? " per element" : "",
-                  worst_pdf, worst_weight);
+                  worst_pdf, worst_weight, underflows);
     }
   }
 }
