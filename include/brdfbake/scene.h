@@ -74,6 +74,11 @@ struct ScenePlan {
 // candidate tried.
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress = nullptr);
 
+// The files a bake of `scene` writes into `dir` (each table's EXR, its
+// header and shader files, the manifest): known before the plan, so that
+// they can be checked (CheckOutputPath) before its work.
+std::vector<std::string> SceneOutputFiles(const Scene& scene, const std::string& dir);
+
 // What `plan` prints.
 std::string PlanText(const Scene& scene, const ScenePlan& plan);
 

@@ -130,6 +130,15 @@ void CheckOutputPath(const std::string& path, const std::string& option) {
     if (::access(dir.c_str(), W_OK | X_OK) != 0) {
       Bad(option, "directory '" + dir + "' is not writable: " + std::strerror(errno));
     }
+    // The file is replaced by a rename, which a sticky directory (/tmp)
+    // allows only to the owner of the file or of the directory (or root).
+    struct stat dir_st;
+    const uid_t me = ::geteuid();
+    if (me != 0 && ::stat(dir.c_str(), &dir_st) == 0 && (dir_st.st_mode & S_ISVTX) &&
+        st.st_uid != me && dir_st.st_uid != me) {
+      Bad(option, "'" + path + "' belongs to another user in the sticky directory '" + dir +
+                      "': it cannot be replaced");
+    }
     return;
   }
   if (errno != ENOENT) Bad(option, "cannot write '" + path + "': " + std::strerror(errno));

@@ -496,6 +496,42 @@ double InterpolationError(const Table& t, int probes) {
   return *std::max_element(worst.begin(), worst.end());
 }
 
+namespace {
+
+// The EXR file of a planned table: the table and the material group.
+std::string TableFile(TableKind kind, const std::string& group) {
+  return std::string(TableName(kind)) + "_" + group + ".exr";
+}
+
+// Every file written for tables `table_files` into dir: each table's EXR,
+// its header and shader files as the engine asks, then the manifest.
+std::vector<std::string> FilesOf(const Scene& scene, const std::vector<std::string>& table_files,
+                                 const std::string& dir) {
+  std::vector<std::string> files;
+  for (const std::string& f : table_files) {
+    const std::string stem = f.substr(0, f.size() - 4);
+    files.push_back(dir + "/" + f);
+    if (scene.engine.header) files.push_back(dir + "/" + stem + ".h");
+    for (ShaderLanguage l : scene.engine.shaders) files.push_back(dir + "/" + stem + "." + ShaderLanguageName(l));
+  }
+  files.push_back(dir + "/manifest.json");
+  return files;
+}
+
+}  // namespace
+
+std::vector<std::string> SceneOutputFiles(const Scene& scene, const std::string& dir) {
+  std::set<std::string> groups;
+  for (const SceneMaterial& m : scene.materials) {
+    if (m.model != ModelKind::kGgxAniso) groups.insert(GroupKey(m));
+  }
+  std::vector<std::string> tables;
+  for (const std::string& g : groups) {
+    for (const TableKind kind : scene.engine.tables) tables.push_back(TableFile(kind, g));
+  }
+  return FilesOf(scene, tables, dir);
+}
+
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress) {
   ScenePlan plan;
   std::map<std::string, std::vector<const SceneMaterial*>> groups;
@@ -570,7 +606,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
         }
       }
       best.materials = names;
-      best.file = std::string(TableName(kind)) + "_" + g.first + ".exr";
+      best.file = TableFile(kind, g.first);
       best.why = "used by " + std::to_string(names.size()) + " material" + (names.size() > 1 ? "s" : "") +
                  " with model " + g.first + ", roughness " +
                  (one_r ? Num(rmin) : "[" + Num(rmin) + ", " + Num(rmax) + "]");
@@ -609,15 +645,11 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
 }
 
 std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& plan, const std::string& dir) {
-  std::vector<std::string> files;
-  auto stem = [](const std::string& f) { return f.substr(0, f.size() - 4); };
-  for (const PlannedTable& p : plan.tables) {
-    files.push_back(dir + "/" + p.file);
-    if (scene.engine.header) files.push_back(dir + "/" + stem(p.file) + ".h");
-    for (ShaderLanguage l : scene.engine.shaders) files.push_back(dir + "/" + stem(p.file) + "." + ShaderLanguageName(l));
-  }
-  files.push_back(dir + "/manifest.json");
+  std::vector<std::string> table_files;
+  for (const PlannedTable& p : plan.tables) table_files.push_back(p.file);
+  const std::vector<std::string> files = FilesOf(scene, table_files, dir);
   for (const std::string& f : files) CheckOutputPath(f);
+  auto stem = [](const std::string& f) { return f.substr(0, f.size() - 4); };
   nlohmann::json manifest;
   manifest["brdfbake"] = BRDFBAKE_VERSION;
   manifest["scene"] = scene.path;

@@ -86,6 +86,36 @@ TEST(OutputFileTest, RefusesDevicesDirectoriesAndMissingDirectories) {
   }
 }
 
+// A file of another user in a sticky directory (/tmp) is writable when its
+// mode is 0666, but only its owner (or the directory's) may rename over it:
+// refused before the work (it failed at the rename after the bake). As
+// root, checked from a child that becomes nobody.
+TEST(OutputFileTest, AnotherUsersFileInAStickyDirectoryIsRefused) {
+  if (::geteuid() != 0) GTEST_SKIP() << "needs root to make another user's file";
+  const std::string dir = ScratchDir("sticky");
+  ASSERT_EQ(::chmod(dir.c_str(), 01777), 0);
+  const std::string path = dir + "/root.exr";
+  WriteText(path, "x");
+  ASSERT_EQ(::chmod(path.c_str(), 0666), 0);
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (::setgid(65534) != 0 || ::setuid(65534) != 0) ::_exit(3);
+    try {
+      CheckOutputPath(path);
+    } catch (const std::invalid_argument& e) {
+      ::_exit(std::string(e.what()).find("belongs to another user") != std::string::npos ? 0 : 2);
+    }
+    ::_exit(1);  // accepted
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "1: accepted, 2: another message, 3: setuid failed";
+  // Root itself, and the owner, may replace it.
+  EXPECT_NO_THROW(CheckOutputPath(path));
+}
+
 TEST(OutputFileTest, ExtensionMustMatch) {
   EXPECT_NO_THROW(CheckOutputExtension("a/b.exr", ".exr", "bake"));
   EXPECT_NO_THROW(CheckOutputExtension("B.EXR", ".exr", "bake"));
@@ -331,6 +361,20 @@ TEST(CliReliabilityTest, DeviceTargetsAreRefusedBeforeTheBake) {
   ExpectOneLineError(r, "missing dir", "does not exist");
   EXPECT_EQ(r.err.find("tmp"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("brdfbake-"), std::string::npos) << r.err;
+}
+
+// A scene bake whose output directory holds a directory in the place of a
+// planned table is refused before the plan is worked out (it failed after
+// 20 s of planning): nothing printed, the error names the file.
+TEST(CliReliabilityTest, SceneOutputsAreCheckedBeforeThePlan) {
+  const std::string dir = ScratchDir("scene_out");
+  std::filesystem::create_directories(dir + "/out/E_ggx.exr");
+  const ToolRun r = Execute({"bake", std::string(BRDFBAKE_TEST_DATA) + "/../../examples/scene.toml",
+                             "-o", dir + "/out"},
+                            dir);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("E_ggx.exr' is a directory"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
 // A glTF scene naming a FIFO as a buffer and as an image: the tool never

@@ -140,6 +140,8 @@ TEST(SceneTest, BakeWritesThePlanAndAManifest) {
   const ScenePlan plan = PlanScene(s);
   const std::string dir = Scratch("bake");
   const std::vector<std::string> files = WriteScenePlan(s, plan, dir);
+  // The files are known before the plan, to be checked before its work.
+  EXPECT_EQ(SceneOutputFiles(s, dir), files);
   std::vector<std::string> listed;
   for (const auto& e : std::filesystem::directory_iterator(dir)) listed.push_back(e.path().filename().string());
   std::sort(listed.begin(), listed.end());

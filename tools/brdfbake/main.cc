@@ -753,7 +753,11 @@ int RunSceneBake(const BakeOptions& opts) {
   if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
   const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
   MakeOutputDirectory(opts.output);
-  brdfbake::CheckOutputPath(opts.output + "/manifest.json");
+  // Every output is checked before the plan's work (a directory in the
+  // place of a table failed only after the planning).
+  for (const std::string& f : brdfbake::SceneOutputFiles(scene, opts.output)) {
+    brdfbake::CheckOutputPath(f);
+  }
   const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
   const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
   std::printf("%s", brdfbake::PlanText(scene, plan).c_str());
