@@ -101,6 +101,11 @@ endif()
 foreach(zeros 0000000000000000000 000000000000000000000)
   run_tool(TRUE out err bake --table E --integrator qmc --size 2x2 --seed ${zeros}7 -o "${CMAKE_CURRENT_BINARY_DIR}/seed.exr")
 endforeach()
+# Options that do not apply are refused, not ignored.
+expect_one_line_error(eval --quantity D --width 64)
+expect_one_line_error(eval --quantity D --threads 2)
+expect_one_line_error(eval --quantity D -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
+expect_one_line_error(bake --table E --size 4x4 --seed 3 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
 # Sizes whose texel count overflows a table's image (reported "8192x0").
 expect_one_line_error(bake --table E --model ggx-aniso --size 8192x8192x8192x8192 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")
 run_tool(FALSE out err bake --table E --model ggx-aniso --size 8192x8192x8192x8192 -o "${CMAKE_CURRENT_BINARY_DIR}/never.exr")

@@ -441,6 +441,9 @@ struct BakeOptions {
     spec.samples = samples;
     spec.tolerance = tolerance;
     spec.seed = ParseSeed("--seed", seed);
+    if (Given(app, "--seed") && spec.integrator == brdfbake::IntegratorKind::kQuadrature) {
+      Bad("--seed applies to the qmc, mc and engine integrators (got --integrator " + integrator + ")");
+    }
     spec.complement = complement;
     spec.error_channel = error_channel;
     spec.threads = threads;
@@ -955,6 +958,13 @@ int RunGrid(const EvalOptions& o) {
 
 int RunEval(const EvalOptions& o) {
   if (!o.grid_kind.empty()) return RunGrid(o);
+  // The CSV goes to standard output: the grid's options do not apply.
+  for (const char* grid_only : {"--output", "--width", "--height", "--threads"}) {
+    if (Given(o.app, grid_only)) {
+      Bad(std::string(grid_only == std::string("--output") ? "-o" : grid_only) +
+          " applies to --grid only (eval prints its CSV to standard output)");
+    }
+  }
   if (o.target != "best") ForceTargetOption(o.target);
   EvalRequest req = o.req;
   req.model = o.model.Get();
