@@ -57,6 +57,9 @@ struct BatchModel {
 // needs one call per channel).
 BatchModel BatchModelOf(const ModelParams& model, Masking masking = Masking::kHeightCorrelated,
                         const Fresnel& fresnel = Fresnel::One());
+// The model parameters of a descriptor, in double (the inverse of
+// BatchModelOf for the model; masking and Fresnel are left out).
+ModelParams ModelParamsOf(const BatchModel& model);
 
 // What a batch call evaluates. The first five take one direction (or
 // normal), the rest a pair.

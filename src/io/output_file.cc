@@ -32,6 +32,10 @@ std::string DirectoryOf(const std::string& path) {
   return dir.empty() ? "." : dir;
 }
 
+// The signals whose handler removes the temporaries (and that are held
+// while one is created or a set renamed).
+constexpr int kCleanupSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+
 // Live temporaries, for the signal handler: fixed storage, no allocation.
 constexpr int kSlots = 16;
 struct Slot {
@@ -77,7 +81,7 @@ class Critical {
   Critical() {
     sigset_t block;
     sigemptyset(&block);
-    for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) sigaddset(&block, sig);
+    for (int sig : kCleanupSignals) sigaddset(&block, sig);
     ::pthread_sigmask(SIG_BLOCK, &block, &old_);
     g_critical.fetch_add(1);
     if (g_dying.load()) {
@@ -166,7 +170,7 @@ void InstallTemporaryCleanup() {
   std::memset(&sa, 0, sizeof(sa));
   sa.sa_handler = RemoveTemporariesAndDie;
   sigemptyset(&sa.sa_mask);
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) {
+  for (int sig : kCleanupSignals) {
     struct sigaction old;
     // Keep an inherited "ignore" (nohup, a shell's background job).
     if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler == SIG_IGN) continue;

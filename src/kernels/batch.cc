@@ -110,16 +110,8 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
         (model.kind == ModelKind::kGgxAniso ? " is a table model; give ggx with its two widths"
                                             : " is not in this build (BRDFBAKE_MODELS)"));
   }
-  ModelParams p;
-  p.kind = model.kind;
-  p.alpha_x = model.alpha_x;
-  p.alpha_y = model.alpha_y;
-  p.gamma = model.gamma;
-  p.theta_x = model.theta_x;
-  p.theta_y = model.theta_y;
-  p.theta_z = model.theta_z;
   try {
-    ValidateModelParams(p);
+    ValidateModelParams(ModelParamsOf(model));
   } catch (const std::invalid_argument& e) {
     Bad(std::string(entry) + ": " + e.what());
   }
@@ -285,6 +277,18 @@ BatchModel BatchModelOf(const ModelParams& model, Masking masking, const Fresnel
       p.k = float(fresnel.k[0]);
       break;
   }
+  return p;
+}
+
+ModelParams ModelParamsOf(const BatchModel& model) {
+  ModelParams p;
+  p.kind = model.kind;
+  p.alpha_x = model.alpha_x;
+  p.alpha_y = model.alpha_y;
+  p.gamma = model.gamma;
+  p.theta_x = model.theta_x;
+  p.theta_y = model.theta_y;
+  p.theta_z = model.theta_z;
   return p;
 }
 

@@ -277,13 +277,11 @@ void CheckLightSamplerAgainstReference() {
           ++underflows;
           continue;
         }
-        ModelParams mp;
-        mp.kind = kind;
-        mp.alpha_x = per_element ? mat.ax[j] : p.alpha_x;
-        mp.alpha_y = per_element ? mat.ay[j] : p.alpha_y;
-        mp.gamma = p.gamma;
-        mp.theta_x = p.theta_x;
-        mp.theta_z = p.theta_z;
+        ModelParams mp = ModelParamsOf(p);
+        if (per_element) {
+          mp.alpha_x = mat.ax[j];
+          mp.alpha_y = mat.ay[j];
+        }
         const std::unique_ptr<Model> ref = MakeModel(mp);
         const Vec3<double> h = Normalize(wi + o);
         const double oh = Dot(o, h);
@@ -538,14 +536,7 @@ TEST(BatchLightSamplerTest, DirectionsChiSquare) {
     BatchModel p = batch_api_test::ModelOf(v.kind);
     p.alpha_x = v.alpha_x;
     p.alpha_y = v.alpha_y;
-    ModelParams mp;
-    mp.kind = v.kind;
-    mp.alpha_x = p.alpha_x;
-    mp.alpha_y = p.alpha_y;
-    mp.gamma = p.gamma;
-    mp.theta_x = p.theta_x;
-    mp.theta_z = p.theta_z;
-    const std::unique_ptr<Model> ref = MakeModel(mp);
+    const std::unique_ptr<Model> ref = MakeModel(ModelParamsOf(p));
     const float ox = std::sqrt(1 - v.mu * v.mu) * 0.8f, oy = std::sqrt(1 - v.mu * v.mu) * 0.6f,
                 oz = v.mu;
     const Vec3<double> o{ox, oy, oz};
