@@ -13,17 +13,24 @@ case "$mode" in run|test) ;; *) echo "usage: sh tools/setup.sh run|test" >&2; ex
 cd "$(dirname "$0")/.."
 
 packages="build-essential cmake libhwy-dev libopenexr-dev libtbb-dev libboost-dev \
-libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libgtest-dev libbenchmark-dev"
+libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libzstd-dev libgtest-dev libbenchmark-dev"
 # The tests also read files back with OpenImageIO, compile the generated
-# shaders with glslang, run the GLSL lookups in headless Chromium and build
-# the installed package with pkg-config.
+# shaders with glslang, run the GLSL and WGSL lookups in headless Chromium
+# (WebGL2, and WebGPU on its SwiftShader Vulkan), import the three.js and
+# KTX2 files with node and the pinned readers of tests/js/package.json,
+# and build the installed package with pkg-config.
 if [ "$mode" = test ]; then
-  packages="$packages openimageio-tools glslang-tools chromium pkgconf"
+  packages="$packages openimageio-tools glslang-tools chromium libvulkan1 pkgconf"
 fi
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
+# node and npm from Debian, unless a node with npm is already installed
+# (another distribution of node would conflict with Debian's npm).
+if [ "$mode" = test ] && ! command -v npm >/dev/null 2>&1; then
+  missing="$missing nodejs npm"
+fi
 if [ -n "$missing" ]; then
   sudo=""
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
@@ -37,6 +44,8 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 
 if [ "$mode" = test ]; then
+  # The JS readers, at the versions package-lock.json pins.
+  npm ci --prefix tests/js --no-audit --no-fund --loglevel=error
   exec ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 

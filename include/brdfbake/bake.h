@@ -34,6 +34,10 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 enum class Warp { kLinear, kSquare, kSqrt, kTail };
 enum class Placement { kCenters, kEdges };
 
+// How a stored value is held: 32-bit float, IEEE half, or a 16-bit unsigned
+// normalized code (v = code / 65535).
+enum class PixelType { kFloat, kHalf, kUnorm16 };
+
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
 //   crossing located per line and the rule split there, refined along a
 //   ladder of node counts until two successive rules agree to a tolerance;

@@ -23,15 +23,17 @@ namespace brdfbake {
 enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kZero, kOne };
 const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "0", "1"
 
-enum class PixelType { kFloat, kHalf, kUnorm16 };
 const char* PixelTypeName(PixelType p);  // float, half, unorm16
 
-enum class Container { kExr, kHeader, kJs, kKtx2, kDds };
-const char* ContainerName(Container c);  // exr, header, js, ktx2, dds
+// kInc is the array body alone (comma-separated values after a comment), to
+// be #included inside an initializer: `const uint16_t lut[] = {\n#include
+// "dfg.inc"\n};` (Filament's form).
+enum class Container { kExr, kHeader, kJs, kKtx2, kDds, kInc };
+const char* ContainerName(Container c);  // exr, header, js, ktx2, dds, inc
 // Throws std::invalid_argument naming the bad value.
 Container ParseContainer(const std::string& s);
-// The container a file name's extension names (.exr, .h/.hpp/.inc, .js/.mjs,
-// .ktx2, .dds); throws std::invalid_argument for any other.
+// The container a file name's extension names (.exr, .h/.hpp, .inc,
+// .js/.mjs, .ktx2, .dds); throws std::invalid_argument for any other.
 Container ContainerFromPath(const std::string& path);
 
 struct ImageLayout {
@@ -49,6 +51,11 @@ struct ImageLayout {
 // The default layout of a table: x = mu, y = roughness, the table's own
 // channels (without `error`), its pixel type.
 ImageLayout DefaultLayout(const Table& table);
+// The same layout for loaders that know only R, G, B and A: the channels
+// renamed R, G, B, A in order and padded to four (B = 0, A = 1); their
+// meanings stay in the file's conventions. Throws std::invalid_argument
+// for more than four channels.
+ImageLayout RgbaLayout(const ImageLayout& layout);
 
 // A table arranged by a layout: interleaved, row-major, values as stored
 // (rounded to the pixel type) and their encoding.
@@ -91,8 +98,11 @@ size_t ContainerWriteBytes(Container container, int64_t values);
 void CheckContainerMemory(Container container, int64_t values, size_t held,
                           const std::string& path);
 
+// `ktx2_zstd_level` > 0 supercompresses a KTX2 file's level with
+// Zstandard at that level (scheme 2, as Bevy ships its dfg.ktx2).
 void WriteImage(const Table& table, const Image& image, Container container,
-                const std::string& path, const std::string& symbol, const std::string& preset);
+                const std::string& path, const std::string& symbol, const std::string& preset,
+                int ktx2_zstd_level = 0);
 
 // Several arrays in one C/C++ header (Cycles' E and E_avg, say).
 void WriteHeader(const std::vector<std::pair<const Table*, const Image*>>& arrays,

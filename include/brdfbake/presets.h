@@ -11,25 +11,67 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/containers.h"
+#include "brdfbake/shaders.h"
 
 namespace brdfbake {
 
-// Engine presets.
+// The form of a file that is an engine's own: the same name, symbols,
+// include or import form and API as the file the engine ships.
+enum class EngineForm {
+  kGeneric,              // brdfbake's container as it is
+  kThreeDfgModule,       // three.js src/renderers/shaders/DFGLUTData.js: export getDFGLUT()
+  kEnterprisePbrHeader,  // Enterprise PBR res/pbrlut.hpp: extern arrays, PBRLUT_IMPLEMENTATION
+};
+
 struct PresetTable {
   BakeSpec spec;
   ImageLayout layout;
   Container container = Container::kExr;
   std::string file;    // default file name
-  std::string symbol;  // array name (header, js)
+  std::string symbol;  // array name (header, js), and the shader lookup's brdfbake_<symbol>
+  EngineForm form = EngineForm::kGeneric;
+  int ktx2_zstd_level = 0;  // > 0: the KTX2 level supercompressed with Zstandard
+  // Other containers the engine loads this table from (bake --preset
+  // --format): the file keeps its stem and takes the container's extension.
+  std::vector<Container> also;
 };
+
 struct Preset {
   std::string name;
   std::string description;  // one line: what the engine ships and what differs
   std::vector<PresetTable> tables;
   std::string header_file;  // when non-empty, every table also goes into this one header
+  EngineForm header_form = EngineForm::kGeneric;
 };
+
 const std::vector<Preset>& Presets();
 const Preset& FindPreset(const std::string& name);  // throws std::invalid_argument
+
+// What a preset bake writes besides the tables themselves: a container the
+// engine also loads (empty: the preset's own), and shader lookups.
+struct PresetRun {
+  std::string dir = ".";
+  std::string format;
+  std::vector<ShaderLanguage> shaders;
+};
+
+// A file a preset bake writes: its path, the table it holds (-1 for the
+// shared header) and what it is ("dfg (bevy)", "glsl lookup of dfg").
+struct PresetFile {
+  std::string path;
+  int table = -1;
+  std::string what;
+};
+
+// The files `run` writes, in order, so that each can be checked before any
+// work. Throws std::invalid_argument for a --format no table of the engine
+// is loaded from.
+std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run);
+
+// Writes them (each through an AtomicFile) from the baked tables and their
+// arrangements, one per preset table.
+void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vector<Table>& tables,
+                      const std::vector<Image>& images);
 
 }  // namespace brdfbake
 

@@ -20,6 +20,7 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.h"
+#include "base/pixel.h"
 #include "brdfbake/version.h"
 #include "lanes/quadrature_simd.h"
 #include "quadrature/adaptive_rule.h"
@@ -927,18 +928,6 @@ int64_t TexelCount(const BakeSpec& spec) {
                                                   : int64_t(spec.mu.size) * spec.roughness.size);
 }
 
-// The pixel type's value nearest to v, and the next one towards zero.
-double RoundToPixel(double v, bool half) {
-  return half ? double(float(Imath::half(float(v)))) : double(float(v));
-}
-double PixelTowardsZero(double stored, bool half) {
-  if (stored <= 0) return 0;
-  if (!half) return double(std::nextafter(float(stored), 0.0f));
-  Imath::half h{float(stored)};
-  h.setBits(static_cast<uint16_t>(h.bits() - 1));
-  return double(float(h));
-}
-
 const char* Definition(const std::string& meaning) {
   if (meaning == "E") return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
   if (meaning == "1-E") return "1 - E(mu), computed in double before rounding";
@@ -1188,16 +1177,14 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   // Rounding to the pixel type, with dfg's scale + bias <= 1 kept in the
   // stored precision; the claim adds each texel's rounding to its error.
   const size_t nv = meanings.size();
+  const PixelType pixel = spec.half ? PixelType::kHalf : PixelType::kFloat;
   double claim = 0;
   for (int64_t i = 0; i < total; ++i) {
     double worst = 0;
     double stored[3];
-    for (size_t c = 0; c < nv; ++c) stored[c] = RoundToPixel(t.channels[c].values[i], spec.half);
+    for (size_t c = 0; c < nv; ++c) stored[c] = RoundToPixel(t.channels[c].values[i], pixel);
     if (spec.table == TableKind::kDfg) {
-      while (stored[0] + stored[1] > 1.0) {
-        const int c = stored[0] >= stored[1] ? 0 : 1;
-        stored[c] = PixelTowardsZero(stored[c], spec.half);
-      }
+      RoundScaleBias(t.channels[0].values[i], t.channels[1].values[i], pixel, &stored[0], &stored[1]);
     }
     for (size_t c = 0; c < nv; ++c) {
       t.channels[c].stored[i] = float(stored[c]);
@@ -1207,7 +1194,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   }
   if (spec.error_channel) {
     Channel& ce = t.channels.back();
-    for (int64_t i = 0; i < total; ++i) ce.stored[i] = float(RoundToPixel(ce.values[i], spec.half));
+    for (int64_t i = 0; i < total; ++i) ce.stored[i] = float(RoundToPixel(ce.values[i], pixel));
   }
   if (spec.half) {
     for (Channel& c : t.channels) {

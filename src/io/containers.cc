@@ -23,8 +23,10 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <nlohmann/json.hpp>
+#include <zstd.h>
 
 #include "base/error.h"
+#include "base/pixel.h"
 #include "base/text.h"
 #include "brdfbake/exr.h"
 #include "brdfbake/output_file.h"
@@ -165,7 +167,8 @@ std::string ArrayBody(const Image& im, bool half_bits, const char* float_suffix)
 // KTX 2.0 (Khronos KTX 2.0 specification, sections 3-4; the data format
 // descriptor is the Khronos Data Format basic block, one sample per
 // channel).
-std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, std::string>>& kv) {
+std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, std::string>>& kv,
+                      int zstd_level) {
   const bool half = im.pixel == PixelType::kHalf;
   if (im.pixel == PixelType::kUnorm16) Bad("--format ktx2: holds half or float pixels, not unorm16");
   const int nc = im.channels;
@@ -189,7 +192,7 @@ std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, 
   PutU32(&f, 0);  // layerCount
   PutU32(&f, 1);  // faceCount
   PutU32(&f, 1);  // levelCount
-  PutU32(&f, 0);  // supercompressionScheme: none
+  PutU32(&f, zstd_level > 0 ? 2 : 0);  // supercompressionScheme: none, or 2 = Zstandard
   const size_t index_at = f.size();
   f.append(32, '\0');  // dfd offset/length, kvd offset/length, sgd offset/length
   const size_t level_at = f.size();
@@ -227,19 +230,29 @@ std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, 
     while (f.size() % 4) f.push_back('\0');
   }
   const size_t kvd_len = f.size() - kvd_at;
-  // Level data aligned to lcm(texel block size, 4).
+  // Level data aligned to lcm(texel block size, 4); a supercompressed
+  // level needs no alignment.
   const size_t texel = bytes_per_channel * size_t(nc);
-  const size_t align = texel % 4 == 0 ? texel : (texel % 2 == 0 ? texel * 2 : texel * 4);
+  const size_t align = zstd_level > 0 ? 1 : texel % 4 == 0 ? texel : (texel % 2 == 0 ? texel * 2 : texel * 4);
   while (f.size() % align) f.push_back('\0');
   const size_t data_at = f.size();
   const std::string pixels = PixelBytes(im);
-  f += pixels;
+  std::string level = pixels;
+  if (zstd_level > 0) {
+    level.resize(ZSTD_compressBound(pixels.size()));
+    const size_t n = ZSTD_compress(level.data(), level.size(), pixels.data(), pixels.size(), zstd_level);
+    if (ZSTD_isError(n)) {
+      throw std::runtime_error(std::string("KTX2 zstd supercompression failed: ") + ZSTD_getErrorName(n));
+    }
+    level.resize(n);
+  }
+  f += level;
   SetU32(&f, index_at + 0, uint32_t(dfd_at));
   SetU32(&f, index_at + 4, uint32_t(dfd_len));
   SetU32(&f, index_at + 8, uint32_t(kvd_at));
   SetU32(&f, index_at + 12, uint32_t(kvd_len));
   SetU64(&f, level_at + 0, data_at);
-  SetU64(&f, level_at + 8, pixels.size());
+  SetU64(&f, level_at + 8, level.size());
   SetU64(&f, level_at + 16, pixels.size());
   return f;
 }
@@ -317,27 +330,29 @@ const char* ContainerName(Container c) {
     case Container::kJs: return "js";
     case Container::kKtx2: return "ktx2";
     case Container::kDds: return "dds";
+    case Container::kInc: return "inc";
   }
   return "exr";
 }
 
 Container ParseContainer(const std::string& s) {
   for (Container c : {Container::kExr, Container::kHeader, Container::kJs, Container::kKtx2,
-                      Container::kDds}) {
+                      Container::kDds, Container::kInc}) {
     if (s == ContainerName(c)) return c;
   }
-  Bad("--format: unknown format '" + s + "' (expected exr, header, js, ktx2 or dds)");
+  Bad("--format: unknown format '" + s + "' (expected exr, header, js, ktx2, dds or inc)");
 }
 
 Container ContainerFromPath(const std::string& path) {
   const std::string ext = Lowercase(std::filesystem::path(path).extension().string());
   if (ext == ".exr") return Container::kExr;
-  if (ext == ".h" || ext == ".hpp" || ext == ".inc") return Container::kHeader;
+  if (ext == ".h" || ext == ".hpp") return Container::kHeader;
+  if (ext == ".inc") return Container::kInc;
   if (ext == ".js" || ext == ".mjs") return Container::kJs;
   if (ext == ".ktx2") return Container::kKtx2;
   if (ext == ".dds") return Container::kDds;
   Bad("-o: '" + path + "' " + (ext.empty() ? "has no extension" : "names a " + ext + " file") +
-      "; bake writes .exr, .h/.hpp/.inc (header), .js/.mjs, .ktx2 or .dds");
+      "; bake writes .exr, .h/.hpp (header), .inc (array body), .js/.mjs, .ktx2 or .dds");
 }
 
 ImageLayout DefaultLayout(const Table& table) {
@@ -347,6 +362,18 @@ ImageLayout DefaultLayout(const Table& table) {
     l.channels.push_back({c.name, SourceOfMeaning(c.meaning)});
   }
   l.pixel = table.spec.half ? PixelType::kHalf : PixelType::kFloat;
+  return l;
+}
+
+ImageLayout RgbaLayout(const ImageLayout& layout) {
+  if (layout.channels.size() > 4) {
+    Bad("--channels rgba: the table has " + std::to_string(layout.channels.size()) +
+        " channels, more than R, G, B and A");
+  }
+  ImageLayout l = layout;
+  const char* names[] = {"R", "G", "B", "A"};
+  while (l.channels.size() < 4) l.channels.push_back({"", l.channels.size() == 3 ? Source::kOne : Source::kZero});
+  for (size_t c = 0; c < 4; ++c) l.channels[c].name = names[c];
   return l;
 }
 
@@ -380,31 +407,30 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
   const size_t n = size_t(im.width) * im.height * im.channels;
   im.values.resize(n);
   if (im.pixel != PixelType::kFloat) im.bits16.resize(n);
+  // Which channels hold dfg's scale and bias: rounded as a pair, as the
+  // table's own EXR rounds them (base/pixel.h).
+  int scale_c = -1, bias_c = -1;
+  for (int c = 0; c < im.channels; ++c) {
+    if (layout.channels[c].source == Source::kScale) scale_c = c;
+    if (layout.channels[c].source == Source::kBias) bias_c = c;
+  }
+  std::vector<double> raw(im.channels);
   for (int y = 0; y < im.height; ++y) {
     const int ty = im.flip_rows ? im.height - 1 - y : y;
     for (int x = 0; x < im.width; ++x) {
       const size_t src = transpose ? size_t(x) * t.width + ty : size_t(ty) * t.width + x;
+      const size_t dst = (size_t(y) * im.width + x) * im.channels;
       for (int c = 0; c < im.channels; ++c) {
-        const double v = reader.At(layout.channels[c].source, src);
-        const size_t dst = (size_t(y) * im.width + x) * im.channels + c;
-        switch (im.pixel) {
-          case PixelType::kFloat:
-            im.values[dst] = double(float(v));
-            break;
-          case PixelType::kHalf: {
-            const Imath::half h{float(v)};
-            im.bits16[dst] = h.bits();
-            im.values[dst] = double(float(h));
-            break;
-          }
-          case PixelType::kUnorm16: {
-            const uint16_t code = uint16_t(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
-            im.bits16[dst] = code;
-            im.values[dst] = code / 65535.0;
-            break;
-          }
-        }
-        rounding = std::max(rounding, std::abs(im.values[dst] - v));
+        raw[c] = reader.At(layout.channels[c].source, src);
+        im.values[dst + c] = RoundToPixel(raw[c], im.pixel);
+      }
+      if (scale_c >= 0 && bias_c >= 0) {
+        RoundScaleBias(raw[scale_c], raw[bias_c], im.pixel, &im.values[dst + scale_c],
+                       &im.values[dst + bias_c]);
+      }
+      for (int c = 0; c < im.channels; ++c) {
+        if (im.pixel != PixelType::kFloat) im.bits16[dst + c] = PixelCode(im.values[dst + c], im.pixel);
+        rounding = std::max(rounding, std::abs(im.values[dst + c] - raw[c]));
       }
     }
   }
@@ -488,6 +514,7 @@ size_t ContainerWriteBytes(Container container, int64_t values) {
       break;
     case Container::kHeader:
     case Container::kJs:
+    case Container::kInc:
       per_value += 3 * 24;  // up to 24 characters a value; the array, the file, their sum
       break;
     case Container::kKtx2:
@@ -519,7 +546,7 @@ void CheckContainerMemory(Container container, int64_t values, size_t held,
 }
 
 void WriteImage(const Table& table, const Image& im, Container container, const std::string& path,
-                const std::string& symbol, const std::string& preset) {
+                const std::string& symbol, const std::string& preset, int ktx2_zstd_level) {
   const auto conv = ImageConventions(table, im, preset);
   switch (container) {
     case Container::kExr: {
@@ -561,11 +588,25 @@ void WriteImage(const Table& table, const Image& im, Container container, const 
       return;
     }
     case Container::kKtx2:
-      WriteFileAtomically(path, Ktx2Bytes(im, conv));
+      WriteFileAtomically(path, Ktx2Bytes(im, conv, ktx2_zstd_level));
       return;
     case Container::kDds:
       WriteFileAtomically(path, DdsBytes(im));
       return;
+    case Container::kInc: {
+      // The conventions as a comment, then the values alone: the file is
+      // #included inside an array's initializer.
+      const bool half_bits = im.pixel != PixelType::kFloat;
+      std::string s = "// Generated by brdfbake " + std::string(BRDFBAKE_VERSION) +
+                      ". Do not edit: bake again instead.\n";
+      s += CommentBlock(conv, "/*", " * ", " */");
+      s += "// " + std::to_string(im.width) + " x " + std::to_string(im.height) + " texels x " +
+           std::to_string(im.channels) + " channels, row 0 first, " +
+           (half_bits ? std::string(PixelTypeName(im.pixel)) + " codes (uint16_t)" : "float") + "\n";
+      s += ArrayBody(im, half_bits, "f");
+      WriteFileAtomically(path, s);
+      return;
+    }
   }
 }
 

@@ -293,7 +293,9 @@ TEST(OutputFileTest, SetsAreWholeUnderRandomSignals) {
   std::printf("300 runs killed at random times: %d left a set, %d of them mixed\n", runs_with_sets,
               mixed);
   EXPECT_EQ(mixed, 0);
-  EXPECT_GT(runs_with_sets, 150);
+  // How many runs get past their first set depends on the machine's load
+  // (about half on an idle one): enough of them to mean something.
+  EXPECT_GT(runs_with_sets, 50);
 }
 
 TEST(OutputFileTest, ReportFilesAreAllOrNothing) {

@@ -99,9 +99,11 @@ constexpr double kHalfRel = 0x1p-10;  // half rounding (with the double-to-float
 
 TEST(PresetTest, Filament) {
   const Baked b = BakePreset(TableOf("filament"));
-  // x = NoV at centres; row 0 is r = 1 (flipped); R = bias, G = E, B = 0.
+  // x = NoV at centres; row 0 is the smooth end, r = 0.5 / 128 (cmgen
+  // writes file row y from image row H - 1 - y of CubemapIBL::DFG, whose
+  // row 0 is the rough end); R = bias, G = E, B = 0.
   CheckLayout(b.image, 128, 128, [](int x, int y) {
-    return std::pair{Centre(x, 128), 1.0 - Centre(y, 128)};
+    return std::pair{Centre(x, 128), Centre(y, 128)};
   }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0}; },
   kHalfRel, "filament");
 }
@@ -338,7 +340,7 @@ TEST(ContainerTest, HeaderAndModuleReadBack) {
   WriteImage(f.table, f.image, Container::kHeader, dir + "/dfg.h", "DFG_LUT", "filament");
   const std::string h = Slurp(dir + "/dfg.h");
   EXPECT_NE(h.find("brdfbake.preset: filament"), std::string::npos);
-  EXPECT_NE(h.find("row 0 = the LAST roughness entry"), std::string::npos);
+  EXPECT_NE(h.find("row 0 = the first roughness entry"), std::string::npos);
   EXPECT_NE(h.find("inline constexpr uint16_t DFG_LUT[49152]"), std::string::npos);
   const std::vector<double> bits = ArrayNumbers(h, "DFG_LUT");
   ASSERT_EQ(bits.size(), f.image.bits16.size());
@@ -370,6 +372,71 @@ TEST(ContainerTest, HeaderAndModuleReadBack) {
   const std::vector<double> jv = ArrayNumbers(js, "DFGLUTData");
   ASSERT_EQ(jv.size(), 512u);
   for (size_t i = 0; i < jv.size(); ++i) ASSERT_EQ(uint16_t(jv[i]), t.image.bits16[i]) << i;
+}
+
+// One rounding step serves every writer: a half dfg bake stores the same
+// numbers in its own EXR and in each container, and scale + bias <= 1
+// holds after each container's rounding, read back from the file.
+TEST(ContainerTest, OneRoundingInEveryContainer) {
+  BakeSpec spec;
+  spec.table = TableKind::kDfg;
+  spec.half = true;
+  spec.mu.size = spec.roughness.size = 64;
+  spec.mu.placement = spec.roughness.placement = Placement::kCenters;
+  const Table t = Bake(spec);
+  const std::string dir = Scratch("rounding");
+  WriteExr(t, dir + "/own.exr");
+  const ExrContents own = ReadExr(dir + "/own.exr");
+  const std::vector<float>& own_scale = *own.ChannelData("dfg.0_scale");
+  const std::vector<float>& own_bias = *own.ChannelData("dfg.1_bias");
+  const Image im = ArrangeTable(t, DefaultLayout(t));
+  ASSERT_EQ(im.channel_sources, (std::vector<std::string>{"dfg.scale", "dfg.bias"}));
+  size_t at_one = 0;
+  for (size_t i = 0; i < own_scale.size(); ++i) {
+    ASSERT_EQ(im.values[2 * i], double(own_scale[i])) << i;
+    ASSERT_EQ(im.values[2 * i + 1], double(own_bias[i])) << i;
+    ASSERT_LE(double(own_scale[i]) + double(own_bias[i]), 1.0) << i;
+    at_one += double(own_scale[i]) + double(own_bias[i]) == 1.0;
+  }
+  EXPECT_GT(at_one, 0u);  // the clamp is exercised: the smooth end reaches 1
+  auto check_codes = [&](const std::vector<uint16_t>& codes, const char* what) {
+    ASSERT_EQ(codes.size(), im.bits16.size()) << what;
+    for (size_t i = 0; i < codes.size(); i += 2) {
+      ASSERT_EQ(codes[i], im.bits16[i]) << what << " " << i;
+      Imath::half s, b;
+      s.setBits(codes[i]);
+      b.setBits(codes[i + 1]);
+      ASSERT_LE(double(float(s)) + double(float(b)), 1.0) << what << " " << i;
+    }
+  };
+  // Header and ES module: the half bits as text.
+  WriteImage(t, im, Container::kHeader, dir + "/t.h", "lut", "");
+  WriteImage(t, im, Container::kJs, dir + "/t.js", "lut", "");
+  for (const char* f : {"/t.h", "/t.js"}) {
+    std::vector<uint16_t> codes;
+    for (double v : ArrayNumbers(Slurp(dir + f), "lut")) codes.push_back(uint16_t(v));
+    check_codes(codes, f);
+  }
+  // KTX2 and DDS: the level's bytes.
+  WriteImage(t, im, Container::kKtx2, dir + "/t.ktx2", "lut", "");
+  WriteImage(t, im, Container::kDds, dir + "/t.dds", "lut", "");
+  const Ktx2 k = ReadKtx2(Slurp(dir + "/t.ktx2"));
+  const std::string dds = Slurp(dir + "/t.dds").substr(148);
+  for (const std::string* bytes : {&k.data, &dds}) {
+    std::vector<uint16_t> codes(bytes->size() / 2);
+    for (size_t i = 0; i < codes.size(); ++i) {
+      codes[i] = uint16_t(uint8_t((*bytes)[2 * i]) | (uint8_t((*bytes)[2 * i + 1]) << 8));
+    }
+    check_codes(codes, bytes == &dds ? "dds" : "ktx2");
+  }
+  // A float table arranged as halves (Bevy's) and as unorm16 codes
+  // (Unreal's) keeps the bound after its own rounding too.
+  for (const char* preset : {"bevy", "unreal", "three"}) {
+    const Baked p = BakePreset(TableOf(preset));
+    for (size_t i = 0; i < p.image.values.size(); i += 2) {
+      ASSERT_LE(p.image.values[i] + p.image.values[i + 1], 1.0) << preset << " " << i;
+    }
+  }
 }
 
 TEST(ContainerTest, ExrReadsBackWithOpenImageIo) {

@@ -29,8 +29,16 @@ double TextureBilinear(const At& at, int width, int height, double u, double v) 
 }
 
 // The texture coordinate (in [0, 1]) at which axis `a` holds the value p.
+// The tail warp (gamma) is log-linear in u = (gamma - 1.5) / (gamma - 0.5).
 inline double TextureCoordinate(const Axis& a, double p) {
-  double t = a.max > a.min ? std::clamp((p - a.min) / (a.max - a.min), 0.0, 1.0) : 0.5;
+  if (a.size == 1) return 0.5;
+  double t;
+  if (a.warp == Warp::kTail) {
+    auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
+    t = std::clamp((log_u(p) - log_u(a.min)) / (log_u(a.max) - log_u(a.min)), 0.0, 1.0);
+  } else {
+    t = a.max > a.min ? std::clamp((p - a.min) / (a.max - a.min), 0.0, 1.0) : 0.5;
+  }
   if (a.warp == Warp::kSquare) t = std::sqrt(t);
   if (a.warp == Warp::kSqrt) t = t * t;
   return a.placement == Placement::kCenters ? t : (t * (a.size - 1) + 0.5) / a.size;

@@ -328,7 +328,8 @@ std::vector<int> ParseSize(const std::string& text, size_t axes, const char* for
 struct BakeOptions {
   std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
-  std::string pixel = "float", output, seed = "1", preset, format, shader, scene;
+  std::string pixel = "float", output, seed = "1", preset, format, shader, scene, symbol;
+  std::string channels = "named";
   std::string target = "best";
   std::string alpha_x = "0.25", alpha_y = "0.25";  // ellipsoid
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
@@ -404,8 +405,19 @@ struct BakeOptions {
                     "directory, default .)");
     app->add_option("scene", scene, "a scene (.toml, .gltf, .glb): bake exactly the tables it needs into -o DIR");
     app->add_option("--preset", preset, "an engine's tables as its shader samples them: " + PresetNames());
-    app->add_option("--format", format, "exr | header | js | ktx2 | dds (default: from the extension)");
-    app->add_option("--shader", shader, "also write a glsl | hlsl | wgsl lookup function beside each table");
+    app->add_option("--format", format,
+                    "exr | header | inc | js | ktx2 | dds (default: from the extension; with --preset: a "
+                    "container the engine also loads)");
+    app->add_option("--shader", shader,
+                    "also write lookup functions beside each table: glsl, hlsl, wgsl, or several "
+                    "comma-separated");
+    app->add_option("--symbol", symbol,
+                    "the array's name in .h/.js files and the lookup's name (default "
+                    "brdfbake_<model>_<table>, e.g. brdfbake_ggx_E)");
+    app->add_option("--channels", channels,
+                    "named (E, dfg.scale, ...) | rgba: channels named R, G, B, A and padded to four "
+                    "(B = 0, A = 1) for loaders that know only those; the meanings stay in the header")
+        ->capture_default_str();
   }
 
   brdfbake::BakeSpec Get() const {
@@ -664,13 +676,49 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
 }
 
+// A table's default array and lookup name: brdfbake_<model>_<table>
+// (brdfbake_ggx_E, brdfbake_ggx_aniso_E_avg), so that two tables' headers
+// can be included together.
+std::string DefaultSymbol(const brdfbake::BakeSpec& spec) {
+  std::string s = std::string("brdfbake_") + spec.model.name() + "_" + brdfbake::TableName(spec.table);
+  for (char& c : s) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return s;
+}
+
+// --symbol must be an identifier in C, C++, JavaScript and the shading
+// languages: a letter or _, then letters, digits or _.
+void CheckSymbol(const std::string& s) {
+  bool ok = !s.empty() && s.size() <= 200 && !std::isdigit(static_cast<unsigned char>(s[0]));
+  for (char c : s) ok &= (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 128) || c == '_';
+  if (!ok) Bad("--symbol: '" + OneLine(s) + "' is not an identifier (a letter or _, then letters, digits or _)");
+  if (s.rfind("gl_", 0) == 0 || s.find("__") != std::string::npos) {
+    Bad("--symbol: '" + s + "' is reserved in GLSL (gl_ prefix or __)");
+  }
+}
+
+// The languages of --shader ("glsl,hlsl"), each once.
+std::vector<brdfbake::ShaderLanguage> ShaderLanguages(const std::string& list) {
+  std::vector<brdfbake::ShaderLanguage> langs;
+  if (list.empty()) return langs;
+  std::stringstream ss(list);
+  for (std::string item; std::getline(ss, item, ',');) {
+    const brdfbake::ShaderLanguage l = brdfbake::ParseShaderLanguage(item);
+    if (std::find(langs.begin(), langs.end(), l) != langs.end()) Bad("--shader: '" + item + "' is given twice");
+    langs.push_back(l);
+  }
+  if (list.back() == ',') Bad("--shader: an empty language after the last comma");
+  return langs;
+}
+
 int RunPreset(const BakeOptions& opts) {
   const brdfbake::Preset& preset = brdfbake::FindPreset(opts.preset);
   // A preset fixes the tables; only how they are computed and where they go
   // may be chosen.
   for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement",
-                        "--masking", "--pixel", "--complement", "--error-channel", "--format",
-                        "--integrator", "--samples", "--seed"}) {
+                        "--masking", "--pixel", "--complement", "--error-channel", "--integrator",
+                        "--samples", "--seed", "--symbol", "--channels"}) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
   }
   const std::string dir = opts.output.empty() ? "." : opts.output;
@@ -679,17 +727,13 @@ int RunPreset(const BakeOptions& opts) {
   if (!ext.empty() && !std::filesystem::is_directory(dir, ec)) {
     Bad("-o: with --preset, -o names a directory (got '" + dir + "'); the preset names its files");
   }
+  brdfbake::PresetRun run;
+  run.dir = dir;
+  run.format = opts.format;
+  run.shaders = ShaderLanguages(opts.shader);
+  const std::vector<brdfbake::PresetFile> files = brdfbake::PresetFiles(preset, run);
   MakeOutputDirectory(dir);
-  const bool shader = !opts.shader.empty();
-  const brdfbake::ShaderLanguage lang =
-      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
-  std::vector<std::string> files;
-  for (const brdfbake::PresetTable& t : preset.tables) {
-    if (!t.file.empty()) files.push_back(dir + "/" + t.file);
-    if (shader) files.push_back(dir + "/" + t.symbol + "." + brdfbake::ShaderLanguageName(lang));
-  }
-  if (!preset.header_file.empty()) files.push_back(dir + "/" + preset.header_file);
-  for (const std::string& f : files) brdfbake::CheckOutputPath(f);
+  for (const brdfbake::PresetFile& f : files) brdfbake::CheckOutputPath(f.path);
 
   std::vector<brdfbake::Table> tables;
   std::vector<brdfbake::Image> images;
@@ -703,9 +747,11 @@ int RunPreset(const BakeOptions& opts) {
     all_values += brdfbake::BakeOutputValues(pt.spec);
     held += brdfbake::BakeOutputBytes(pt.spec);
   }
-  for (const brdfbake::PresetTable& pt : preset.tables) {
-    brdfbake::CheckContainerMemory(pt.container, all_values, held,
-                                   dir + "/" + (pt.file.empty() ? preset.header_file : pt.file));
+  for (const brdfbake::PresetFile& f : files) {
+    if (f.what.find(" lookup of ") != std::string::npos) continue;
+    const brdfbake::Container c =
+        f.table < 0 ? brdfbake::Container::kHeader : brdfbake::ContainerFromPath(f.path);
+    brdfbake::CheckContainerMemory(c, all_values, held, f.path);
   }
   for (const brdfbake::PresetTable& pt : preset.tables) {
     brdfbake::BakeSpec spec = pt.spec;
@@ -717,32 +763,14 @@ int RunPreset(const BakeOptions& opts) {
     progress.Finish();
     images.push_back(brdfbake::ArrangeTable(tables.back(), pt.layout));
   }
-  std::vector<std::pair<const brdfbake::Table*, const brdfbake::Image*>> header_arrays;
-  std::vector<std::string> header_symbols;
-  for (size_t i = 0; i < preset.tables.size(); ++i) {
-    const brdfbake::PresetTable& pt = preset.tables[i];
-    const std::string what = std::string(brdfbake::TableName(pt.spec.table)) + " (" + preset.name + ")";
-    if (!pt.file.empty()) {
-      const std::string path = dir + "/" + pt.file;
-      brdfbake::WriteImage(tables[i], images[i], pt.container, path, pt.symbol, preset.name);
-      PrintWrote(path, tables[i], what, &images[i]);
+  brdfbake::WritePresetFiles(preset, run, tables, images);
+  for (const brdfbake::PresetFile& f : files) {
+    const bool lookup = f.what.find(" lookup of ") != std::string::npos;
+    if (f.table >= 0 && !lookup) {
+      PrintWrote(f.path, tables[f.table], f.what, &images[f.table]);
+    } else {
+      std::printf("wrote %s: %s\n", OneLine(f.path).c_str(), f.what.c_str());
     }
-    if (!preset.header_file.empty()) {
-      header_arrays.push_back({&tables[i], &images[i]});
-      header_symbols.push_back(pt.symbol);
-    }
-    if (shader) {
-      const std::string path = dir + "/" + pt.symbol + "." + brdfbake::ShaderLanguageName(lang);
-      brdfbake::WriteFileAtomically(
-          path, brdfbake::ShaderFunction(tables[i], images[i], lang, "brdfbake_" + pt.symbol));
-      std::printf("wrote %s: %s lookup of %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang),
-                  pt.symbol.c_str());
-    }
-  }
-  if (!preset.header_file.empty()) {
-    const std::string path = dir + "/" + preset.header_file;
-    brdfbake::WriteHeader(header_arrays, header_symbols, path, preset.name);
-    std::printf("wrote %s: %zu tables (%s)\n", OneLine(path).c_str(), header_arrays.size(), preset.name.c_str());
   }
   return 0;
 }
@@ -750,7 +778,7 @@ int RunPreset(const BakeOptions& opts) {
 int RunSceneBake(const BakeOptions& opts) {
   for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
                         "--pixel", "--complement", "--error-channel", "--format", "--integrator", "--samples",
-                        "--seed", "--tolerance", "--preset", "--shader"}) {
+                        "--seed", "--tolerance", "--preset", "--shader", "--symbol", "--channels"}) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": a scene bake takes its settings from the scene file");
   }
   if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
@@ -780,22 +808,29 @@ int RunBake(const BakeOptions& opts) {
   if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds) {
     Bad("--pixel unorm16: only the dds format holds unorm16 pixels");
   }
-  const bool shader = !opts.shader.empty();
-  const brdfbake::ShaderLanguage lang =
-      shader ? brdfbake::ParseShaderLanguage(opts.shader) : brdfbake::ShaderLanguage::kGlsl;
+  const std::vector<brdfbake::ShaderLanguage> langs = ShaderLanguages(opts.shader);
   if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
     Bad("-o: sel_norm tables are written as .exr");
   }
-  if (shader && spec.table == brdfbake::TableKind::kSelNorm) {
-    Bad("--shader: no lookup function is written for sel_norm tables");
+  if (!langs.empty()) brdfbake::CheckShaderTable(spec);
+  if (opts.channels != "named" && opts.channels != "rgba") {
+    Bad("--channels: unknown value '" + opts.channels + "' (expected named or rgba)");
   }
-  if (shader && spec.HasGammaAxis()) {
-    Bad("--shader: the lookup functions read tables over mu and roughness; a table with a gamma "
-        "axis is written without one");
+  const bool rgba = opts.channels == "rgba";
+  if (rgba && spec.error_channel) {
+    Bad("--channels rgba: the error channel has no place among R, G, B and A; bake it with --channels named");
   }
+  if (rgba && (container == brdfbake::Container::kHeader || container == brdfbake::Container::kJs ||
+               container == brdfbake::Container::kInc)) {
+    Bad("--channels rgba: applies to the image containers (exr, ktx2, dds), not to " +
+        std::string(brdfbake::ContainerName(container)));
+  }
+  const std::string symbol = opts.symbol.empty() ? DefaultSymbol(spec) : opts.symbol;
+  CheckSymbol(symbol);
   brdfbake::CheckOutputPath(opts.output);
-  if (shader) brdfbake::CheckOutputPath(ShaderPath(opts.output, lang));
-  if (container != brdfbake::Container::kExr || shader) {
+  for (brdfbake::ShaderLanguage l : langs) brdfbake::CheckOutputPath(ShaderPath(opts.output, l));
+  const bool arranged = container != brdfbake::Container::kExr || !langs.empty() || rgba;
+  if (arranged) {
     brdfbake::CheckContainerMemory(container, brdfbake::BakeOutputValues(spec),
                                    brdfbake::BakeOutputBytes(spec), opts.output);
   }
@@ -803,24 +838,24 @@ int RunBake(const BakeOptions& opts) {
   const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
   progress.Finish();
   brdfbake::Image image;  // the arrangement of a non-EXR container and of the shader lookup
-  if (container != brdfbake::Container::kExr || shader) {
+  if (arranged) {
     brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
     if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
+    if (rgba) layout = brdfbake::RgbaLayout(layout);
     image = brdfbake::ArrangeTable(table, layout);
   }
-  if (container == brdfbake::Container::kExr) {
+  if (container == brdfbake::Container::kExr && !rgba) {
     brdfbake::WriteExr(table, opts.output);
   } else {
-    const std::string symbol = std::string("brdfbake_") + brdfbake::TableName(spec.table);
     brdfbake::WriteImage(table, image, container, opts.output, symbol, "");
   }
   PrintWrote(opts.output, table, brdfbake::TableName(spec.table),
-             container == brdfbake::Container::kExr ? nullptr : &image);
-  if (shader) {
-    const std::string path = ShaderPath(opts.output, lang);
-    brdfbake::WriteFileAtomically(path, brdfbake::ShaderFunction(table, image, lang,
-                                                   std::string("brdfbake_") + brdfbake::TableName(spec.table)));
-    std::printf("wrote %s: %s lookup\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(lang));
+             container == brdfbake::Container::kExr && !rgba ? nullptr : &image);
+  for (brdfbake::ShaderLanguage l : langs) {
+    const std::string path = ShaderPath(opts.output, l);
+    brdfbake::WriteFileAtomically(path, brdfbake::ShaderFunction(table, image, l, symbol));
+    std::printf("wrote %s: %s lookup %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(l),
+                symbol.c_str());
   }
   if (spec.roughness.placement == brdfbake::Placement::kEdges) {
     std::fprintf(stderr,
