@@ -17,6 +17,7 @@
 #include "brdfbake/estimate.h"
 #include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/pixel_type.h"
 
 namespace brdfbake {
 
@@ -33,10 +34,6 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // from 1e-4 to 0.1 across texels) gets slices at every scale of z.
 enum class Warp { kLinear, kSquare, kSqrt, kTail };
 enum class Placement { kCenters, kEdges };
-
-// How a stored value is held: 32-bit float, IEEE half, or a 16-bit unsigned
-// normalized code (v = code / 65535).
-enum class PixelType { kFloat, kHalf, kUnorm16 };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
 //   crossing located per line and the rule split there, refined along a

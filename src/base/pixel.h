@@ -15,7 +15,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "brdfbake/bake.h"
+#include "brdfbake/pixel_type.h"
 
 namespace brdfbake {
 

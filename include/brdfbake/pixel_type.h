@@ -1,0 +1,17 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// How a stored value is held.
+
+#ifndef BRDFBAKE_PIXEL_TYPE_H_
+#define BRDFBAKE_PIXEL_TYPE_H_
+
+namespace brdfbake {
+
+// 32-bit float, IEEE half, or a 16-bit unsigned normalized code
+// (v = code / 65535).
+enum class PixelType { kFloat, kHalf, kUnorm16 };
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_PIXEL_TYPE_H_
