@@ -36,6 +36,10 @@ void ValidateEvalRequest(const EvalRequest& req) {
   const bool aniso = req.model.kind == ModelKind::kGgxAniso;
   ModelParams params = req.model;
   if (aniso) params.kind = ModelKind::kGgx;  // the widths come from roughness and anisotropy
+  bool tables_only = !req.quantities.empty();
+  for (const std::string& q : req.quantities) tables_only &= IsTableQuantity(q);
+  // Roughness 0 is the tables' mirror (E = 1): the table quantities take it.
+  if (tables_only && params.alpha_x == 0 && params.alpha_y == 0) params.alpha_x = params.alpha_y = 1.0;
   ValidateModelParams(params);
   if (aniso && !(req.anisotropy >= 0 && req.anisotropy <= 1)) {
     Bad("--anisotropy must lie in [0, 1] (the KHR_materials_anisotropy strength)");
@@ -109,6 +113,11 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
                                  double roughness) {
   BakeSpec spec;
   spec.model = req.model;
+  // The tables take alpha from `roughness` (0 is their mirror): the model's
+  // own widths only stand in.
+  if (spec.model.kind != ModelKind::kEllipsoid && spec.model.alpha_x == 0) {
+    spec.model.alpha_x = spec.model.alpha_y = 1.0;
+  }
   spec.masking = req.masking;
   if (spec.model.kind == ModelKind::kEllipsoid) {
     // The material's E at the view (mu, --phi-o), or its E_avg.
@@ -152,7 +161,7 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
   const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
   // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
   const std::unique_ptr<Model> model =
-      req.model.kind == ModelKind::kGgxAniso ? nullptr : MakeModel(req.model);
+      req.model.kind == ModelKind::kGgxAniso || table_sweep ? nullptr : MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 

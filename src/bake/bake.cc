@@ -21,6 +21,7 @@
 
 #include "base/error.h"
 #include "base/pixel.h"
+#include "base/text.h"
 #include "brdfbake/version.h"
 #include "lanes/quadrature_simd.h"
 #include "quadrature/adaptive_rule.h"
@@ -74,7 +75,8 @@ TableKind ParseTable(const std::string& s) {
   if (s == "E_avg") return TableKind::kEavg;
   if (s == "dfg") return TableKind::kDfg;
   if (s == "sel_norm") return TableKind::kSelNorm;
-  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg or sel_norm)");
+  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg or sel_norm)" +
+      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm"}, {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}}));
 }
 Warp ParseWarp(const std::string& s) {
   if (s == "linear") return Warp::kLinear;

@@ -6,10 +6,13 @@
 #ifndef BRDFBAKE_SRC_BASE_TEXT_H_
 #define BRDFBAKE_SRC_BASE_TEXT_H_
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace brdfbake {
 
@@ -74,6 +77,66 @@ inline std::string Printable(const std::string& s) {
     }
   }
   return out;
+}
+
+// The choice `given` is a near miss of, or "": the same letters and digits
+// in another case or spelling ("three.js", "E-AVG"), one a prefix of the
+// other ("three" in "threejs"), or at most one edit in four (an edit:
+// insert, delete, substitute, or swap two neighbours).
+// `aliases` maps other names to a choice ("ue4" -> "unreal").
+inline std::string NearestChoice(const std::string& given, const std::vector<std::string>& choices,
+                                 const std::vector<std::pair<std::string, std::string>>& aliases = {}) {
+  auto key = [](const std::string& s) {
+    std::string k;
+    for (char c : s) {
+      if (std::isalnum(static_cast<unsigned char>(c))) k += char(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return k;
+  };
+  // Edits: insert, delete, substitute, or swap two neighbours (optimal
+  // string alignment).
+  auto distance = [](const std::string& a, const std::string& b) {
+    const size_t n = b.size() + 1;
+    std::vector<size_t> d((a.size() + 1) * n);
+    for (size_t i = 0; i <= a.size(); ++i) d[i * n] = i;
+    for (size_t j = 0; j <= b.size(); ++j) d[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      for (size_t j = 1; j <= b.size(); ++j) {
+        size_t v = std::min({d[(i - 1) * n + j] + 1, d[i * n + j - 1] + 1,
+                             d[(i - 1) * n + j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+          v = std::min(v, d[(i - 2) * n + j - 2] + 1);
+        }
+        d[i * n + j] = v;
+      }
+    }
+    return d[a.size() * n + b.size()];
+  };
+  const std::string g = key(given);
+  if (g.empty()) return "";
+  for (const auto& [alias, choice] : aliases) {
+    if (g == key(alias)) return choice;
+  }
+  std::string best;
+  size_t best_d = std::string::npos;
+  for (const std::string& c : choices) {
+    const std::string k = key(c);
+    if (k.empty()) continue;
+    size_t d = distance(g, k);
+    if (k.size() >= 3 && (g.rfind(k, 0) == 0 || k.rfind(g, 0) == 0) && g.size() >= 3) d = std::min<size_t>(d, 1);
+    if (d <= std::max<size_t>(1, k.size() / 4) && d < best_d) {
+      best = c;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
+// "; did you mean 'x'?" for NearestChoice x, else "".
+inline std::string DidYouMean(const std::string& given, const std::vector<std::string>& choices,
+                              const std::vector<std::pair<std::string, std::string>>& aliases = {}) {
+  const std::string near = NearestChoice(given, choices, aliases);
+  return near.empty() ? "" : "; did you mean '" + near + "'?";
 }
 
 }  // namespace brdfbake

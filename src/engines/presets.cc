@@ -399,11 +399,17 @@ const std::vector<Preset>& Presets() {
 
 const Preset& FindPreset(const std::string& name) {
   std::string names;
+  std::vector<std::string> all;
   for (const Preset& p : Presets()) {
     if (p.name == name) return p;
     names += (names.empty() ? "" : ", ") + p.name;
+    all.push_back(p.name);
   }
-  throw std::invalid_argument("--preset: unknown preset '" + name + "' (expected " + names + ")");
+  Bad("--preset: unknown preset '" + name + "' (expected " + names + ")" +
+      DidYouMean(name, all,
+                 {{"ue4", "unreal"}, {"ue5", "unreal"}, {"unreal-engine", "unreal"}, {"unity", "hdrp"},
+                  {"three.js", "three"}, {"threejs", "three"}, {"blender", "cycles"},
+                  {"enterprise", "enterprise-pbr"}, {"dassault", "enterprise-pbr"}}));
 }
 
 }  // namespace brdfbake

@@ -335,12 +335,15 @@ const char* ContainerName(Container c) {
   return "exr";
 }
 
-Container ParseContainer(const std::string& s) {
+Container ParseContainer(const std::string& given) {
+  const std::string s = Lowercase(given);
   for (Container c : {Container::kExr, Container::kHeader, Container::kJs, Container::kKtx2,
                       Container::kDds, Container::kInc}) {
     if (s == ContainerName(c)) return c;
   }
-  Bad("--format: unknown format '" + s + "' (expected exr, header, js, ktx2, dds or inc)");
+  Bad("--format: unknown format '" + given + "' (expected exr, header, js, ktx2, dds or inc)" +
+      DidYouMean(given, {"exr", "header", "js", "ktx2", "dds", "inc"}, {{"h", "header"}, {"hpp", "header"},
+                                                                         {"mjs", "js"}, {"ktx", "ktx2"}}));
 }
 
 Container ContainerFromPath(const std::string& path) {

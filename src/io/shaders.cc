@@ -80,11 +80,14 @@ struct Syntax {
 
 }  // namespace
 
-ShaderLanguage ParseShaderLanguage(const std::string& s) {
+ShaderLanguage ParseShaderLanguage(const std::string& given) {
+  const std::string s = Lowercase(given);
   if (s == "glsl") return ShaderLanguage::kGlsl;
   if (s == "hlsl") return ShaderLanguage::kHlsl;
   if (s == "wgsl") return ShaderLanguage::kWgsl;
-  Bad("--shader: unknown language '" + s + "' (expected glsl, hlsl or wgsl)");
+  Bad("--shader: unknown language '" + given + "' (expected glsl, hlsl or wgsl)" +
+      DidYouMean(given, {"glsl", "hlsl", "wgsl"}, {{"webgpu", "wgsl"}, {"opengl", "glsl"}, {"webgl", "glsl"},
+                                                   {"d3d", "hlsl"}, {"directx", "hlsl"}}));
 }
 
 const char* ShaderLanguageName(ShaderLanguage l) {

@@ -160,9 +160,20 @@ namespace {
 constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
                                 ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso};
 
+// Every model name this build accepts: the families, and ggx-aniso (a
+// table model of the ggx family).
+std::vector<std::string> BuiltModelNames() {
+  std::vector<std::string> names;
+  for (const ModelInfo& m : Models()) {
+    names.push_back(ModelName(m.kind));
+    if (m.kind == ModelKind::kGgx) names.push_back(ModelName(ModelKind::kGgxAniso));
+  }
+  return names;
+}
+
 std::string BuiltModels() {
   std::string built;
-  for (const ModelInfo& m : Models()) built += (built.empty() ? "" : ", ") + std::string(ModelName(m.kind));
+  for (const std::string& n : BuiltModelNames()) built += (built.empty() ? "" : ", ") + n;
   return built;
 }
 
@@ -184,7 +195,8 @@ ModelKind ParseModelKind(const std::string& name) {
   for (ModelKind k : kKinds) {
     if (name == ModelName(k)) return k;
   }
-  Bad("unknown model '" + name + "' (expected " + BuiltModels() + ")");
+  Bad("unknown model '" + name + "' (expected " + BuiltModels() + ")" +
+      DidYouMean(name, BuiltModelNames(), {{"trowbridge-reitz", "ggx"}, {"student-t", "std"}}));
 }
 
 bool ModelBuilt(ModelKind kind) {

@@ -356,13 +356,13 @@ TEST(CliReliabilityTest, DeviceTargetsAreRefusedBeforeTheBake) {
   ExpectOneLineError(Execute({"bake", "--table", "E", "-o", "/dev/full"}, dir), "/dev/full");
   ExpectOneLineError(Execute({"bake", "--table", "E", "-o", "/proc/self/fd/1"}, dir), "fd/1");
   ExpectOneLineError(Execute({"eval", "--grid", "slice", "-o", dir + "/full.exr"}, dir), "grid");
-  // A missing directory is found before the work; the temporary's name is
-  // never shown.
-  const ToolRun r = Execute({"bake", "--table", "E", "--size", "2048x2048", "-o",
-                             "/nonexistent/dir/x.exr"}, dir);
-  ExpectOneLineError(r, "missing dir", "does not exist");
-  EXPECT_EQ(r.err.find("tmp"), std::string::npos) << r.err;
-  EXPECT_EQ(r.err.find("brdfbake-"), std::string::npos) << r.err;
+  // A directory that cannot be made (a file is in its way) is found
+  // before the work; the temporary's name is never shown.
+  WriteText(dir + "/file", "");
+  const ToolRun r = Execute({"bake", "--table", "E", "--size", "2048x2048", "-o", dir + "/file/dir/x.exr"}, dir);
+  ExpectOneLineError(r, "missing dir", "cannot create directory");
+  EXPECT_EQ(r.err.find(".tmp."), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(".brdfbake-"), std::string::npos) << r.err;
 }
 
 // A scene bake whose output directory holds a directory in the place of a
@@ -488,7 +488,7 @@ TEST(CliReliabilityTest, ControlCharactersInArgumentsAreEscaped) {
       {"bake", "--table", "E", "--warp", "lin\near", "-o", o},
       {"bake", "--table", "E", "--size", "8\nx8", "-o", o},
       {"bake", "--table", "E", "-o", dir + "/a\nb.exr.png"},
-      {"bake", "--table", "E", "-o", dir + "/no\ndir/x.exr"},
+      {"bake", "--table", "E", "-o", dir + "/no\ndir/x.png"},
       {"eval", "--quantity", "D\nG1"},
       {"eval", "--fresnel", "one\r\x1b[2J"},
       {"eval", "--no-such\nflag"},

@@ -170,6 +170,13 @@ void MakeOutputDirectory(const std::string& dir) {
   }
 }
 
+// The one rule for outputs: missing directories on the way are created
+// (as for -o DIR of presets, scenes and reports), before the work.
+void MakeParentDirectory(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) MakeOutputDirectory(parent.string());
+}
+
 bool Given(const CLI::App* app, const char* option) {
   const CLI::Option* o = app->get_option_no_throw(option);
   return o != nullptr && o->count() > 0;
@@ -205,7 +212,9 @@ struct ModelOptions {
         ->check(kNumber);
   }
 
-  brdfbake::ModelParams Get() const {
+  // `mirror_ok`: --roughness 0 (alpha 0, a mirror, as the tables hold it at
+  // r = 0: E = 1) is accepted.
+  brdfbake::ModelParams Get(bool mirror_ok = false) const {
     brdfbake::ModelParams p;
     p.kind = brdfbake::ParseModelKind(model);
     if (Given(app, "--gamma") && p.kind != brdfbake::ModelKind::kStudentT) {
@@ -219,10 +228,15 @@ struct ModelOptions {
     double a = 0.25;
     if (!alpha.empty() && !roughness.empty()) Bad("--alpha and --roughness are exclusive");
     if (!alpha.empty()) a = ParseNumber("--alpha", alpha);
+    bool mirror = false;
     if (!roughness.empty()) {
       const double r = ParseNumber("--roughness", roughness);
-      if (!(r > 0) || !(r <= 100)) Bad("--roughness must lie in (0, 100] (alpha = r^2 <= 1e4)");
-      a = brdfbake::AlphaFromRoughness(r);
+      mirror = r == 0 && mirror_ok && p.kind != brdfbake::ModelKind::kEllipsoid;
+      if (!mirror && (!(r > 0) || !(r <= 100))) {
+        Bad(std::string("--roughness must lie in (0, 100] (alpha = r^2 <= 1e4)") +
+            (r == 0 ? "; 0, the mirror, is taken by the table quantities E, dfg and E_avg alone" : ""));
+      }
+      a = mirror ? 0.0 : brdfbake::AlphaFromRoughness(r);
     }
     p.alpha_x = alpha_x.empty() ? a : ParseNumber("--alpha-x", alpha_x);
     p.alpha_y = alpha_y.empty() ? a : ParseNumber("--alpha-y", alpha_y);
@@ -238,6 +252,7 @@ struct ModelOptions {
       }
       check.kind = brdfbake::ModelKind::kGgx;
     }
+    if (mirror) check.alpha_x = check.alpha_y = 1.0;  // the widths stand for no NDF
     brdfbake::ValidateModelParams(check);
     return p;
   }
@@ -782,6 +797,13 @@ int RunSceneBake(const BakeOptions& opts) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": a scene bake takes its settings from the scene file");
   }
   if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
+  std::error_code ec;
+  if (!std::filesystem::exists(opts.scene, ec)) {
+    // `bake dfg` meant a table, not a scene file.
+    const std::string table = brdfbake::NearestChoice(opts.scene, {"E", "E_avg", "dfg", "sel_norm"});
+    Bad(OneLine(opts.scene) + ": no such scene file" +
+        (table.empty() ? "" : "; did you mean --table " + table + "?"));
+  }
   const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
   MakeOutputDirectory(opts.output);
   // Every output is checked before the plan's work (a directory in the
@@ -827,6 +849,7 @@ int RunBake(const BakeOptions& opts) {
   }
   const std::string symbol = opts.symbol.empty() ? DefaultSymbol(spec) : opts.symbol;
   CheckSymbol(symbol);
+  MakeParentDirectory(opts.output);
   brdfbake::CheckOutputPath(opts.output);
   for (brdfbake::ShaderLanguage l : langs) brdfbake::CheckOutputPath(ShaderPath(opts.output, l));
   const bool arranged = container != brdfbake::Container::kExr || !langs.empty() || rgba;
@@ -978,6 +1001,7 @@ int RunGrid(const EvalOptions& o) {
   if (o.grid_out.empty()) Bad("-o: --grid writes an EXR file; name it with -o");
   brdfbake::ValidateGridRequest(gr);
   brdfbake::CheckOutputExtension(o.grid_out, ".exr", "eval --grid");
+  MakeParentDirectory(o.grid_out);
   brdfbake::CheckOutputPath(o.grid_out);
   const auto start = std::chrono::steady_clock::now();
   const brdfbake::Grid g = brdfbake::EvalGrid(gr);
@@ -1002,15 +1026,27 @@ int RunEval(const EvalOptions& o) {
   }
   if (o.target != "best") ForceTargetOption(o.target);
   EvalRequest req = o.req;
-  req.model = o.model.Get();
+  req.quantities = SplitComma(o.quantity);
+  bool tables_only = true, eavg_only = true;
+  for (const std::string& q : req.quantities) {
+    tables_only &= brdfbake::IsTableQuantity(q);
+    eavg_only &= q == "E_avg";
+  }
+  // Options that do not apply to the quantities asked for.
+  if (eavg_only) {
+    for (const char* view : {"--mu-o", "--phi-o"}) {
+      if (Given(o.app, view)) Bad(std::string(view) + ": E_avg does not depend on the view (it averages E over mu)");
+    }
+  }
+  if (tables_only && Given(o.app, "--phi")) {
+    Bad("--phi: the table quantities E, dfg and E_avg have no swept direction (the view is --mu-o, --phi-o)");
+  }
+  req.model = o.model.Get(tables_only);
   req.fresnel = o.fresnel.Get();
   req.masking = ParseMasking(o.masking);
-  req.quantities = SplitComma(o.quantity);
   req.sweep = o.sweep;
   // Table quantities alone and no sweep asked for: one value at
   // (--mu-o, --roughness).
-  bool tables_only = true;
-  for (const std::string& q : req.quantities) tables_only &= brdfbake::IsTableQuantity(q);
   if (tables_only && !Given(o.app, "--sweep") && !Given(o.app, "--from") && !Given(o.app, "--to") &&
       !Given(o.app, "--count")) {
     req.sweep = "none";
@@ -1054,7 +1090,11 @@ std::string ExtrasMessage(const CLI::App& app, int argc, char** argv, const std:
     std::string msg = sub->get_name() + ": ";
     if (first.size() > 1 && first[0] == '-' && !std::isdigit(static_cast<unsigned char>(first[1])) &&
         first[1] != '.') {
-      msg += "unknown option '" + first + "'";
+      std::vector<std::string> names;
+      for (const CLI::Option* o : sub->get_options()) {
+        for (const std::string& l : o->get_lnames()) names.push_back("--" + l);
+      }
+      msg += "unknown option '" + first + "'" + brdfbake::DidYouMean(first.substr(0, first.find('=')), names);
     } else {
       msg += "unexpected argument '" + first + "'";
     }
@@ -1150,6 +1190,19 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return exit_printed(e);
   } catch (const CLI::ParseError& e) {
+    // A first word that is no command: name the commands, and the near one.
+    std::vector<std::string> commands;
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) {
+      commands.push_back(sub->get_name());
+    }
+    if (argc > 1 && argv[1][0] != '-' &&
+        std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+      std::string list;
+      for (const std::string& c : commands) list += (list.empty() ? "" : ", ") + c;
+      std::fprintf(stderr, "brdfbake: error: unknown command '%s' (expected %s)%s\n", OneLine(argv[1]).c_str(),
+                   list.c_str(), brdfbake::DidYouMean(argv[1], commands).c_str());
+      return 2;
+    }
     std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
     return 2;
   }
