@@ -24,6 +24,7 @@
 #include "base/error.h"
 #include "base/text.h"
 #include "brdfbake/exr.h"
+#include "brdfbake/models/slope_ndf.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
 
@@ -464,7 +465,27 @@ double InterpolationError(const Table& t, int probes) {
     }
     return f;
   };
-  const std::vector<double> fm = positions(am, nm, true), fr = positions(ar, nr, false);
+  // The fractional texel index of value v on axis a (Axis::ValueAt
+  // inverted), for the points where a table is not smooth.
+  auto index_of = [](const Axis& a, int n, double v) {
+    double t = std::clamp((v - a.min) / (a.max - a.min), 0.0, 1.0);
+    if (a.warp == Warp::kSquare) t = std::sqrt(t);
+    if (a.warp == Warp::kSqrt) t = t * t;
+    return a.placement == Placement::kCenters ? t * n - 0.5 : t * (n - 1);
+  };
+  std::vector<double> fm = positions(am, nm, true), fr = positions(ar, nr, false);
+  // The grazing layer down to the smallest NoV engines clamp to (1e-4).
+  if (nm > 1) {
+    for (double mu : {1e-4, 1e-3, 1e-2}) {
+      if (mu > am.min && mu < am.max) fm.push_back(index_of(am, nm, mu));
+    }
+  }
+  // Each side of the mirror cut (alpha = kMinAlpha: E jumps to 1), where
+  // the roughness axis crosses it.
+  const double cut = std::sqrt(kMinAlpha<double>);
+  if (nr > 1 && cut > ar.min && cut < ar.max) {
+    for (double r : {cut * (1 - 1e-9), cut, cut * (1 + 1e-6), cut * 1.01}) fr.push_back(index_of(ar, nr, r));
+  }
   if (fm.size() == 1 && fr.size() == 1) return 0;
   const size_t nvalue = eavg || t.spec.table == TableKind::kE ? 1 : (t.spec.complement ? 3 : 2);
   std::vector<double> worst(fm.size() * fr.size(), 0.0);
