@@ -44,8 +44,12 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 
 if [ "$mode" = test ]; then
-  # The JS readers, at the versions package-lock.json pins.
-  npm ci --prefix tests/js --no-audit --no-fund --loglevel=error
+  # The JS readers, at the versions and hashes package-lock.json pins,
+  # trusting the system's certificate authorities (as apt and curl do, so
+  # that a proxy's CA installed on the machine is trusted by npm too).
+  ca=""
+  [ -f /etc/ssl/certs/ca-certificates.crt ] && ca="--cafile=/etc/ssl/certs/ca-certificates.crt"
+  npm ci --prefix tests/js --no-audit --no-fund --loglevel=error $ca
   exec ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 
