@@ -193,12 +193,12 @@ Scene LoadToml(const std::string& path) {
     }
     if (mat.model == ModelKind::kStudentT) {
       const toml::node* g = mt.get("gamma");
-      if (!g) f.Fail("gamma", "missing (std needs gamma in (1.5, inf], or \"inf\")");
+      if (!g) f.Fail("gamma", "missing (std needs gamma in [1.500001, inf], or \"inf\")");
       if (g->is_string() && **g->as_string() == "inf") {
         mat.gamma = std::numeric_limits<double>::infinity();
       } else {
-        mat.gamma = f.Number("gamma", 2, 1.5, 1.7976931348623157e308, true);
-        if (!(mat.gamma > 1.5)) f.Fail("gamma", "must be > 1.5");
+        mat.gamma = f.Number("gamma", 2, -1.7976931348623157e308, 1.7976931348623157e308, true);
+        if (!StudentTGammaAllowed(mat.gamma)) f.Fail("gamma", StudentTGammaDomain(mat.gamma));
       }
     } else if (f.Has("gamma")) {
       f.Fail("gamma", "only std has gamma");

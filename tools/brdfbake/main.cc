@@ -195,7 +195,7 @@ struct ModelOptions {
     app->add_option("--alpha-y", alpha_y, "alpha along the bitangent")
         ->check(kNumber);
     app->add_option("--roughness,-r", roughness, "perceptual roughness r, alpha = r^2 (both axes)");
-    app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]; 'inf' is Beckmann")
+    app->add_option("--gamma", gamma, "std: tail parameter in [1.500001, inf]; 'inf' is Beckmann")
         ->capture_default_str();
     app->add_option("--theta-x", theta_x_deg, "ellipsoid/sel: rotation about x, degrees")
         ->check(kNumber);
@@ -347,13 +347,13 @@ struct BakeOptions {
                     "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm)")
         ->capture_default_str();
     app->add_option("--gamma", gamma,
-                    "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
+                    "std: tail parameter in [1.500001, inf]; without it, a third --size entry bakes "
                     "over a gamma axis")
         ->capture_default_str();
     app->add_option("--size", size,
                     "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
                         (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
-                        "gamma slices over (1.5, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
+                        "gamma slices over [1.501, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
                         "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y");
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
@@ -361,7 +361,7 @@ struct BakeOptions {
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
-                    "gamma=min:max within (1.5, inf], default 1.501:inf; phi_o in radians within "
+                    "gamma=min:max within [1.500001, inf], default 1.501:inf; phi_o in radians within "
                     "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid)");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
