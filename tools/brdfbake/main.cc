@@ -67,6 +67,9 @@ void ForceTargetOption(const std::string& target) {
 // A message on one line: control characters (a newline inside an argument,
 // say), C1 controls and bidirectional overrides shown as escapes.
 std::string OneLine(const std::string& s) { return brdfbake::Printable(s); }
+// An error message as printed: on one line, and at most 2000 bytes (a value
+// of megabytes, from a file or an argument, is shown by its start and size).
+std::string ErrorLine(const std::string& s) { return brdfbake::Excerpt(OneLine(s), 2000); }
 
 // One strict grammar for every number on the command line: a decimal
 // number (optional sign, digits, optional fraction and exponent; no hex, no
@@ -1115,13 +1118,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return exit_printed(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", ErrorLine(e.what()).c_str());
     return 2;
   }
   bool extras = !app.remaining().empty();
   for (const CLI::App* sub : app.get_subcommands()) extras |= !sub->remaining().empty();
   if (extras) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
     return 2;
   }
 
@@ -1139,7 +1142,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "brdfbake: error: out of memory\n");
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(e.what()).c_str());
     return 1;
   }
   if (!FlushStdout()) {
