@@ -27,7 +27,7 @@ enum class TableKind { kE, kEavg, kDfg, kSelNorm };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kHalfPi = 1.5707963267948966;
-// kTail is the gamma axis's warp (STD over gamma, gamma in (1.5, inf]):
+// kTail is the gamma axis's warp (STD over gamma, gamma in [1.500001, inf]):
 // u = (gamma - 1.5) / (gamma - 0.5) is log-linear in t,
 // u = u(min)^(1 - t) u(max)^t, so gamma = inf (u = 1) can end the axis and
 // the knee of E near gamma = 1.5 (E ~ z / (z + C), z = gamma - 1.5, with C

@@ -31,8 +31,9 @@ enum class BatchFresnel { kSchlick, kDielectric, kConductor };
 // any output is written, and throws std::invalid_argument naming the call
 // and the field outside its domain (docs/kernels.md):
 //   alpha_x, alpha_y  (0, 1e4]; below 1e-4 evaluated at 1e-4
-//   gamma (std)       (1.5, inf]; below 1.5 + 1e-6 evaluated at 1.5 + 1e-6,
-//                     from 1e10 on (and at inf) as Beckmann
+//   gamma (std)       [1.5 + 1e-6, inf] (the mean slope diverges at 1.5; as
+//                     a float, 1.5000011f is the smallest accepted), from
+//                     1e10 on (and at inf) evaluated as Beckmann
 //   theta_* (ellipsoid, sel)  [-pi/2, pi/2] radians: the ellipsoid's
 //                     A = S Rx Ry Rz, the sel lobe's frame Q = Rx Ry Rz
 //   f0 (Schlick)      [0, 1]

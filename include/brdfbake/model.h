@@ -66,6 +66,15 @@ inline constexpr double kMaxAlpha = 1e4;
 // Throws std::invalid_argument with a one-line message naming the bad
 // parameter if `p` is outside the documented domain.
 void ValidateModelParams(const ModelParams& p);
+// The std model's gamma domain: [1.5 + 1e-6, inf] (kMinStudentTGamma in
+// models/std_ndf.h). The mean slope, hence Lambda, diverges as
+// 1 / (2 gamma - 3) at 1.5, and the models evaluate nothing below the
+// floor, so a gamma in (1.5, 1.5 + 1e-6) is refused rather than replaced.
+// StudentTGammaAllowed is false for NaN; StudentTGammaDomain says
+// "must be >= 1.500001 or inf (the STD's mean slope diverges at 1.5; got G)"
+// for `name`'s prefix to complete.
+bool StudentTGammaAllowed(double gamma);
+std::string StudentTGammaDomain(double gamma);
 // Throws std::invalid_argument naming the parameter outside the domain of
 // fresnel.h (F0 in [0, 1]; eta, n in [0.01, 100]; k in [0, 100]; NaN).
 void ValidateFresnel(const Fresnel& f);

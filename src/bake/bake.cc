@@ -226,11 +226,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     }
     if (g.warp != Warp::kTail) Bad("--warp: the gamma axis takes the tail warp only");
     const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
-    if (std::isnan(g.min) || std::isnan(g.max) || !(g.min > 1.5) || std::isinf(g.min) || !ordered) {
-      std::ostringstream os;
-      os << "--range: the gamma axis must satisfy 1.5 < min < max <= inf (got " << g.min << ":"
-         << g.max << ")";
-      Bad(os.str());
+    if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) || std::isinf(g.min) || !ordered) {
+      Bad("--range: the gamma axis must satisfy " + ExactText(kMinStudentTGamma<double>) +
+          " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " + ExactText(g.min) +
+          ":" + ExactText(g.max) + ")");
     }
   }
   if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");

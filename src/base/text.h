@@ -139,6 +139,16 @@ inline std::string DidYouMean(const std::string& given, const std::vector<std::s
   return near.empty() ? "" : "; did you mean '" + near + "'?";
 }
 
+// `s` for a message: whole up to `max` bytes, else its first `max` bytes
+// (cut before a UTF-8 continuation byte) and the total size, so that a
+// name or value of megabytes from a file does not fill the error line.
+inline std::string Excerpt(const std::string& s, size_t max = 64) {
+  if (s.size() <= max) return s;
+  size_t n = max;
+  while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xc0) == 0x80) --n;
+  return s.substr(0, n) + "... (" + std::to_string(s.size()) + " bytes)";
+}
+
 }  // namespace brdfbake
 
 #endif  // BRDFBAKE_SRC_BASE_TEXT_H_

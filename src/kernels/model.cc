@@ -143,7 +143,7 @@ const std::vector<ModelInfo>& Models() {
       {ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
 #endif
 #if BRDFBAKE_WITH_STD
-      {ModelKind::kStudentT, "alpha_x, alpha_y, gamma in (1.5, inf]", "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann"},
+      {ModelKind::kStudentT, "alpha_x, alpha_y, gamma in [1.500001, inf]", "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann"},
 #endif
 #if BRDFBAKE_WITH_ELLIPSOID
       {ModelKind::kEllipsoid, "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, [Walter15]; A = S Rx Ry Rz"},
@@ -207,6 +207,13 @@ bool ModelBuilt(ModelKind kind) {
   return false;
 }
 
+bool StudentTGammaAllowed(double gamma) { return gamma >= kMinStudentTGamma<double>; }
+
+std::string StudentTGammaDomain(double gamma) {
+  return "must be >= " + ExactText(kMinStudentTGamma<double>) +
+         " or inf (the STD's mean slope diverges at 1.5; got " + ExactText(gamma) + ")";
+}
+
 void ValidateModelParams(const ModelParams& p) {
   if (p.kind == ModelKind::kGgxAniso) {
     Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval --quantity "
@@ -218,12 +225,8 @@ void ValidateModelParams(const ModelParams& p) {
   }
   CheckAlpha("alpha_x", p.alpha_x);
   CheckAlpha("alpha_y", p.alpha_y);
-  if (p.kind == ModelKind::kStudentT) {
-    if (std::isnan(p.gamma) || !(p.gamma > 1.5)) {
-      std::ostringstream os;
-      os << "gamma must be > 1.5 or inf (got " << ExactText(p.gamma) << ")";
-      Bad(os.str());
-    }
+  if (p.kind == ModelKind::kStudentT && !StudentTGammaAllowed(p.gamma)) {
+    Bad("gamma " + StudentTGammaDomain(p.gamma));
   }
   if (p.kind == ModelKind::kEllipsoid || p.kind == ModelKind::kSel) {
     CheckAngle("theta_x", p.theta_x);

@@ -148,8 +148,8 @@ AzimuthalDfgResult SimdSlopeTexel(const Ndf& ndf, double mu, Masking masking, bo
   const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol, with_bias);
   const SimdSlopeEval<P22, LambdaF> eval{nodes, f.frame_consts(), f.slope_consts(), with_bias};
   return AdaptiveAzimuthalRule(
-      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen()), eval, tol,
-      max_pieces);
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen(), f.normal_scale()),
+      eval, tol, max_pieces);
 }
 
 #if BRDFBAKE_WITH_BECKMANN

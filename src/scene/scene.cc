@@ -14,6 +14,7 @@
 #include <iterator>
 #include <map>
 #include <set>
+#include <vector>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,7 +53,7 @@ struct Fields {
       if (std::find(known.begin(), known.end(), key) == known.end()) {
         std::string list;
         for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-        Fail(key, "unknown field (expected one of " + list + ")");
+        Fail(Excerpt(key), "unknown field (expected one of " + list + ")");
       }
     }
   }
@@ -81,7 +82,7 @@ struct Fields {
       Fail(f, "expected a number");
     }
     if (!(v >= lo && v <= hi)) Fail(f, ExactText(v) + " is outside [" + Num(lo) + ", " + Num(hi) + "]");
-    return v;
+    return v == 0 ? 0.0 : v;  // -0 as 0
   }
   bool Bool(const std::string& f, bool fallback) const {
     const toml::node* n = t.get(f);
@@ -106,13 +107,62 @@ Masking MaskingOf(const Fields& f) {
   const std::string m = f.String("masking", "height-correlated");
   if (m == "height-correlated") return Masking::kHeightCorrelated;
   if (m == "separable") return Masking::kSeparable;
-  f.Fail("masking", "'" + m + "' is not height-correlated or separable");
+  f.Fail("masking", "'" + Excerpt(m) + "' is not height-correlated or separable");
+}
+
+std::string ReadBytes(const std::string& path, size_t limit = std::string::npos);
+
+// toml++ bounds the nesting of values (arrays, inline tables) at 256 levels,
+// but not of dotted keys: a table header [a.a.a...] of 100,000 parts
+// overflowed its recursion. A scene needs two levels; a key of more than
+// kMaxTomlKeyParts parts is refused before parsing. The dots are counted
+// outside strings and comments, in runs that [ ] { } = , and line ends
+// close (so a value's decimal point counts alone).
+constexpr int kMaxTomlKeyParts = 64;
+
+void CheckTomlKeyDepth(const std::string& path, const std::string& text) {
+  int dots = 0, line = 1;
+  const size_t n = text.size();
+  for (size_t i = 0; i < n; ++i) {
+    const char c = text[i];
+    if (c == '"' || c == '\'') {
+      // A string: basic ("...", escapes) or literal ('...'), single-line
+      // or multi-line (three quotes).
+      const bool basic = c == '"';
+      const bool multi = text.compare(i, 3, std::string(3, c)) == 0;
+      i += multi ? 3 : 1;
+      for (; i < n; ++i) {
+        if (text[i] == '\n') {
+          ++line;
+          if (!multi) break;  // unterminated: the parser reports it
+        } else if (basic && text[i] == '\\') {
+          if (i + 1 < n && text[i + 1] == '\n') ++line;
+          ++i;
+        } else if (text[i] == c && (!multi || text.compare(i, 3, std::string(3, c)) == 0)) {
+          if (multi) i += 2;
+          break;
+        }
+      }
+    } else if (c == '#') {
+      while (i + 1 < n && text[i + 1] != '\n') ++i;
+    } else if (c == '.') {
+      if (++dots >= kMaxTomlKeyParts) {
+        Bad(path + ":" + std::to_string(line) + ": a key of more than " +
+            std::to_string(kMaxTomlKeyParts) + " dotted parts (a scene needs two)");
+      }
+    } else if (c == '\n' || c == '[' || c == ']' || c == '{' || c == '}' || c == '=' || c == ',') {
+      if (c == '\n') ++line;
+      dots = 0;
+    }
+  }
 }
 
 Scene LoadToml(const std::string& path) {
+  const std::string text = ReadBytes(path);
+  CheckTomlKeyDepth(path, text);
   toml::table root;
   try {
-    root = toml::parse_file(path);
+    root = toml::parse(text, path);
   } catch (const toml::parse_error& e) {
     std::ostringstream os;
     os << path << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
@@ -123,7 +173,7 @@ Scene LoadToml(const std::string& path) {
   for (const auto& kv : root) {
     const std::string key(kv.first.str());
     if (key != "engine" && key != "material") {
-      Bad(path + ": unknown section '" + key + "' (expected [engine] and [[material]])");
+      Bad(path + ": unknown section '" + Excerpt(key) + "' (expected [engine] and [[material]])");
     }
   }
   if (const toml::node* e = root.get("engine")) {
@@ -134,10 +184,10 @@ Scene LoadToml(const std::string& path) {
     if (lut != std::floor(lut)) f.Fail("max_lut_size", ExactText(lut) + " is not an integer");
     s.engine.max_lut_size = int(lut);
     const std::string pixel = f.String("pixel", "half");
-    if (pixel != "half" && pixel != "float") f.Fail("pixel", "'" + pixel + "' is not half or float");
+    if (pixel != "half" && pixel != "float") f.Fail("pixel", "'" + Excerpt(pixel) + "' is not half or float");
     s.engine.pixel = pixel == "half" ? PixelType::kHalf : PixelType::kFloat;
     const std::string pl = f.String("placement", "centers");
-    if (pl != "centers" && pl != "edges") f.Fail("placement", "'" + pl + "' is not centers or edges");
+    if (pl != "centers" && pl != "edges") f.Fail("placement", "'" + Excerpt(pl) + "' is not centers or edges");
     s.engine.placement = pl == "centers" ? Placement::kCenters : Placement::kEdges;
     s.engine.error_target = f.Number("error_target", 2e-3, 1e-7, 1.0);
     s.engine.complement = f.Bool("complement", false);
@@ -147,10 +197,12 @@ Scene LoadToml(const std::string& path) {
       if (t == "E") s.engine.tables.push_back(TableKind::kE);
       else if (t == "E_avg") s.engine.tables.push_back(TableKind::kEavg);
       else if (t == "dfg") s.engine.tables.push_back(TableKind::kDfg);
-      else f.Fail("tables", "'" + t + "' is not E, E_avg or dfg");
+      else f.Fail("tables", "'" + Excerpt(t) + "' is not E, E_avg or dfg");
     }
     for (const std::string& l : f.Strings("shaders", {})) {
-      if (l != "glsl" && l != "hlsl" && l != "wgsl") f.Fail("shaders", "'" + l + "' is not glsl, hlsl or wgsl");
+      if (l != "glsl" && l != "hlsl" && l != "wgsl") {
+        f.Fail("shaders", "'" + Excerpt(l) + "' is not glsl, hlsl or wgsl");
+      }
       s.engine.shaders.push_back(ParseShaderLanguage(l));
     }
   }
@@ -164,7 +216,7 @@ Scene LoadToml(const std::string& path) {
     const toml::table& mt = *m.as_table();
     std::string name = "#" + std::to_string(index);
     if (const toml::node* n = mt.get("name"); n && n->is_string()) name = std::string(**n->as_string());
-    const Fields f{mt, path + ": material '" + name + "'"};
+    const Fields f{mt, path + ": material '" + Excerpt(name) + "'"};
     f.OnlyKnown({"name", "model", "roughness", "gamma", "anisotropy", "masking"});
     SceneMaterial mat;
     mat.name = f.String("name", "", true);
@@ -173,7 +225,7 @@ Scene LoadToml(const std::string& path) {
     mat.source = "toml";
     const std::string model = f.String("model", "", true);
     if (model != "ggx" && model != "beckmann" && model != "std" && model != "ggx-aniso") {
-      f.Fail("model", "'" + model + "' is not ggx, beckmann, std or ggx-aniso");
+      f.Fail("model", "'" + Excerpt(model) + "' is not ggx, beckmann, std or ggx-aniso");
     }
     mat.model = ParseModelKind(model);
     if (!ModelBuilt(mat.model)) f.Fail("model", "'" + model + "' is not in this build (BRDFBAKE_MODELS)");
@@ -184,8 +236,8 @@ Scene LoadToml(const std::string& path) {
       if (a.size() != 2 || !a[0].is_number() || !a[1].is_number()) {
         f.Fail("roughness", "a range is two numbers [min, max]");
       }
-      mat.roughness_min = a[0].value<double>().value();
-      mat.roughness_max = a[1].value<double>().value();
+      mat.roughness_min = a[0].value<double>().value() + 0.0;  // -0 as 0
+      mat.roughness_max = a[1].value<double>().value() + 0.0;
       if (!(mat.roughness_min >= 0 && mat.roughness_min <= mat.roughness_max && mat.roughness_max <= 1)) {
         f.Fail("roughness", "the range must satisfy 0 <= min <= max <= 1");
       }
@@ -194,13 +246,17 @@ Scene LoadToml(const std::string& path) {
     }
     if (mat.model == ModelKind::kStudentT) {
       const toml::node* g = mt.get("gamma");
-      if (!g) f.Fail("gamma", "missing (std needs gamma in (1.5, inf], or \"inf\")");
+      if (!g) f.Fail("gamma", "missing (std needs gamma in [1.500001, inf], or \"inf\")");
       if (g->is_string() && **g->as_string() == "inf") {
         mat.gamma = std::numeric_limits<double>::infinity();
+      } else if (g->is_floating_point()) {
+        mat.gamma = **g->as_floating_point();  // TOML's inf too
+      } else if (g->is_integer()) {
+        mat.gamma = double(**g->as_integer());
       } else {
-        mat.gamma = f.Number("gamma", 2, 1.5, 1.7976931348623157e308, true);
-        if (!(mat.gamma > 1.5)) f.Fail("gamma", "must be > 1.5");
+        f.Fail("gamma", "expected a number or \"inf\"");
       }
+      if (!StudentTGammaAllowed(mat.gamma)) f.Fail("gamma", StudentTGammaDomain(mat.gamma));
     } else if (f.Has("gamma")) {
       f.Fail("gamma", "only std has gamma");
     }
@@ -228,7 +284,7 @@ constexpr int kMaxJsonDepth = 512;  // far beyond any real glTF file
 }
 
 // The bytes of `path`, or of its first `limit` bytes.
-std::string ReadBytes(const std::string& path, size_t limit = std::string::npos) {
+std::string ReadBytes(const std::string& path, size_t limit) {
   std::ifstream in(path, std::ios::binary);
   if (!in) Bad(path + ": cannot be read");
   std::string bytes;
@@ -295,6 +351,39 @@ void CheckJsonDepth(const std::string& path, const std::string& text) {
 // The JSON type of v, for messages.
 std::string JsonType(const nlohmann::json& v) { return v.type_name(); }
 
+// A SAX pass that stops at the first key an object has twice. A JSON
+// parser keeps one of the two (nlohmann-json the last, others the first),
+// so which value a scene means is not defined; it is refused instead.
+struct DuplicateKeys {
+  using json = nlohmann::json;
+  std::vector<std::set<std::string>> objects;  // the keys of each open object
+  std::string duplicate;
+
+  bool null() { return true; }
+  bool boolean(bool) { return true; }
+  bool number_integer(json::number_integer_t) { return true; }
+  bool number_unsigned(json::number_unsigned_t) { return true; }
+  bool number_float(json::number_float_t, const json::string_t&) { return true; }
+  bool string(json::string_t&) { return true; }
+  bool binary(json::binary_t&) { return true; }
+  bool start_object(size_t) {
+    objects.emplace_back();
+    return true;
+  }
+  bool key(json::string_t& k) {
+    if (objects.back().insert(k).second) return true;
+    duplicate = k;
+    return false;
+  }
+  bool end_object() {
+    objects.pop_back();
+    return true;
+  }
+  bool start_array(size_t) { return true; }
+  bool end_array() { return true; }
+  bool parse_error(size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
+};
+
 Scene LoadGltf(const std::string& path) {
   const bool binary = Lowercase(std::filesystem::path(path).extension().string()) == ".glb";
   const std::string text = binary ? GlbJson(path) : ReadBytes(path);
@@ -305,13 +394,18 @@ Scene LoadGltf(const std::string& path) {
   } catch (const nlohmann::json::exception& e) {
     NotGltf(path, std::string("invalid JSON: ") + e.what());
   }
+  DuplicateKeys keys;
+  nlohmann::json::sax_parse(text, &keys);
+  if (!keys.duplicate.empty()) {
+    NotGltf(path, "the key '" + Excerpt(keys.duplicate) + "' appears twice in one object");
+  }
   if (!doc.is_object()) NotGltf(path, "the top level is a " + JsonType(doc) + ", not an object");
   const auto asset = doc.find("asset");
   if (asset == doc.end() || !asset->is_object()) NotGltf(path, "no 'asset' object");
   const auto version = asset->find("version");
   if (version == asset->end() || !version->is_string()) NotGltf(path, "no 'asset.version' string");
   const std::string v = version->get<std::string>();
-  if (v.rfind("2.", 0) != 0) NotGltf(path, "asset.version is '" + v + "', not 2.x");
+  if (v.rfind("2.", 0) != 0) NotGltf(path, "asset.version is '" + Excerpt(v) + "', not 2.x");
   const auto materials = doc.find("materials");
   if (materials == doc.end()) Bad(path + ": the glTF file has no materials");
   if (!materials->is_array()) NotGltf(path, "'materials' is a " + JsonType(*materials) + ", not an array");
@@ -328,7 +422,7 @@ Scene LoadGltf(const std::string& path) {
     mat.name = name != m.end() && !name->get<std::string>().empty() ? name->get<std::string>()
                                                                        : "material " + std::to_string(i);
     mat.source = "glTF material " + std::to_string(i);
-    const std::string where = path + ": material '" + mat.name + "'";
+    const std::string where = path + ": material '" + Excerpt(mat.name) + "'";
     // A number field of an object, `fallback` when absent.
     const auto number = [&](const nlohmann::json& obj, const char* key, const std::string& field,
                             double fallback) {
@@ -350,9 +444,18 @@ Scene LoadGltf(const std::string& path) {
           Bad(where + ": field 'pbrMetallicRoughness.metallicRoughnessTexture': expected an object "
                       "with an integer 'index' >= 0");
         }
+        // The texture is never read, but the index must name one.
+        const auto textures = doc.find("textures");
+        const uint64_t count = textures != doc.end() && textures->is_array() ? textures->size() : 0;
+        if (index->get<uint64_t>() >= count) {
+          Bad(where + ": field 'pbrMetallicRoughness.metallicRoughnessTexture.index': " +
+              std::to_string(index->get<uint64_t>()) + " names no texture (the file has " +
+              std::to_string(count) + ")");
+        }
         textured = true;
       }
     }
+    factor += 0.0;  // -0 as 0
     if (!(factor >= 0 && factor <= 1)) {
       Bad(where + ": field 'pbrMetallicRoughness.roughnessFactor': " + ExactText(factor) + " is outside [0, 1]");
     }
@@ -367,7 +470,9 @@ Scene LoadGltf(const std::string& path) {
     for (const auto& item : (extensions != m.end() ? *extensions : none).items()) {
       const std::string& name_ext = item.key();
       const nlohmann::json& ext = item.value();
-      if (!ext.is_object()) Bad(where + ": field 'extensions." + name_ext + "': expected an object");
+      if (!ext.is_object()) {
+        Bad(where + ": field 'extensions." + Excerpt(name_ext) + "': expected an object");
+      }
       if (name_ext == "KHR_materials_anisotropy") {
         const double strength = number(ext, "anisotropyStrength", "KHR_materials_anisotropy.anisotropyStrength", 0.0);
         if (!(strength >= 0 && strength <= 1)) {

@@ -7,7 +7,20 @@
 // must end with exit status 0, 1 or 2 (usage), never a signal; a failure prints one
 // line on stderr, nothing on stdout, and leaves no output file; a success
 // leaves a file (or CSV) whose every value is finite.
+//
+// Scene files at the limits, through `brdfbake plan` (and `bake`): nesting
+// 20,000 and 100,000 levels deep (glTF extras, TOML arrays, inline tables
+// and dotted keys), buffer and image URIs that name other files (absolute,
+// ../ traversal, %2f-encoded, a FIFO, a sparse 3 GiB file, a data: URI of
+// 6 MB), and type confusion (strings for numbers, objects for arrays,
+// negative, huge and dangling indices, NaN and Infinity literals,
+// duplicate keys, bytes that are not UTF-8, GLB containers whose lengths
+// lie). Each run ends within a minute, with exit status 0 or 1, never a
+// signal; an error is one line of at most 2000 bytes and nothing on
+// stdout; and (under strace, where it runs) no file but the scene is
+// opened.
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -26,6 +39,7 @@
 #include "brdfbake/bake.h"
 #include "brdfbake/exr.h"
 #include "util/cli_util.h"
+#include "util/file_util.h"
 
 #ifdef BRDFBAKE_CLI_PATH
 
@@ -208,6 +222,287 @@ TEST(CliFuzzTest, RandomArgumentsNeverCrashOrLeaveNonFiniteOutput) {
               error_runs);
   EXPECT_GT(ok_runs, kRuns / 5);
   EXPECT_GT(error_runs, kRuns / 5);
+}
+
+// One run of the tool on a scene file: within `seconds` (timeout), and an
+// error, if any, on one line. `expect` is "" for a scene that loads, else a
+// part of the one-line error.
+struct SceneCase {
+  std::string name;  // file name, with its extension
+  std::string text;
+  std::string expect;
+};
+
+void ExpectSceneRun(const std::string& dir, const SceneCase& c, const std::string& command = "plan") {
+  const std::string path = dir + "/" + c.name;
+  test::WriteText(path, c.text);
+  const ToolRun r = ExecuteShell("timeout 60 \"$BRDFBAKE\" " + command + " " + Quote(path) +
+                                     (command == "bake" ? " -o " + Quote(dir + "/out") : ""),
+                                 dir);
+  ASSERT_FALSE(r.signaled) << c.name << ": " << r.err.substr(0, 300);
+  ASSERT_NE(r.status, 124) << c.name << ": timed out";
+  std::string err = r.err;
+  while (!err.empty() && err.back() == '\n') err.pop_back();
+  if (c.expect.empty()) {
+    EXPECT_EQ(r.status, 0) << c.name << ": " << err.substr(0, 300);
+    EXPECT_EQ(err, "") << c.name;
+    return;
+  }
+  EXPECT_EQ(r.status, 1) << c.name << ": " << err.substr(0, 300);
+  EXPECT_EQ(err.find('\n'), std::string::npos) << c.name << ": " << err.substr(0, 300);
+  EXPECT_EQ(err.rfind("brdfbake: error: ", 0), 0u) << c.name << ": " << err.substr(0, 300);
+  EXPECT_LE(err.size(), 2100u) << c.name << ": " << err.substr(0, 300);
+  EXPECT_NE(err.find(c.expect), std::string::npos) << c.name << ": " << err.substr(0, 300);
+  EXPECT_EQ(r.out, "") << c.name;
+}
+
+const std::string kGltfHead = "{\"asset\":{\"version\":\"2.0\"},";
+const std::string kTomlMaterial = "[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\n";
+
+// A stack overflow in a recursive parser (tinygltf at 20,000 levels; toml++
+// on a table header of 100,000 dotted parts) killed the tool with SIGSEGV.
+TEST(SceneFuzzTest, DeepNestingFailsInOneLine) {
+  const std::string dir = test::Scratch("fuzz_deep");
+  for (int n : {20000, 100000}) {
+    const std::string k = std::to_string(n);
+    std::string dotted = "a";
+    for (int i = 1; i < n; ++i) dotted += ".a";
+    const SceneCase cases[] = {
+        {"arrays" + k + ".gltf",
+         kGltfHead + "\"materials\":[{\"extras\":" + std::string(n, '[') + std::string(n, ']') + "}]}",
+         "nested deeper than 512 levels"},
+        {"objects" + k + ".gltf",
+         [&] {
+           std::string t = kGltfHead + "\"materials\":[{\"extras\":";
+           for (int i = 0; i < n; ++i) t += "{\"a\":";
+           return t + "1" + std::string(n, '}') + "}]}";
+         }(),
+         "nested deeper than 512 levels"},
+        {"arrays" + k + ".toml", kTomlMaterial + "x = " + std::string(n, '[') + std::string(n, ']') + "\n",
+         "exceeded maximum nested value depth"},
+        {"tables" + k + ".toml",
+         [&] {
+           std::string t = kTomlMaterial + "x = ";
+           for (int i = 0; i < n; ++i) t += "{a=";
+           return t + "1" + std::string(n, '}') + "\n";
+         }(),
+         "exceeded maximum nested value depth"},
+        {"header" + k + ".toml", kTomlMaterial + "[" + dotted + "]\n", "a key of more than 64 dotted parts"},
+        {"key" + k + ".toml", kTomlMaterial + dotted + " = 1\n", "a key of more than 64 dotted parts"},
+    };
+    for (const SceneCase& c : cases) ExpectSceneRun(dir, c);
+  }
+  // Dots inside strings and comments, and values' decimal points, are no key.
+  ExpectSceneRun(dir, {"dots.toml",
+                       "# " + std::string(200, '.') + "\n[[material]]\nname = \"" + std::string(200, '.') +
+                           "\"\nmodel = \"ggx\"\nroughness = [0.1, 0.5]\n",
+                       ""});
+}
+
+// Whether strace can trace the tool here (it needs ptrace).
+bool CanTrace(const std::string& dir) {
+  if (!test::Have("strace")) return false;
+  return ExecuteShell("strace -f -qq -e trace=%file -o /dev/null true", dir).status == 0;
+}
+
+// Buffers and images that name other files: the scene loads (it needs only
+// its materials), nothing of those files shows in the output, the FIFO
+// does not block, and under strace no file syscall names any of them.
+// (They were followed: a FIFO hung the tool, /etc/shadow's size was
+// printed, a 2 GB image was read whole.)
+TEST(SceneFuzzTest, UrisNamingOtherFilesAreNeverOpened) {
+  const std::string root = test::Scratch("fuzz_uris");
+  const std::string dir = root + "/scenes";
+  std::filesystem::create_directories(dir);
+  const std::string secret = root + "/secret_b7.txt";
+  test::WriteText(secret, "TOPSECRET-b7 contents\n");
+  ASSERT_EQ(ExecuteShell("mkfifo " + Quote(root + "/fifo_b7") + " && truncate -s 3G " +
+                             Quote(root + "/huge_b7.bin"),
+                         root)
+                .status,
+            0);
+  const std::vector<std::string> uris = {
+      secret,
+      "../secret_b7.txt",
+      "..%2fsecret_b7.txt",
+      "%2fetc%2fpasswd",
+      "/etc/passwd",
+      "../../../../../../../../etc/passwd",
+      root + "/fifo_b7",
+      "../fifo_b7",
+      root + "/huge_b7.bin",
+      "../huge_b7.bin",
+      "file://" + secret,
+      "data:application/octet-stream;base64," + std::string(6 << 20, 'A'),
+  };
+  const bool trace = CanTrace(root);
+  if (!trace) std::printf("strace unavailable: checking output and time only\n");
+  // One scene per URI, and one with all of them, which is also baked.
+  for (size_t i = 0; i <= uris.size(); ++i) {
+    std::string buffers, images;
+    for (size_t j = 0; j < uris.size(); ++j) {
+      if (i < uris.size() && j != i) continue;
+      const std::string sep = buffers.empty() ? "" : ",";
+      buffers += sep + "{\"uri\":\"" + uris[j] + "\",\"byteLength\":16}";
+      images += sep + "{\"uri\":\"" + uris[j] + "\"}";
+    }
+    const std::string name = "uri" + std::to_string(i) + ".gltf";
+    test::WriteText(dir + "/" + name,
+                    kGltfHead + "\"buffers\":[" + buffers + "],\"images\":[" + images +
+                        "],\"textures\":[{\"source\":0}],\"materials\":[{\"name\":\"m\","
+                        "\"pbrMetallicRoughness\":{\"roughnessFactor\":0.4,"
+                        "\"metallicRoughnessTexture\":{\"index\":0}}}]}");
+    for (const std::string& command : {std::string("plan"), std::string("bake")}) {
+      if (command == "bake" && i < uris.size()) continue;
+      const std::string run = "\"$BRDFBAKE\" " + command + " " + name +
+                              (command == "bake" ? " -o " + Quote(root + "/out") : "");
+      const ToolRun r = ExecuteShell("cd " + Quote(dir) + " && timeout 60 " + run, root);
+      const std::string what = command + " " + (i < uris.size() ? uris[i].substr(0, 60) : "every URI");
+      ASSERT_FALSE(r.signaled) << what;
+      ASSERT_NE(r.status, 124) << what << ": timed out";
+      EXPECT_EQ(r.status, 0) << what << ": " << r.err.substr(0, 300);
+      EXPECT_EQ(r.err, "") << what;
+      for (const std::string& leak : {std::string("TOPSECRET"), std::string("3221225472"),
+                                      std::string("3 GiB"), std::string("root:")}) {
+        EXPECT_EQ(r.out.find(leak), std::string::npos) << what << " printed " << leak;
+      }
+      if (!trace) continue;
+      // Once more under strace, which records every system call that takes
+      // a path. (LeakSanitizer cannot run under ptrace: off for this run of
+      // a sanitized build; the run above checked for leaks.)
+      const ToolRun t = ExecuteShell("cd " + Quote(dir) +
+                                         " && ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
+                                         "timeout 60 strace -f -qq -e trace=%file -o " +
+                                         Quote(root + "/trace") + " " + run,
+                                     root);
+      ASSERT_EQ(t.status, 0) << what << " under strace: " << t.err.substr(0, 300);
+      const std::string log = test::Slurp(root + "/trace");
+      EXPECT_NE(log.find(name), std::string::npos) << "the trace has no scene open: " << log.substr(0, 300);
+      std::istringstream lines(log);
+      for (std::string line; std::getline(lines, line);) {
+        for (const std::string& named : {std::string("secret_b7"), std::string("fifo_b7"),
+                                         std::string("huge_b7"), std::string("/etc/passwd")}) {
+          EXPECT_EQ(line.find(named), std::string::npos) << what << " touched a named file: " << line;
+        }
+      }
+    }
+  }
+  std::filesystem::remove(root + "/huge_b7.bin");
+}
+
+// Values of the wrong type, out of range or malformed: refused in one line
+// naming the field, or (where the value is valid) loaded. A value of
+// megabytes is shown by its start and size.
+TEST(SceneFuzzTest, TypeConfusionFailsInOneLine) {
+  const std::string dir = test::Scratch("fuzz_types");
+  const std::string mat = kGltfHead + "\"materials\":[{\"name\":\"c\",";
+  const std::string pbr = mat + "\"pbrMetallicRoughness\":";
+  const std::string toml_std = "[[material]]\nname = \"m\"\nmodel = \"std\"\nroughness = 0.5\n";
+  const std::string toml_ggx = "[[material]]\nname = \"m\"\nmodel = \"ggx\"\n";
+  const std::string big(4 << 20, 'x');
+  const std::vector<SceneCase> cases = {
+      // glTF: strings for numbers, objects for arrays and back, booleans, null.
+      {"str.gltf", pbr + "{\"roughnessFactor\":\"0.5\"}}]}", "roughnessFactor': expected a number, got a string"},
+      {"bool.gltf", pbr + "{\"roughnessFactor\":true}}]}", "expected a number, got a boolean"},
+      {"objarr.gltf", kGltfHead + "\"materials\":{\"0\":{}}}", "'materials' is a object, not an array"},
+      {"arrobj.gltf", pbr + "[0.5]}]}", "field 'pbrMetallicRoughness': expected an object"},
+      {"extarr.gltf", mat + "\"extensions\":{\"KHR_materials_anisotropy\":[1]}}]}",
+       "field 'extensions.KHR_materials_anisotropy': expected an object"},
+      {"nullname.gltf", kGltfHead + "\"materials\":[{\"name\":null}]}", "field 'name': expected a string"},
+      {"nullmats.gltf", kGltfHead + "\"materials\":null}", "'materials' is a null, not an array"},
+      {"version.gltf", "{\"asset\":{\"version\":2.0},\"materials\":[{}]}", "no 'asset.version' string"},
+      // Indices: negative, fractional, beyond 2^64, and naming no texture.
+      {"negindex.gltf", pbr + "{\"metallicRoughnessTexture\":{\"index\":-1}}}]}", "integer 'index' >= 0"},
+      {"fracindex.gltf", pbr + "{\"metallicRoughnessTexture\":{\"index\":0.5}}}]}", "integer 'index' >= 0"},
+      {"hugeindex.gltf", pbr + "{\"metallicRoughnessTexture\":{\"index\":18446744073709551616}}}]}",
+       "integer 'index' >= 0"},
+      {"maxindex.gltf", pbr + "{\"metallicRoughnessTexture\":{\"index\":18446744073709551615}}}]}",
+       "index': 18446744073709551615 names no texture (the file has 0)"},
+      {"dangling.gltf",
+       kGltfHead + "\"textures\":[{\"source\":0}],\"materials\":[{\"pbrMetallicRoughness\":"
+                   "{\"metallicRoughnessTexture\":{\"index\":1}}}]}",
+       "1 names no texture (the file has 1)"},
+      // Numbers JSON does not have, or cannot hold.
+      {"nan.gltf", pbr + "{\"roughnessFactor\":NaN}}]}", "invalid JSON"},
+      {"inf.gltf", pbr + "{\"roughnessFactor\":Infinity}}]}", "invalid JSON"},
+      {"ninf.gltf", pbr + "{\"roughnessFactor\":-Infinity}}]}", "invalid JSON"},
+      {"overflow.gltf", pbr + "{\"roughnessFactor\":1e400}}]}", "number overflow"},
+      {"underflow.gltf", pbr + "{\"roughnessFactor\":1e-400}}]}", ""},
+      {"negzero.gltf", pbr + "{\"roughnessFactor\":-0.0}}]}", ""},
+      // Duplicate keys: which one a reader keeps is not defined.
+      {"dupkey.gltf", pbr + "{\"roughnessFactor\":0.2,\"roughnessFactor\":0.9}}]}",
+       "the key 'roughnessFactor' appears twice in one object"},
+      {"dupmats.gltf", kGltfHead + "\"materials\":[{}],\"materials\":[{}]}", "the key 'materials' appears twice"},
+      // Bytes that are not UTF-8, a NUL, and a byte-order mark (allowed).
+      {"latin1.gltf", kGltfHead + "\"materials\":[{\"name\":\"\xff\xfe\x80\"}]}", "ill-formed UTF-8"},
+      {"latin1key.gltf", kGltfHead + "\"materials\":[{\"\xff\":1}]}", "ill-formed UTF-8"},
+      {"nul.gltf", kGltfHead + "\"materials\":[{\"name\":\"a" + '\0' + "b\"}]}", "NUL"},
+      {"bom.gltf", "\xef\xbb\xbf" + kGltfHead + "\"materials\":[{}]}", ""},
+      // Megabytes where a name or version goes.
+      {"longname.gltf", kGltfHead + "\"materials\":[{\"name\":\"" + big +
+                            "\",\"pbrMetallicRoughness\":{\"roughnessFactor\":2}}]}",
+       "xxx... (4194304 bytes)'"},
+      {"longversion.gltf", "{\"asset\":{\"version\":\"" + big + "\"},\"materials\":[{}]}", "(4194304 bytes)"},
+      // TOML.
+      {"str.toml", toml_ggx + "roughness = \"0.5\"\n", "field 'roughness': expected a number"},
+      {"table.toml", toml_ggx + "roughness = {a = 1}\n", "field 'roughness': expected a number"},
+      {"strs.toml", toml_ggx + "roughness = [\"a\", \"b\"]\n", "a range is two numbers"},
+      {"nan.toml", toml_ggx + "roughness = nan\n", "nan is outside [0, 1]"},
+      {"negnan.toml", toml_ggx + "roughness = -nan\n", "nan is outside [0, 1]"},
+      {"inf.toml", toml_ggx + "roughness = inf\n", "inf is outside [0, 1]"},
+      {"int.toml", toml_ggx + "roughness = 99999999999999999999\n", "not representable in 64 bits"},
+      {"date.toml", toml_ggx + "roughness = 1979-05-27\n", "field 'roughness': expected a number"},
+      {"negzero.toml", toml_ggx + "roughness = -0.0\n", ""},
+      {"dupkey.toml", toml_ggx + "roughness = 0.5\nroughness = 0.6\n", "cannot redefine"},
+      {"duptable.toml", "[engine]\npixel = \"half\"\n[engine]\npixel = \"float\"\n" + kTomlMaterial,
+       "cannot redefine existing table 'engine'"},
+      {"mattable.toml", "[material]\nname = \"m\"\n", "'material' must be an array of tables"},
+      {"enginearray.toml", "engine = [1]\n" + kTomlMaterial, "'engine' must be a table"},
+      {"mixed.toml", "[engine]\ntables = [\"E\", 1]\n" + kTomlMaterial, "expected an array of strings"},
+      {"lut.toml", "[engine]\nmax_lut_size = -9223372036854775808\n" + kTomlMaterial, "is outside [2, 8192]"},
+      {"nameint.toml", "[[material]]\nname = 5\nmodel = \"ggx\"\nroughness = 0.5\n", "field 'name': expected a string"},
+      {"gammastr.toml", toml_std + "gamma = \"1.6\"\n", "field 'gamma': expected a number or \"inf\""},
+      {"gammanan.toml", toml_std + "gamma = nan\n", "gamma': must be >= 1.500001 or inf"},
+      {"gammaninf.toml", toml_std + "gamma = -inf\n", "gamma': must be >= 1.500001 or inf"},
+      {"gammainf.toml", toml_std + "gamma = inf\n", ""},
+      {"latin1.toml", "[[material]]\nname = \"\xff\xfe\"\nmodel = \"ggx\"\nroughness = 0.5\n", "invalid utf-8"},
+      {"latin1key.toml", kTomlMaterial + "\xff = 1\n", "invalid utf-8"},
+      {"nul.toml", "[[material]]\nname = \"m" + std::string(1, '\0') + "\"\nmodel = \"ggx\"\nroughness = 0.5\n",
+       "control characters"},
+      {"longkey.toml", kTomlMaterial + big + " = 1\n", "field 'xxx"},
+      {"longmodel.toml", "[[material]]\nname = \"m\"\nmodel = \"" + big + "\"\nroughness = 0.5\n",
+       "(4194304 bytes)' is not ggx"},
+  };
+  for (const SceneCase& c : cases) ExpectSceneRun(dir, c);
+  // GLB containers whose header or chunk lengths lie.
+  const auto le32 = [](uint32_t v) {
+    std::string b(4, '\0');
+    for (int k = 0; k < 4; ++k) b[k] = char((v >> (8 * k)) & 0xff);
+    return b;
+  };
+  std::string json = kGltfHead + "\"materials\":[{\"name\":\"g\"}]}";
+  while (json.size() % 4) json += ' ';
+  const auto glb = [&](uint32_t version, uint32_t total, uint32_t chunk, const std::string& type,
+                       const std::string& body) {
+    return "glTF" + le32(version) + le32(total) + le32(chunk) + type + body;
+  };
+  const uint32_t size = uint32_t(20 + json.size()), len = uint32_t(json.size());
+  const std::string bin("BIN\0", 4);
+  const std::vector<SceneCase> glbs = {
+      {"ok.glb", glb(2, size, len, "JSON", json), ""},
+      {"chunkmax.glb", glb(2, size, 0xffffffffu, "JSON", json), "the GLB lengths exceed the file"},
+      {"totalmax.glb", glb(2, 0xffffffffu, len, "JSON", json), "the GLB lengths exceed the file"},
+      {"totalzero.glb", glb(2, 0, len, "JSON", json), "the GLB lengths exceed the file"},
+      {"totalsmall.glb", glb(2, 12, len, "JSON", json), "the GLB lengths exceed the file"},
+      {"chunkover.glb", glb(2, size, len + 4, "JSON", json), "the GLB lengths exceed the file"},
+      {"chunkzero.glb", glb(2, size, 0, "JSON", json), "invalid JSON"},
+      {"chunkshort.glb", glb(2, size, len - 3, "JSON", json), "invalid JSON"},
+      {"binfirst.glb", glb(2, size, len, bin, json), "the first GLB chunk is not JSON"},
+      {"version.glb", glb(0xffffffffu, size, len, "JSON", json), "GLB version 4294967295, not 2"},
+      {"header.glb", "glTF" + le32(2) + le32(12), "shorter than a GLB header"},
+      {"garbage.glb", glb(2, size, len, "JSON", std::string(json.size(), '\xff')), "invalid JSON"},
+  };
+  for (const SceneCase& c : glbs) ExpectSceneRun(dir, c);
 }
 
 }  // namespace

@@ -971,6 +971,52 @@ TEST(DomainTest, SelLobeIsFiniteUpToTheBound) {
   }
 }
 
+// gamma in (1.5, 1.5 + 1e-6) was evaluated at 1.5 + 1e-6 while the header
+// recorded the gamma asked for (0.7047 stored where E is 0.2798): refused
+// wherever a user gives a gamma, with the floor in the message.
+TEST(DomainTest, GammaBelowTheFloorIsRefused) {
+  const std::string dir = ScratchDir("gamma_floor");
+  const std::string o = dir + "/E.exr";
+  const std::string why = "must be >= 1.500001 or inf (the STD's mean slope diverges at 1.5; got ";
+  const std::string error = "brdfbake: error: gamma " + why + "1.5000001)\n";
+  const ToolRun bake = Execute({"bake", "--table", "E", "--model", "std", "--gamma", "1.5000001", "-o", o}, dir);
+  ExpectOneLineError(bake, "bake --gamma 1.5000001");
+  EXPECT_EQ(bake.err, error);
+  const ToolRun eval = Execute({"eval", "--model", "std", "--gamma", "1.5000001", "--quantity", "E",
+                                "--roughness", "1", "--mu-o", "1"}, dir);
+  ExpectOneLineError(eval, "eval --gamma 1.5000001");
+  EXPECT_EQ(eval.err, error);
+  EXPECT_EQ(eval.out, "");
+  ExpectOneLineError(Execute({"bake", "--table", "E", "--model", "std", "--size", "4x4x3", "--range",
+                              "gamma=1.5000001:inf", "-o", o}, dir),
+                     "gamma axis from 1.5000001",
+                     "--range: the gamma axis must satisfy 1.500001 <= min < max <= inf (the STD's "
+                     "mean slope diverges at 1.5; got 1.5000001:inf)");
+  WriteText(dir + "/scene.toml",
+            "[[material]]\nname = \"m\"\nmodel = \"std\"\ngamma = 1.5000001\nroughness = 0.5\n");
+  ExpectOneLineError(Execute({"plan", dir + "/scene.toml"}, dir), "scene gamma 1.5000001",
+                     "field 'gamma': " + why + "1.5000001)");
+  EXPECT_FALSE(std::filesystem::exists(o));
+  // The library's check: the floor itself and inf are in, the double below is out.
+  ModelParams p;
+  p.kind = ModelKind::kStudentT;
+  for (const double g : {kMinStudentTGamma<double>, 2.0, std::numeric_limits<double>::infinity()}) {
+    p.gamma = g;
+    EXPECT_NO_THROW(ValidateModelParams(p)) << g;
+  }
+  for (const double g : {std::nextafter(kMinStudentTGamma<double>, 0.0), 1.5000001, 1.5,
+                         std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::infinity()}) {
+    p.gamma = g;
+    EXPECT_THROW(ValidateModelParams(p), std::invalid_argument) << g;
+  }
+  // At the floor the bake runs and records the gamma it evaluated.
+  const ToolRun floor = Execute({"bake", "--table", "E", "--model", "std", "--gamma", "1.500001", "--size",
+                                 "2x2", "-o", o}, dir);
+  ASSERT_EQ(floor.status, 0) << floor.err;
+  EXPECT_EQ(nlohmann::json::parse(ReadExr(o).Attribute("brdfbake.model"))["gamma"].get<double>(),
+            kMinStudentTGamma<double>);
+}
+
 TEST(DomainTest, HugeGammaIsBeckmann) {
   const BeckmannNdf<double> beckmann(0.3, 0.3);
   for (const double gamma : {1e16, 1e19, 1e20, std::ldexp(1.0, 1023), 1.7e308,

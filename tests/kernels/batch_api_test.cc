@@ -356,7 +356,7 @@ TEST(BatchDomainTest, ParametersOutsideTheDomainThrowBeforeWriting) {
       {"alpha_y", ModelKind::kBeckmann, [](BatchModel* p, float v) { p->alpha_y = v; },
        {0.0f, -0.5f, nan}},
       {"gamma", ModelKind::kStudentT, [](BatchModel* p, float v) { p->gamma = v; },
-       {1.5f, 1.0f, nan}},
+       {1.5f, 1.0f, nan, 1.5000001f, 1.50000095f}},
       {"theta_x", ModelKind::kEllipsoid, [](BatchModel* p, float v) { p->theta_x = v; },
        {2.0f, nan, -inf}},
       {"theta_z", ModelKind::kSel, [](BatchModel* p, float v) { p->theta_z = v; }, {-1.6f}},
@@ -401,9 +401,24 @@ TEST(BatchDomainTest, ParametersOutsideTheDomainThrowBeforeWriting) {
     }
   }
   EXPECT_GE(refused, 60);
-  // The ends of the domain are accepted.
+  // gamma just above 1.5, below the floor 1.5 + 1e-6 where the models would
+  // evaluate it: refused with the domain named, not evaluated at the floor.
   BatchModel p;
   float out[4];
+  if (ModelBuilt(ModelKind::kStudentT)) {
+    p.kind = ModelKind::kStudentT;
+    p.gamma = 1.5000001f;
+    EXPECT_EQ(ErrorOf([&] { EvalBatch(p, Quantity::kD, w, out, 4); }),
+              "EvalBatch: gamma must be >= 1.500001 or inf (the STD's mean slope diverges at 1.5; "
+              "got 1.5000001192092896)");
+    p.gamma = 1.5000011f;  // the smallest float at or above the floor
+    EXPECT_EQ(ErrorOf([&] { EvalBatch(p, Quantity::kBrdf, w, w, out, 4); }), "");
+    for (float o : out) EXPECT_TRUE(std::isfinite(o));
+    p.gamma = std::numeric_limits<float>::infinity();
+    EXPECT_EQ(ErrorOf([&] { EvalBatch(p, Quantity::kBrdf, w, w, out, 4); }), "");
+    p = BatchModel{};
+  }
+  // The ends of the domain are accepted.
   for (float a : {1e-30f, 1e-4f, 1e4f}) {
     p.alpha_x = p.alpha_y = a;
     EXPECT_EQ(ErrorOf([&] { EvalBatch(p, Quantity::kBrdf, w, w, out, 4); }), "") << a;

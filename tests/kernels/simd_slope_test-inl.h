@@ -163,8 +163,8 @@ inline void CheckDLambda(const Dirs& m, const std::vector<float>& d_out,
 const float kAlphas[][2] = {{1e-4f, 1e-4f}, {1e-3f, 1e-3f}, {0.05f, 0.05f}, {0.3f, 0.3f},
                             {1.0f, 1.0f},   {1.0f, 1e-3f},  {2e-3f, 0.8f}};
 
-// 1.5000001f is the float just above 1.5, evaluated at 1.5 + 1e-6.
-const float kGammas[] = {1.5000001f, 1.501f, 1.6f, 2.0f, 3.0f,  7.5f,
+// 1.5000011f (1.50000107...) is the smallest float in the domain, >= 1.5 + 1e-6.
+const float kGammas[] = {1.5000011f, 1.501f, 1.6f, 2.0f, 3.0f,  7.5f,
                          30.0f, 1e4f,   1e6f, 1e9f, 2e10f, std::numeric_limits<float>::infinity()};
 
 // The BRDF of either model against Brdf(ndf, Schlick, ...) in double.

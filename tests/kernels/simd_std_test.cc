@@ -171,7 +171,7 @@ void CheckStudentTPseudoVnis() {
   const Dirs wo = Views(n, 21);
   const std::vector<float> u1 = Uniforms(n, 22), u2 = Uniforms(n, 23);
   std::vector<float> mx(n), my(n), mz(n), pdf(n);
-  const float gammas[] = {1.5000001f, 1.501f, 2.0f,  3.0f, 4.5f, 6.0f,  7.5f,
+  const float gammas[] = {1.5000011f, 1.501f, 2.0f,  3.0f, 4.5f, 6.0f,  7.5f,
                           9.0f, 12.0f,  30.0f, 1e4f, 1e6f, 2e10f, HUGE_VALF};
   const float alphas[][2] = {{1e-4f, 1e-4f}, {0.01f, 0.01f}, {0.05f, 0.05f}, {0.15f, 0.15f},
                              {0.25f, 0.25f}, {0.3f, 0.3f},   {0.6f, 0.6f},   {1.0f, 1.0f},

@@ -28,6 +28,13 @@ namespace brdfbake {
 // found in closed form, and the integrand is smooth on it.
 // `phi_o` turns wo (and the half vectors with it) about the normal: the
 // arc conditions depend only on the azimuth relative to wo.
+// Not smooth everywhere for the STD below gamma 2: Lambda(wi) has a cusp
+// at wi = n (it rises like theta_i^(2 gamma - 2)), which for mu < 1 lies
+// inside the (theta_h, phi_h) domain, at theta_h = theta_o / 2 (for
+// mu = 1 at its end, theta_h = 0). Near gamma = 1.5 the cusp is steep and
+// the result is off there: at gamma 1.500001, alpha 0.25, mu 0.984375 by
+// 5.7e-6 of E (the baker's rules and a product Gauss-Legendre rule in
+// (theta_i, phi_i) agree to 1e-15). Use it there at mu = 1 only.
 template <class Ndf>
 inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double tol,
                             double phi_o = 0.0) {

@@ -243,7 +243,10 @@ TEST(SceneTest, MalformedScenesGetOneLineErrorsNamingTheField) {
       {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = [0.6, 0.2]\n", "field 'roughness': the range"},
       {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = [0.1]\n", "field 'roughness': a range is two numbers"},
       {"[[material]]\nname = \"m\"\nmodel = \"std\"\nroughness = 0.5\n", "material 'm': field 'gamma': missing"},
-      {"[[material]]\nname = \"m\"\nmodel = \"std\"\ngamma = 1.2\nroughness = 0.5\n", "field 'gamma'"},
+      {"[[material]]\nname = \"m\"\nmodel = \"std\"\ngamma = 1.2\nroughness = 0.5\n",
+       "field 'gamma': must be >= 1.500001 or inf (the STD's mean slope diverges at 1.5; got 1.2)"},
+      {"[[material]]\nname = \"m\"\nmodel = \"std\"\ngamma = 1.5000001\nroughness = 0.5\n",
+       "field 'gamma': must be >= 1.500001 or inf (the STD's mean slope diverges at 1.5; got 1.5000001)"},
       {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\ngamma = 3\nroughness = 0.5\n", "field 'gamma': only std"},
       {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\ncolour = 1\n", "field 'colour': unknown field"},
       {"[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\nmasking = \"none\"\n", "field 'masking'"},
@@ -396,6 +399,56 @@ TEST(SceneTest, GlbReadsTheJsonChunk) {
   }
 }
 
+// Seeded random GLB containers: the header's version and lengths, the
+// chunk's type and the file's length drawn from edge values (0, 1, the
+// true lengths +- 1 and 4, 2^31 - 1, 2^32 - 1) and at random. Every load
+// either succeeds or throws one line naming the file; nothing past the
+// file is read and no length is trusted.
+TEST(SceneTest, FuzzedGlbContainersNeverCrash) {
+  const std::string dir = Scratch("glb_fuzz");
+  const auto le32 = [](uint32_t v) {
+    std::string b(4, '\0');
+    for (int k = 0; k < 4; ++k) b[k] = char((v >> (8 * k)) & 0xff);
+    return b;
+  };
+  std::string json = "{\"asset\":{\"version\":\"2.0\"},\"materials\":[{\"name\":\"g\"}]}";
+  while (json.size() % 4) json += ' ';
+  std::mt19937_64 rng(4242);
+  const auto edge = [&](uint32_t truth) {
+    const uint32_t values[] = {0u, 1u, truth - 4, truth - 1, truth, truth, truth + 1, truth + 4,
+                               0x7fffffffu, 0xffffffffu, uint32_t(rng())};
+    return values[rng() % (sizeof(values) / sizeof(values[0]))];
+  };
+  int ok = 0, rejected = 0;
+  for (int run = 0; run < 400; ++run) {
+    const uint32_t len = uint32_t(json.size()), total = 20 + len + 8 + 16;
+    std::string body = json;
+    if (rng() % 4 == 0) {
+      for (char& c : body) c = rng() % 8 == 0 ? char(rng()) : c;
+    }
+    const std::string types[] = {"JSON", std::string("BIN\0", 4), "json", std::string(4, '\0')};
+    std::string glb = "glTF" + le32(rng() % 6 == 0 ? uint32_t(rng() % 4) : 2u) + le32(edge(total)) +
+                      le32(edge(len)) + (rng() % 6 == 0 ? types[rng() % 4] : types[0]) + body +
+                      le32(edge(16)) + std::string("BIN\0", 4) + std::string(16, '\x7f');
+    if (rng() % 4 == 0) glb.resize(rng() % (glb.size() + 1));
+    const std::string path = dir + "/g" + std::to_string(run) + ".glb";
+    test::WriteText(path, glb);
+    try {
+      const Scene s = LoadScene(path);
+      ASSERT_FALSE(s.materials.empty()) << path;
+      ++ok;
+    } catch (const std::invalid_argument& e) {
+      const std::string msg = e.what();
+      ASSERT_EQ(msg.rfind(path, 0), 0u) << msg;
+      ASSERT_EQ(msg.find('\n'), std::string::npos) << msg;
+      ++rejected;
+    }
+  }
+  std::printf("400 random GLB containers: %d loaded, %d rejected with a one-line error\n", ok, rejected);
+  EXPECT_GT(ok, 10);
+  EXPECT_GT(rejected, 200);
+}
+
 // Material names with terminal controls (ESC, BEL, a newline), a C1
 // control (U+0085) and a bidirectional override (U+202E) are printed by
 // the plan as escapes, never raw.
@@ -426,7 +479,11 @@ TEST(SceneTest, FuzzedScenesNeverCrash) {
   const std::string gltf = Slurp(kExamples + "/scene.gltf");
   std::mt19937_64 rng(2026);
   const std::vector<std::string> tokens = {"\"\"", "-1", "1e400", "nan", "[", "]", "{", "}", "=", "\"x\"",
-                                           "true", "[0.5, 0.1]", "\n", "\"inf\"", "0x10", ",", ":", "null"};
+                                           "true", "[0.5, 0.1]", "\n", "\"inf\"", "0x10", ",", ":", "null",
+                                           // Type confusion and bytes parsers trip on.
+                                           "NaN", "Infinity", "-0.0", "1e-400", "18446744073709551616",
+                                           "{\"a\":1,\"a\":2}", "a.b.c", "\xff\xfe", "\"\\u0000\"",
+                                           "\"roughness\" = \"0.5\"", "{\"index\":-1}"};
   int ok = 0, rejected = 0;
   for (int run = 0; run < 300; ++run) {
     const bool is_toml = run % 3 != 0;

@@ -67,6 +67,9 @@ void ForceTargetOption(const std::string& target) {
 // A message on one line: control characters (a newline inside an argument,
 // say), C1 controls and bidirectional overrides shown as escapes.
 std::string OneLine(const std::string& s) { return brdfbake::Printable(s); }
+// An error message as printed: on one line, and at most 2000 bytes (a value
+// of megabytes, from a file or an argument, is shown by its start and size).
+std::string ErrorLine(const std::string& s) { return brdfbake::Excerpt(OneLine(s), 2000); }
 
 // One strict grammar for every number on the command line: a decimal
 // number (optional sign, digits, optional fraction and exponent; no hex, no
@@ -202,7 +205,7 @@ struct ModelOptions {
     app->add_option("--alpha-y", alpha_y, "alpha along the bitangent")
         ->check(kNumber);
     app->add_option("--roughness,-r", roughness, "perceptual roughness r, alpha = r^2 (both axes)");
-    app->add_option("--gamma", gamma, "std: tail parameter in (1.5, inf]; 'inf' is Beckmann")
+    app->add_option("--gamma", gamma, "std: tail parameter in [1.500001, inf]; 'inf' is Beckmann")
         ->capture_default_str();
     app->add_option("--theta-x", theta_x_deg, "ellipsoid/sel: rotation about x, degrees")
         ->check(kNumber);
@@ -363,13 +366,13 @@ struct BakeOptions {
                     "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm)")
         ->capture_default_str();
     app->add_option("--gamma", gamma,
-                    "std: tail parameter in (1.5, inf]; without it, a third --size entry bakes "
+                    "std: tail parameter in [1.500001, inf]; without it, a third --size entry bakes "
                     "over a gamma axis")
         ->capture_default_str();
     app->add_option("--size", size,
                     "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
                         (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
-                        "gamma slices over (1.5, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
+                        "gamma slices over [1.501, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
                         "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y");
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
@@ -377,7 +380,7 @@ struct BakeOptions {
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
-                    "gamma=min:max within (1.5, inf], default 1.501:inf; phi_o in radians within "
+                    "gamma=min:max within [1.500001, inf], default 1.501:inf; phi_o in radians within "
                     "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid)");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
@@ -1199,17 +1202,17 @@ int main(int argc, char** argv) {
         std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
       std::string list;
       for (const std::string& c : commands) list += (list.empty() ? "" : ", ") + c;
-      std::fprintf(stderr, "brdfbake: error: unknown command '%s' (expected %s)%s\n", OneLine(argv[1]).c_str(),
+      std::fprintf(stderr, "brdfbake: error: unknown command '%s' (expected %s)%s\n", ErrorLine(argv[1]).c_str(),
                    list.c_str(), brdfbake::DidYouMean(argv[1], commands).c_str());
       return 2;
     }
-    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s (see brdfbake --help)\n", ErrorLine(e.what()).c_str());
     return 2;
   }
   bool extras = !app.remaining().empty();
   for (const CLI::App* sub : app.get_subcommands()) extras |= !sub->remaining().empty();
   if (extras) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(ExtrasMessage(app, argc, argv, bake_opts.scene)).c_str());
     return 2;
   }
 
@@ -1227,7 +1230,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "brdfbake: error: out of memory\n");
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(e.what()).c_str());
     return 1;
   }
   if (!FlushStdout()) {

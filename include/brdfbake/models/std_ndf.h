@@ -61,7 +61,9 @@
 // tends to the Beckmann value smoothly.
 //
 // gamma is clamped below at kMinStudentTGamma = 1.5 + 1e-6: the mean slope, hence
-// Lambda, diverges as 1 / (2 gamma - 3) when gamma -> 1.5. gamma = +inf
+// Lambda, diverges as 1 / (2 gamma - 3) when gamma -> 1.5. A gamma a user gives
+// is checked against the same floor and refused below it (ValidateModelParams
+// in model.h), so the clamp only guards internal callers. gamma = +inf
 // delegates every hook to the Beckmann formulas (beckmann.h) bit for bit.
 //
 // Typos found in [Ribardiere17] (each checked numerically):
@@ -111,7 +113,8 @@
 
 namespace brdfbake {
 
-// Lower clamp of gamma ([Ribardiere17] requires gamma > 1.5 for a finite Lambda).
+// Lower clamp of gamma ([Ribardiere17] requires gamma > 1.5 for a finite Lambda),
+// and the lower end of the domain users may give (StudentTGammaAllowed).
 template <typename T>
 inline constexpr T kMinStudentTGamma = T(1.5) + T(1e-6);
 

@@ -50,7 +50,7 @@ const AzimuthLadder& AzimuthLadder::Get(double ratio) {
 }
 
 std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
-                                  double horizon_widen) {
+                                  double horizon_widen, double normal_scale) {
   constexpr double kHalfPi = 1.5707963267948966;
   // Breakpoints: the peak, graded from 2 alpha outwards (ratio 3), and the horizon,
   // graded from the nearer of its singularities (see the header).
@@ -64,6 +64,17 @@ std::vector<double> AzimuthalMesh(double theta_o, double lambda_o, double alpha,
   }
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  if (normal_scale < kHalfPi) {
+    // G2's pole at -normal_scale: no piece [a, b] wider than b = 3 a + 2 s.
+    std::vector<double> graded = {pts[0]};
+    for (size_t i = 1; i < pts.size(); ++i) {
+      while (pts[i] > 3 * graded.back() + 2 * normal_scale) {
+        graded.push_back(3 * graded.back() + 2 * normal_scale);
+      }
+      graded.push_back(pts[i]);
+    }
+    pts.swap(graded);
+  }
   return pts;
 }
 

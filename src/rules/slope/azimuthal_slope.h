@@ -160,6 +160,12 @@ class SlopeAzimuthalE : public AzimuthalFrame {
         separable_(masking == Masking::kSeparable),
         ladder_ratio_(LadderRatio(ndf, with_bias ? 0.5 * tol : tol)) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
+    if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) {
+      if (ndf.gamma() < 2) {
+        normal_scale_ =
+            NormalPoleScale([&](double a) { return ndf.UnitLambda(a); }, alpha_, lambda_o_);
+      }
+    }
   }
 
   double lambda_o() const { return lambda_o_; }
@@ -172,6 +178,10 @@ class SlopeAzimuthalE : public AzimuthalFrame {
     }
     return 1.0;
   }
+
+  // The theta_i mesh's grading from the normal (NormalPoleScale; the STD
+  // below gamma 2 only).
+  double normal_scale() const { return normal_scale_; }
 
   SlopeConsts slope_consts() const {
     return {alpha_, lambda_o_, separable_, ladder_ratio_};
@@ -246,6 +256,7 @@ class SlopeAzimuthalE : public AzimuthalFrame {
   bool separable_;
   double ladder_ratio_;
   double lambda_o_ = 0;
+  double normal_scale_ = std::numeric_limits<double>::infinity();
 };
 
 // E (and with `with_bias` dfg.bias and scale) of an isotropic slope-space
@@ -256,7 +267,7 @@ AzimuthalDfgResult SlopeAzimuthalDfgWith(const Ndf& ndf, double mu, Masking mask
                                          const Nodes& nodes) {
   const SlopeAzimuthalE<Ndf> f(ndf, mu, masking, tol, with_bias);
   return AdaptiveAzimuthalRule(
-      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen()),
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen(), f.normal_scale()),
       [&](const double* theta, AzimuthalValues* out) {
         f.EvalPiece(theta, with_bias, nodes, out);
       },

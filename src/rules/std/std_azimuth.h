@@ -131,6 +131,10 @@ class StdAzimuthalE : public MomentAzimuthalE {
         ndf_(&ndf),
         moments_(&StdAzimuthMomentsFor(ndf.gamma())) {
     lambda_o_ = LambdaAt(mu_o, s_o_);
+    if (ndf.gamma() < 2) {
+      normal_scale_ =
+          NormalPoleScale([&](double a) { return ndf.UnitLambda(a); }, alpha_, lambda_o_);
+    }
   }
 
   const StdAzimuthMoments& moments() const { return *moments_; }
@@ -138,6 +142,10 @@ class StdAzimuthalE : public MomentAzimuthalE {
   // The factor on the theta_i mesh's horizon scale: SlopeAzimuthalE's
   // (kept with the table: a property of gamma).
   double horizon_widen() const { return moments_->horizon_widen(); }
+
+  // The theta_i mesh's grading from the normal (NormalPoleScale; below
+  // gamma 2 only, where Lambda(wi) rises more steeply than theta_i^2).
+  double normal_scale() const { return normal_scale_; }
 
   double gamma() const { return ndf_->gamma(); }
 
@@ -163,6 +171,7 @@ class StdAzimuthalE : public MomentAzimuthalE {
 
   const StudentTNdf<double>* ndf_;
   const StdAzimuthMoments* moments_;
+  double normal_scale_ = std::numeric_limits<double>::infinity();
 };
 
 // E(mu) of the isotropic STD at finite gamma by the adaptive rule over
@@ -172,8 +181,9 @@ template <class Eval>
 RuleResult StdAzimuthalAlbedoWith(const StudentTNdf<double>& ndf, double mu, Masking masking,
                                        double tol, int max_pieces, const Eval& eval) {
   const StdAzimuthalE f(ndf, mu, masking);
-  return AlbedoOnMesh(AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen()), tol,
-                      max_pieces, [&](const double* theta, double* out) { eval(f, theta, out); });
+  return AlbedoOnMesh(
+      AzimuthalMesh(f.theta_o(), f.lambda_o(), f.alpha(), f.horizon_widen(), f.normal_scale()), tol,
+      max_pieces, [&](const double* theta, double* out) { eval(f, theta, out); });
 }
 
 // The double scalar reference.
