@@ -18,9 +18,10 @@ libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libzstd-dev libgtest-dev lib
 # shaders with glslang, run the GLSL and WGSL lookups in headless Chromium
 # (WebGL2, and WebGPU on its SwiftShader Vulkan), import the three.js and
 # KTX2 files with node and the pinned readers of tests/js/package.json,
-# and build the installed package with pkg-config.
+# build the installed package with pkg-config and trace the scene fuzz's
+# file system calls with strace.
 if [ "$mode" = test ]; then
-  packages="$packages openimageio-tools glslang-tools chromium libvulkan1 pkgconf"
+  packages="$packages openimageio-tools glslang-tools chromium libvulkan1 pkgconf strace"
 fi
 missing=""
 for p in $packages; do
