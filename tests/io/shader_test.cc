@@ -26,6 +26,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/containers.h"
+#include "brdfbake/model.h"
 #include "brdfbake/presets.h"
 #include "brdfbake/shaders.h"
 #include "util/file_util.h"
@@ -90,8 +91,10 @@ Case PresetCase(const std::string& preset, size_t table) {
 // Small tables of every kind the lookups read: a gamma axis (3 axes; E_avg
 // 2), ggx-aniso (4 axes; E_avg 2), the ellipsoid (mu x phi_o), and
 // single-entry axes (one roughness; one anisotropy in a 4-axis table).
+// The families this build leaves out (BRDFBAKE_MODELS) are skipped.
 std::vector<Case> KindCases() {
   std::vector<Case> cases;
+  const auto built = [](const Case& c) { return ModelBuilt(c.spec.model.kind); };
   auto centres = [](Axis& a, int n) {
     a.size = n;
     a.placement = Placement::kCenters;
@@ -152,6 +155,7 @@ std::vector<Case> KindCases() {
     s.roughness.min = s.roughness.max = 0.45;
     cases.push_back({"dfg_one_roughness", "", 0, s});
   }
+  cases.erase(std::remove_if(cases.begin(), cases.end(), [&](const Case& c) { return !built(c); }), cases.end());
   return cases;
 }
 
