@@ -114,7 +114,7 @@ std::string ReadBytes(const std::string& path, size_t limit = std::string::npos)
 
 // toml++ bounds the nesting of values (arrays, inline tables) at 256 levels,
 // but not of dotted keys: a table header [a.a.a...] of 100,000 parts
-// overflowed its recursion. A scene needs two levels; a key of more than
+// overflows its recursion. A scene needs two levels; a key of more than
 // kMaxTomlKeyParts parts is refused before parsing. The dots are counted
 // outside strings and comments, in runs that [ ] { } = , and line ends
 // close (so a value's decimal point counts alone).

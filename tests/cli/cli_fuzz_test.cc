@@ -259,8 +259,9 @@ void ExpectSceneRun(const std::string& dir, const SceneCase& c, const std::strin
 const std::string kGltfHead = "{\"asset\":{\"version\":\"2.0\"},";
 const std::string kTomlMaterial = "[[material]]\nname = \"m\"\nmodel = \"ggx\"\nroughness = 0.5\n";
 
-// A stack overflow in a recursive parser (tinygltf at 20,000 levels; toml++
-// on a table header of 100,000 dotted parts) killed the tool with SIGSEGV.
+// A recursive parser overflows its stack on deep enough nesting (toml++ on
+// a table header of 100,000 dotted parts): such files are refused before
+// they are parsed.
 TEST(SceneFuzzTest, DeepNestingFailsInOneLine) {
   const std::string dir = test::Scratch("fuzz_deep");
   for (int n : {20000, 100000}) {
@@ -307,9 +308,9 @@ bool CanTrace(const std::string& dir) {
 
 // Buffers and images that name other files: the scene loads (it needs only
 // its materials), nothing of those files shows in the output, the FIFO
-// does not block, and under strace no file syscall names any of them.
-// (They were followed: a FIFO hung the tool, /etc/shadow's size was
-// printed, a 2 GB image was read whole.)
+// does not block, and under strace no file syscall names any of them
+// (opened, a FIFO would block the tool, a missing or short file reveal its
+// existence or size, and a huge one be read whole).
 TEST(SceneFuzzTest, UrisNamingOtherFilesAreNeverOpened) {
   const std::string root = test::Scratch("fuzz_uris");
   const std::string dir = root + "/scenes";

@@ -971,9 +971,10 @@ TEST(DomainTest, SelLobeIsFiniteUpToTheBound) {
   }
 }
 
-// gamma in (1.5, 1.5 + 1e-6) was evaluated at 1.5 + 1e-6 while the header
-// recorded the gamma asked for (0.7047 stored where E is 0.2798): refused
-// wherever a user gives a gamma, with the floor in the message.
+// A gamma in (1.5, 1.5 + 1e-6), evaluated at the models' floor 1.5 + 1e-6
+// under a header naming the gamma asked for, would store 0.7047 where E is
+// 0.2798 (mu = 1, r = 1/31, gamma 1.5000001): it is refused wherever a
+// user gives a gamma, with the floor in the message.
 TEST(DomainTest, GammaBelowTheFloorIsRefused) {
   const std::string dir = ScratchDir("gamma_floor");
   const std::string o = dir + "/E.exr";

@@ -146,8 +146,9 @@ TEST(StdAzimuthTest, LanesAgreeWithTheScalarReference) {
 // Near gamma = 1.5, Lambda(wi) rises from the normal like theta_i / (2 gamma
 // - 3), so at mu = 1 G2 falls by half within theta_i ~ 9e-6 / alpha at
 // gamma 1.500001 (NormalPoleScale, azimuthal.h). A mesh piece much wider
-// than that layer missed it in G7 and K15 alike: at roughness 1 E was
-// 4.0941208e-6 with a claim of 7.3e-11, 2.0e-10 from the truth. Every rule
+// than that layer misses it in G7 and K15 alike (at roughness 1, one piece
+// over [0, pi/2] gives 4.0941208e-6 with a claim of 7.3e-11, 2.0e-10 from
+// the truth), so the mesh is graded down to it. Every rule
 // a bake of E or dfg uses there (scalar and lanes; tabulated and numerical
 // azimuth; IntegrateTexel as `eval --quantity E` runs it) claims at least
 // its error against the half-vector integration to 1e-14 (tanh-sinh; at
