@@ -56,11 +56,15 @@ struct PresetRun {
 };
 
 // A file a preset bake writes: its path, the table it holds (-1 for the
-// shared header) and what it is ("dfg (bevy)", "glsl lookup of dfg").
+// shared header), what it is ("dfg (bevy)", "glsl lookup of dfg"), and
+// either the container it is written in or the language of its lookup.
 struct PresetFile {
   std::string path;
   int table = -1;
   std::string what;
+  Container container = Container::kHeader;
+  bool lookup = false;
+  ShaderLanguage language = ShaderLanguage::kGlsl;  // when `lookup`
 };
 
 // The files `run` writes, in order, so that each can be checked before any

@@ -335,11 +335,13 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
     const PresetTable& pt = preset.tables[k];
     if (!pt.file.empty()) {
       files.push_back({TablePath(preset, pt, run), int(k),
-                       std::string(TableName(pt.spec.table)) + " (" + preset.name + ")"});
+                       std::string(TableName(pt.spec.table)) + " (" + preset.name + ")",
+                       ContainerFor(preset, pt, run.format)});
     }
     for (ShaderLanguage l : run.shaders) {
       files.push_back({ShaderFile(run, pt, l), int(k),
-                       std::string(ShaderLanguageName(l)) + " lookup of " + pt.symbol});
+                       std::string(ShaderLanguageName(l)) + " lookup of " + pt.symbol, Container::kHeader, true,
+                       l});
     }
   }
   bool any_file = false;
@@ -350,7 +352,7 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
   }
   if (!preset.header_file.empty()) {
     files.push_back({run.dir + "/" + preset.header_file, -1,
-                     std::to_string(preset.tables.size()) + " tables (" + preset.name + ")"});
+                     std::to_string(preset.tables.size()) + " tables (" + preset.name + ")", Container::kHeader});
   }
   return files;
 }
@@ -375,15 +377,11 @@ void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vec
     const PresetTable& pt = preset.tables[f.table];
     const Table& t = tables[f.table];
     const Image& im = images[f.table];
-    bool shader = false;
-    for (ShaderLanguage l : run.shaders) {
-      if (f.path == ShaderFile(run, pt, l)) {
-        WriteFileAtomically(f.path, ShaderFunction(t, im, l, "brdfbake_" + pt.symbol));
-        shader = true;
-      }
+    if (f.lookup) {
+      WriteFileAtomically(f.path, ShaderFunction(t, im, f.language, "brdfbake_" + pt.symbol));
+      continue;
     }
-    if (shader) continue;
-    const Container c = ContainerFor(preset, pt, run.format);
+    const Container c = f.container;
     if (c == pt.container && pt.form == EngineForm::kThreeDfgModule) {
       WriteFileAtomically(f.path, ThreeDfgModule(t, im, preset.name));
       continue;

@@ -766,10 +766,7 @@ int RunPreset(const BakeOptions& opts) {
     held += brdfbake::BakeOutputBytes(pt.spec);
   }
   for (const brdfbake::PresetFile& f : files) {
-    if (f.what.find(" lookup of ") != std::string::npos) continue;
-    const brdfbake::Container c =
-        f.table < 0 ? brdfbake::Container::kHeader : brdfbake::ContainerFromPath(f.path);
-    brdfbake::CheckContainerMemory(c, all_values, held, f.path);
+    if (!f.lookup) brdfbake::CheckContainerMemory(f.container, all_values, held, f.path);
   }
   for (const brdfbake::PresetTable& pt : preset.tables) {
     brdfbake::BakeSpec spec = pt.spec;
@@ -783,8 +780,7 @@ int RunPreset(const BakeOptions& opts) {
   }
   brdfbake::WritePresetFiles(preset, run, tables, images);
   for (const brdfbake::PresetFile& f : files) {
-    const bool lookup = f.what.find(" lookup of ") != std::string::npos;
-    if (f.table >= 0 && !lookup) {
+    if (f.table >= 0 && !f.lookup) {
       PrintWrote(f.path, tables[f.table], f.what, &images[f.table]);
     } else {
       std::printf("wrote %s: %s\n", OneLine(f.path).c_str(), f.what.c_str());
