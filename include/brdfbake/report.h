@@ -67,6 +67,20 @@ using ReportLog = std::function<void(const std::string&)>;
 
 Report RunReport(const ReportSpec& spec, const ReportLog& log = nullptr);
 
+// The isotropic GGX width a collapse gives for alpha_t, alpha_b and the
+// view's azimuth phi_o from the tangent: "geometric-mean" sqrt(alpha_t
+// alpha_b) (Cycles, MaterialX, Enterprise PBR), "arithmetic-mean", or
+// "view-projected" sqrt(alpha_t^2 cos^2 phi_o + alpha_b^2 sin^2 phi_o).
+double CollapsedAlpha(const std::string& collapse, double alpha_t, double alpha_b, double phi_o);
+
+// The collapse study (report --model ggx-aniso): for each entry of the
+// spec's anisotropy axis and each collapse, the largest and RMS difference
+// of the isotropic value at the collapsed width (exact, no table lookup)
+// from the anisotropic one, over the spec's mu, phi_o and roughness axes
+// (E), or over roughness (E_avg, whose collapses take no view).
+std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const std::vector<std::string>& collapses,
+                                       const ReportLog& say = nullptr);
+
 // Writes DIR/report.csv, DIR/report.svg, DIR/interpolation.csv and
 // DIR/interpolation.svg (each through a temporary file and a rename); for
 // ggx-aniso, DIR/collapse.csv and DIR/collapse.svg.

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "brdfbake/output_file.h"
+#include "brdfbake/probe.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
 
 namespace brdfbake {
@@ -55,103 +56,79 @@ InterpolationRow GammaInterpolation(const BakeSpec& base, int n, int probes) {
   BakeSpec s = base;
   s.gamma.size = n;
   const Table t = Bake(s);
-  const bool eavg = s.table == TableKind::kEavg;
-  const int cells = s.gamma.placement == Placement::kEdges ? n - 1 : n - 1;
-  const int pg = std::min(cells, probes);
-  const int pr = std::min(s.roughness.size, probes);
-  const int pm = eavg ? 1 : std::min(s.mu.size, probes);
-  const int values = s.table == TableKind::kDfg ? 2 : 1;
-  // Exact values computed in parallel; the reduction below is serial so
-  // the result does not depend on the thread count.
-  std::vector<double> exact(size_t(pg) * pr * pm * values), interp(exact.size());
-  const int64_t slice = int64_t(t.width) * (eavg ? 1 : s.roughness.size);
-  tbb::parallel_for(0, pg * pr * pm, [&](int k) {
-    const int cg = (k / (pr * pm)) * cells / pg;
-    const int y = ((k / pm) % pr) * s.roughness.size / pr;
-    const int x = eavg ? y : (k % pm) * s.mu.size / pm;
-    BakeSpec one = s;
-    one.gamma.size = 0;
-    one.model.gamma = s.gamma.ValueAt(cg + 0.5);
-    const double r = std::max(s.roughness.Value(y), s.roughness.clamp_min);
-    const int64_t at = eavg ? x : int64_t(y) * t.width + x;
-    double v[2];
-    if (eavg) {
-      v[0] = IntegrateEavg(one, r).value;
-    } else {
-      const TexelEstimate e = IntegrateTexel(one, r, std::max(s.mu.Value(x), s.mu.clamp_min));
-      v[0] = s.table == TableKind::kE ? e.e : e.scale;
-      v[1] = e.bias;
-    }
-    for (int c = 0; c < values; ++c) {
-      const std::vector<double>& vals = t.channels[c].values;
-      exact[size_t(k) * values + c] = v[c];
-      interp[size_t(k) * values + c] = 0.5 * (vals[cg * slice + at] + vals[(cg + 1) * slice + at]);
-    }
-  });
+  ProbeOptions o;
+  o.probes = o.minor_probes = probes;
+  o.stored = false;
+  for (const Axis& a : t.axes) o.points.push_back(a.name == "gamma" ? ProbePoints::kMidpoints : ProbePoints::kNodes);
+  const ProbeResult p = LookupError(t, o);
   InterpolationRow row;
   row.size = n;
-  double sum2 = 0;
-  for (size_t i = 0; i < exact.size(); ++i) {
-    const double d = std::abs(interp[i] - exact[i]);
-    row.max_abs_error = std::max(row.max_abs_error, d);
-    sum2 += d * d;
-  }
-  row.max_abs_error_inner = row.max_abs_error;
-  row.probes = int(exact.size());
-  row.rms_error = exact.empty() ? 0 : std::sqrt(sum2 / exact.size());
+  row.max_abs_error = row.max_abs_error_inner = p.max_abs_error;
+  row.rms_error = p.rms_error;
+  row.probes = int(p.probes);
   row.bake_seconds = t.seconds;
   return row;
 }
 
-// The isotropic widths the collapses give for alpha_t, alpha_b and the
-// view's azimuth phi_o from the tangent.
+}  // namespace
+
 double CollapsedAlpha(const std::string& collapse, double at, double ab, double phi) {
   // Cycles uses sqrt(sqrt(alpha_t alpha_b)) as roughness, MaterialX and
   // Enterprise PBR the geometric mean: both are alpha = sqrt(alpha_t alpha_b).
   if (collapse == "geometric-mean") return std::sqrt(at * ab);
   if (collapse == "arithmetic-mean") return 0.5 * (at + ab);
+  if (collapse != "view-projected") throw std::invalid_argument("unknown collapse '" + collapse + "'");
   // The width the view sees: Lambda(wo) of the anisotropic GGX equals the
   // isotropic one at this alpha, so G1(wo) is exact.
   const double c = std::cos(phi), s = std::sin(phi);
   return std::sqrt(at * at * c * c + ab * ab * s * s);
 }
 
-std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const ReportLog& say) {
-  const char* const collapses[] = {"geometric-mean", "arithmetic-mean", "view-projected"};
-  const int nm = spec.mu.size, np = spec.phi.size, nr = spec.roughness.size;
+std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const std::vector<std::string>& collapses,
+                                       const ReportLog& say) {
+  const bool eavg = spec.table == TableKind::kEavg;
+  const int nm = eavg ? 1 : spec.mu.size, np = eavg ? 1 : spec.phi.size, nr = spec.roughness.size;
+  const int nc = int(collapses.size());
+  for (const std::string& c : collapses) {
+    CollapsedAlpha(c, 1, 1, 0);  // a known name
+    if (eavg && c == "view-projected") throw std::invalid_argument("E_avg has no view to project onto");
+  }
   std::vector<CollapseRow> rows;
   for (int ys = 0; ys < spec.anisotropy.size; ++ys) {
     const double s = spec.anisotropy.Value(ys);
-    // True E and the three collapsed values at every (mu, phi_o, r), in
-    // parallel; the reduction is serial (thread-count independent).
-    std::vector<double> truth(size_t(nm) * np * nr), iso(truth.size() * 3);
+    // True E (or E_avg) and the collapsed values at every (mu, phi_o, r),
+    // in parallel; the reduction is serial (thread-count independent).
+    std::vector<double> truth(size_t(nm) * np * nr), iso(truth.size() * nc);
     tbb::parallel_for(0, nm * np * nr, [&](int k) {
       const int x = k % nm, yp = (k / nm) % np, yr = k / (nm * np);
       const double r = std::max(spec.roughness.Value(yr), spec.roughness.clamp_min);
-      const double mu = std::max(spec.mu.Value(x), spec.mu.clamp_min), phi = spec.phi.Value(yp);
-      truth[k] = std::clamp(IntegrateAnisoTexel(spec, r, s, mu, phi).e, 0.0, 1.0);
+      const double mu = eavg ? 1.0 : std::max(spec.mu.Value(x), spec.mu.clamp_min);
+      const double phi = eavg ? 0.0 : spec.phi.Value(yp);
+      truth[k] = std::clamp(eavg ? IntegrateAnisoEavg(spec, r, s).value : IntegrateAnisoTexel(spec, r, s, mu, phi).e,
+                            0.0, 1.0);
       BakeSpec g;
       g.masking = spec.masking;
       g.tolerance = spec.tolerance;
       const double at = AnisotropyAlphaT(r, s), ab = r * r;
-      for (int c = 0; c < 3; ++c) {
-        const double alpha = CollapsedAlpha(collapses[c], at, ab, phi);
-        iso[size_t(k) * 3 + c] = std::clamp(IntegrateTexel(g, std::sqrt(alpha), mu).e, 0.0, 1.0);
+      for (int c = 0; c < nc; ++c) {
+        const double alpha = CollapsedAlpha(collapses[size_t(c)], at, ab, phi);
+        const double v = eavg ? IntegrateEavg(g, std::sqrt(alpha)).value : IntegrateTexel(g, std::sqrt(alpha), mu).e;
+        iso[size_t(k) * nc + c] = std::clamp(v, 0.0, 1.0);
       }
     });
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < nc; ++c) {
       CollapseRow row;
       row.anisotropy = s;
-      row.collapse = collapses[c];
+      row.collapse = collapses[size_t(c)];
       double sum2 = 0;
       for (size_t k = 0; k < truth.size(); ++k) {
-        const double d = std::abs(iso[k * 3 + c] - truth[k]);
+        const double d = std::abs(iso[k * nc + c] - truth[k]);
         sum2 += d * d;
         if (d > row.max_abs_error) {
           row.max_abs_error = d;
           row.worst_roughness = spec.roughness.Value(int(k) / (nm * np));
-          row.worst_mu = spec.mu.Value(int(k) % nm);
-          row.worst_phi = spec.phi.Value((int(k) / nm) % np);
+          row.worst_mu = eavg ? 0.0 : spec.mu.Value(int(k) % nm);
+          row.worst_phi = eavg ? 0.0 : spec.phi.Value((int(k) / nm) % np);
         }
       }
       row.rms_error = truth.empty() ? 0 : std::sqrt(sum2 / truth.size());
@@ -166,6 +143,8 @@ std::vector<CollapseRow> CollapseStudy(const BakeSpec& spec, const ReportLog& sa
   }
   return rows;
 }
+
+namespace {
 
 // The converged reference of the report's table.
 Table ReferenceTable(const ReportSpec& spec, const ReportLog& say) {
@@ -248,69 +227,19 @@ bool PlaneInterpolation(const BakeSpec& s_in, int n, int interpolation_probes,
   const bool one_d = s.table == TableKind::kEavg;
   s.roughness.size = n;
   if (!one_d) s.mu.size = n;
-  if ((s.roughness.placement == Placement::kEdges && n < 2) || n < 1) return false;
+  if (n < 2) return false;  // no cell to probe
   const Table t = Bake(s);
-  const int cells_r = n - 1;
-  const int cells_m = one_d ? 1 : n - 1;
-  if (cells_r < 1 || cells_m < 1) return false;
-  const int pr = std::min(cells_r, interpolation_probes);
-  const int pm = one_d ? 1 : std::min(cells_m, interpolation_probes);
-  // Exact values at the probe points, computed in parallel; the reduction
-  // below is serial so the result does not depend on the thread count.
-  struct Probe {
-    int cr, cm;
-    std::vector<double> exact;
-  };
-  std::vector<Probe> probes(static_cast<size_t>(pr) * pm);
-  tbb::parallel_for(0, pr * pm, [&](int k) {
-    const int a = k / pm, b = k % pm;
-    Probe& p = probes[k];
-    p.cr = (a * cells_r) / pr;
-    p.cm = one_d ? 0 : (b * cells_m) / pm;
-    const double r = s.roughness.ValueAt(p.cr + 0.5);
-    if (one_d) {
-      BakeSpec one = s;
-      one.roughness.size = 1;
-      one.roughness.placement = Placement::kCenters;
-      one.roughness.min = one.roughness.max = r;
-      one.roughness.warp = Warp::kLinear;
-      p.exact.push_back(Bake(one).channels[0].values[0]);
-    } else {
-      const TexelEstimate v = IntegrateTexel(s, r, s.mu.ValueAt(p.cm + 0.5));
-      if (s.table == TableKind::kE) {
-        p.exact.push_back(v.e);
-      } else {
-        p.exact.push_back(v.scale);
-        p.exact.push_back(v.bias);
-      }
-    }
-  });
-  double max_err = 0, max_err_inner = 0, sum2 = 0;
-  int count = 0;
-  for (const Probe& p : probes) {
-    for (size_t c = 0; c < p.exact.size(); ++c) {
-      const std::vector<double>& vals = t.channels[c].values;
-      double interp;
-      if (one_d) {
-        interp = 0.5 * (vals[p.cr] + vals[p.cr + 1]);
-      } else {
-        const int w = t.width;
-        interp = 0.25 * (vals[p.cr * w + p.cm] + vals[p.cr * w + p.cm + 1] +
-                         vals[(p.cr + 1) * w + p.cm] + vals[(p.cr + 1) * w + p.cm + 1]);
-      }
-      const double d = std::abs(interp - p.exact[c]);
-      max_err = std::max(max_err, d);
-      if (one_d || p.cm > 0) max_err_inner = std::max(max_err_inner, d);
-      sum2 += d * d;
-      ++count;
-    }
-  }
+  ProbeOptions o;
+  o.points.assign(t.axes.size(), ProbePoints::kMidpoints);
+  o.probes = interpolation_probes;
+  o.stored = false;
+  const ProbeResult p = LookupError(t, o);
   InterpolationRow& row = *out;
   row.size = n;
-  row.max_abs_error = max_err;
-  row.max_abs_error_inner = max_err_inner;
-  row.rms_error = count ? std::sqrt(sum2 / count) : 0;
-  row.probes = count;
+  row.max_abs_error = p.max_abs_error;
+  row.max_abs_error_inner = p.max_abs_error_inner;
+  row.rms_error = p.rms_error;
+  row.probes = int(p.probes);
   row.bake_seconds = t.seconds;
   return true;
 }
@@ -331,7 +260,7 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
     if (spec.table.table != TableKind::kE) {
       throw std::invalid_argument("report: ggx-aniso reports the collapse study of E (--table E)");
     }
-    report.collapse = CollapseStudy(spec.table, say);
+    report.collapse = CollapseStudy(spec.table, {"geometric-mean", "arithmetic-mean", "view-projected"}, say);
     return report;
   }
   const Table ref = ReferenceTable(spec, say);
