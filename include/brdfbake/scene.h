@@ -9,10 +9,13 @@
 #ifndef BRDFBAKE_SCENE_H_
 #define BRDFBAKE_SCENE_H_
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/containers.h"
 #include "brdfbake/presets.h"
 #include "brdfbake/shaders.h"
 
@@ -25,6 +28,10 @@ struct SceneMaterial {
   double gamma = 2;  // std
   double anisotropy = 0;  // ggx-aniso strength (glTF KHR_materials_anisotropy)
   Masking masking = Masking::kHeightCorrelated;
+  // glTF KHR_materials_clearcoat: a GGX layer (IOR 1.5) over the base at
+  // its own roughness; clearcoat = 0 is no layer.
+  double clearcoat = 0;
+  double clearcoat_roughness_min = 0, clearcoat_roughness_max = 0;
   std::string source;  // "toml" or "glTF material 3"
   // Features brdfbake recognises but does not bake tables for (glTF
   // extensions), each with the table it would need.
@@ -40,12 +47,26 @@ struct SceneEngine {
   std::vector<TableKind> tables = {TableKind::kDfg, TableKind::kE, TableKind::kEavg};
   bool header = false;                  // a C++ header beside each EXR
   std::vector<ShaderLanguage> shaders;  // lookup functions beside each EXR
+  // An engine preset (presets.h): the tables are baked in its layouts and
+  // containers. Empty: brdfbake's own EXR files.
+  std::string preset;
+  // The container of each table without a preset (exr, header, js, ktx2,
+  // dds, inc), or another container the preset's engine loads; empty: EXR
+  // (or the engine's own).
+  std::string format;
+  bool unorm16 = false;  // --pixel unorm16: 16-bit fixed point (dds)
 };
+
+// Command-line settings that override the scene's, recorded in the
+// manifest, as (option, value) in the order given: --preset, --format,
+// --pixel, --shader, --max-size, --error-target.
+using SceneOverrides = std::vector<std::pair<std::string, std::string>>;
 
 struct Scene {
   std::string path;
   SceneEngine engine;
   std::vector<SceneMaterial> materials;
+  SceneOverrides overrides;  // those applied (ApplySceneOverrides)
 };
 
 // Reads a TOML scene (.toml) or a glTF 2.0 file (.gltf, .glb). Throws
@@ -53,42 +74,62 @@ struct Scene {
 // field.
 Scene LoadScene(const std::string& path);
 
+// Applies command-line overrides to a loaded scene and records them. Throws
+// std::invalid_argument naming the option for a value out of its domain or
+// one the scene's engine fixes.
+void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides);
+
 struct PlannedTable {
   BakeSpec spec;
-  std::string file;                    // file name in the output directory
+  std::string group;                   // the material group: ggx, std_g3, ggx-aniso, ...
+  std::string file;                    // the table's file in the output directory
   std::vector<std::string> materials;  // who needs it
   std::string why;
-  double interpolation_error = 0;  // measured at cell midpoints
-  double total_error = 0;          // interpolation + the stored values' claim
+  // The lookup error (LookupError, probe.h: every place the table is not
+  // smooth), and the bound the plan states: it plus the stored values'
+  // claim (and the rounding of the engine's pixel type).
+  double interpolation_error = 0;
+  double total_error = 0;
+  // The largest error of a material that looks this table up at a
+  // collapsed roughness (anisotropic GGX as isotropic), measured by the
+  // collapse study; 0 if none does. The target is met when total_error +
+  // collapse_error is within it.
+  double collapse_error = 0;
   bool meets_target = false;
-  Table table;  // as baked while choosing the resolution
+  bool size_fixed = false;  // the engine's layout fixes the size
+  std::string hint;         // when the target is not met: the size and warp that would meet it
+  Table table;              // as baked while choosing the resolution
+  ImageLayout layout;       // how it is written (the engine's layout, or brdfbake's own)
 };
 
 struct ScenePlan {
   std::vector<PlannedTable> tables;
+  // How anisotropic and clearcoat materials are served, and why.
+  std::vector<std::string> decisions;
   std::vector<std::string> notes;  // materials or features not baked, and why
 };
 
 // The minimal set of tables, each at the smallest size (and mu warp) whose
-// bilinear lookup meets the error target; `progress` gets one line per
-// candidate tried.
+// bilinear lookup meets the error target. Anisotropic GGX groups get the
+// smaller of the 4D ggx-aniso tables over their (r, s) box and the
+// isotropic tables looked up at the collapsed roughness that meets the
+// target; clearcoat layers the isotropic GGX tables. `progress` gets one
+// line per candidate tried.
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress = nullptr);
 
-// The files a bake of `scene` writes into `dir` (each table's EXR, its
-// header and shader files, the manifest): known before the plan, so that
-// they can be checked (CheckOutputPath) before its work.
+// The files a bake of `scene` may write into `dir` (each table's file, its
+// header and shader files, the manifest; for an anisotropic group, those
+// of both choices): known before the plan, so that they can be checked
+// (CheckOutputPath) before its work.
 std::vector<std::string> SceneOutputFiles(const Scene& scene, const std::string& dir);
 
 // What `plan` prints.
 std::string PlanText(const Scene& scene, const ScenePlan& plan);
 
 // Writes every planned table into `dir` (EXR, and the header and shader
-// functions the engine asked for) and dir/manifest.json; returns the paths.
+// functions the engine asked for, or the engine preset's files) and
+// dir/manifest.json; returns the paths.
 std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& plan, const std::string& dir);
-
-// The largest error of a bilinear lookup of `t` at the midpoints of its
-// cells (up to `probes` cells per axis), against the exact values.
-double InterpolationError(const Table& t, int probes = 12);
 
 }  // namespace brdfbake
 

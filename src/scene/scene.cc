@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -19,7 +20,6 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
-#include <tbb/parallel_for.h>
 #include <toml++/toml.h>
 
 #include "base/error.h"
@@ -27,7 +27,10 @@
 #include "brdfbake/exr.h"
 #include "brdfbake/models/slope_ndf.h"
 #include "brdfbake/output_file.h"
+#include "brdfbake/probe.h"
+#include "brdfbake/report.h"
 #include "brdfbake/version.h"
+#include "rules/ggx_aniso/aniso_ggx.h"
 
 namespace brdfbake {
 namespace {
@@ -157,6 +160,18 @@ void CheckTomlKeyDepth(const std::string& path, const std::string& text) {
   }
 }
 
+// An engine preset's name in a scene: FindPreset's message after `where`.
+void CheckScenePreset(const std::string& where, const std::string& name) {
+  try {
+    FindPreset(name);
+  } catch (const std::invalid_argument& e) {
+    std::string what = e.what();
+    const std::string prefix = "--preset: ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    Bad(where + ": " + what);
+  }
+}
+
 Scene LoadToml(const std::string& path) {
   const std::string text = ReadBytes(path);
   CheckTomlKeyDepth(path, text);
@@ -176,10 +191,24 @@ Scene LoadToml(const std::string& path) {
       Bad(path + ": unknown section '" + Excerpt(key) + "' (expected [engine] and [[material]])");
     }
   }
-  if (const toml::node* e = root.get("engine")) {
-    if (!e->is_table()) Bad(path + ": 'engine' must be a table ([engine])");
+  if (const toml::node* e = root.get("engine"); e && e->is_string()) {
+    // engine = "bevy": the engine preset alone, every other setting its own
+    // or the default.
+    s.engine.preset = std::string(**e->as_string());
+    CheckScenePreset(path + ": field 'engine'", s.engine.preset);
+  } else if (e) {
+    if (!e->is_table()) Bad(path + ": 'engine' must be a table ([engine]) or an engine preset's name (engine = \"bevy\")");
     const Fields f{*e->as_table(), path + ": [engine]"};
-    f.OnlyKnown({"max_lut_size", "pixel", "placement", "error_target", "complement", "tables", "header", "shaders"});
+    f.OnlyKnown({"preset", "max_lut_size", "pixel", "placement", "error_target", "complement", "tables", "header",
+                 "shaders"});
+    if (f.Has("preset")) {
+      s.engine.preset = f.String("preset", "");
+      CheckScenePreset(path + ": [engine]: field 'preset'", s.engine.preset);
+      // The engine's layout fixes these.
+      for (const char* fixed : {"pixel", "placement", "complement", "header"}) {
+        if (f.Has(fixed)) f.Fail(fixed, "fixed by the engine preset '" + s.engine.preset + "' (its layout and containers)");
+      }
+    }
     const double lut = f.Number("max_lut_size", 64, 2, 8192);
     if (lut != std::floor(lut)) f.Fail("max_lut_size", ExactText(lut) + " is not an integer");
     s.engine.max_lut_size = int(lut);
@@ -489,7 +518,28 @@ Scene LoadGltf(const std::string& path) {
       } else if (name_ext == "KHR_materials_sheen") {
         mat.unsupported.push_back({name_ext, "a sheen (Charlie NDF) albedo table over roughness"});
       } else if (name_ext == "KHR_materials_clearcoat") {
-        mat.unsupported.push_back({name_ext, "the clearcoat layer's GGX tables at its own roughness (not planned yet)"});
+        // A GGX layer (IOR 1.5) at its own roughness; a roughness texture
+        // modulates the factor over [0, factor].
+        const std::string field = "KHR_materials_clearcoat.";
+        const double factor_cc = number(ext, "clearcoatFactor", field + "clearcoatFactor", 0.0) + 0.0;
+        const double rough_cc = number(ext, "clearcoatRoughnessFactor", field + "clearcoatRoughnessFactor", 0.0) + 0.0;
+        for (const auto& [key, value] : {std::pair<const char*, double>{"clearcoatFactor", factor_cc},
+                                         {"clearcoatRoughnessFactor", rough_cc}}) {
+          if (!(value >= 0 && value <= 1)) {
+            Bad(where + ": field '" + field + key + "': " + ExactText(value) + " is outside [0, 1]");
+          }
+        }
+        for (const char* key : {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}) {
+          const auto tex = ext.find(key);
+          if (tex == ext.end()) continue;
+          const auto index = tex->is_object() ? tex->find("index") : tex->end();
+          if (!tex->is_object() || index == tex->end() || !index->is_number_unsigned()) {
+            Bad(where + ": field '" + field + key + "': expected an object with an integer 'index' >= 0");
+          }
+        }
+        mat.clearcoat = factor_cc;
+        mat.clearcoat_roughness_max = rough_cc;
+        mat.clearcoat_roughness_min = ext.contains("clearcoatRoughnessTexture") ? 0.0 : rough_cc;
       } else {
         mat.unsupported.push_back({name_ext, "an extension brdfbake does not know"});
       }
@@ -507,27 +557,444 @@ std::string GroupKey(const SceneMaterial& m) {
   return k;
 }
 
-// The exact values a table's channels hold at (mu, r), in channel order.
-std::vector<double> ExactAt(const Table& t, double mu, double r) {
-  const BakeSpec& s = t.spec;
-  std::vector<double> out;
-  if (s.table == TableKind::kEavg) {
-    BakeSpec e = s;
-    e.table = TableKind::kE;
-    const double v = std::clamp(IntegrateEavg(e, std::max(r, s.roughness.clamp_min)).value, 0.0, 1.0);
-    out.push_back(s.complement ? 1 - v : v);
-    return out;
-  }
-  const TexelEstimate v = ClampToRange(IntegrateTexel(s, std::max(r, s.roughness.clamp_min), std::max(mu, s.mu.clamp_min)));
-  if (s.table == TableKind::kE) {
-    out.push_back(s.complement ? 1 - v.e : v.e);
-  } else {
-    out.push_back(v.scale);
-    out.push_back(v.bias);
-    if (s.complement) out.push_back(1 - v.e);
-  }
-  return out;
+// The isotropic GGX group of a masking: where clearcoat layers and
+// anisotropic materials looked up at their collapsed roughness go.
+std::string IsoKey(Masking m) { return m == Masking::kSeparable ? "ggx_separable" : "ggx"; }
+
+// The collapse engines use (Cycles: sqrt(sqrt(alpha_x alpha_y)) as
+// roughness; MaterialX and Enterprise PBR: the geometric mean of the
+// widths): r_c = (alpha_t alpha_b)^(1/4).
+constexpr const char* kCollapse = "geometric-mean";
+double CollapsedRoughness(double r, double s) {
+  return std::sqrt(CollapsedAlpha(kCollapse, AnisotropyAlphaT(r, s), AlphaFromRoughness(r), 0));
 }
+
+// An identifier from a file stem (E_std_g1.6 -> E_std_g1_6).
+std::string Identifier(std::string s) {
+  for (char& c : s) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return s;
+}
+
+const char* ExtensionOf(Container c) {
+  switch (c) {
+    case Container::kExr: return ".exr";
+    case Container::kHeader: return ".h";
+    case Container::kJs: return ".js";
+    case Container::kKtx2: return ".ktx2";
+    case Container::kDds: return ".dds";
+    case Container::kInc: return ".inc";
+  }
+  return ".exr";
+}
+
+// The preset's table of a kind, or nullptr.
+const PresetTable* EngineTable(const Preset& preset, TableKind kind) {
+  for (const PresetTable& pt : preset.tables) {
+    if (pt.spec.table == kind) return &pt;
+  }
+  return nullptr;
+}
+
+// The engine samples its table at normalized coordinates over texel
+// centres and reads its size from the file (an image, or the module's
+// texture): the scene may choose the size. A header array (Cycles,
+// Enterprise PBR), an .inc body (Filament: DFG_LUT_SIZE) or edges placement
+// (HDRP's remap by the texture's resolution) fixes it.
+bool EngineFixesSize(const Preset& preset, const PresetTable& pt) {
+  return !preset.header_file.empty() || pt.container == Container::kHeader || pt.container == Container::kInc ||
+         pt.spec.mu.placement != Placement::kCenters || pt.spec.roughness.placement != Placement::kCenters;
+}
+
+// The table kinds a scene bakes: the engine's, and under a preset only
+// those its engine samples.
+std::vector<TableKind> SceneKinds(const Scene& scene) {
+  if (scene.engine.preset.empty()) return scene.engine.tables;
+  const Preset& preset = FindPreset(scene.engine.preset);
+  std::vector<TableKind> kinds;
+  for (TableKind k : scene.engine.tables) {
+    if (EngineTable(preset, k)) kinds.push_back(k);
+  }
+  return kinds;
+}
+
+// One table slot of a plan: its kind and material group; `generic` when
+// the engine has no layout for it (the ggx-aniso tables under a preset).
+struct Slot {
+  TableKind kind;
+  std::string group;
+  bool generic = false;
+};
+
+// The file name of a slot without a preset: E_ggx.exr.
+std::string TableFile(const Scene& scene, const Slot& slot) {
+  const Container c = scene.engine.format.empty() ? Container::kExr : ParseContainer(scene.engine.format);
+  return std::string(TableName(slot.kind)) + "_" + slot.group + ExtensionOf(c);
+}
+
+std::string Stem(const std::string& f) { return std::filesystem::path(f).replace_extension().string(); }
+
+// The preset a scene bake writes through: the engine's tables, one per
+// slot, renamed for groups other than height-correlated GGX (the engine's
+// own model), and brdfbake's EXR for the tables the engine has no layout
+// for. `specs` and `layouts` (parallel to `slots`) may be empty when only
+// the file names are needed.
+Preset ScenePreset(const Scene& scene, const std::vector<Slot>& slots, const std::vector<const PlannedTable*>& planned) {
+  const Preset& engine = FindPreset(scene.engine.preset);
+  Preset p;
+  p.name = engine.name;
+  p.description = engine.description;
+  p.header_file = engine.header_file;
+  p.header_form = engine.header_form;
+  for (size_t i = 0; i < slots.size(); ++i) {
+    const Slot& slot = slots[i];
+    PresetTable t;
+    const PresetTable* et = slot.generic ? nullptr : EngineTable(engine, slot.kind);
+    if (et) {
+      t = *et;
+      if (slot.group != "ggx") {
+        if (!t.file.empty()) {
+          const std::filesystem::path f(t.file);
+          t.file = f.stem().string() + "_" + slot.group + f.extension().string();
+        }
+        t.symbol += "_" + Identifier(slot.group);
+      }
+    } else {
+      t.spec.table = slot.kind;
+      t.container = Container::kExr;
+      t.also = {Container::kKtx2, Container::kDds};
+      t.file = std::string(TableName(slot.kind)) + "_" + slot.group + ".exr";
+      t.symbol = Identifier(Stem(t.file));
+    }
+    if (i < planned.size() && planned[i]) {
+      t.spec = planned[i]->spec;
+      t.layout = planned[i]->layout;
+    }
+    p.tables.push_back(t);
+  }
+  return p;
+}
+
+PresetRun ScenePresetRun(const Scene& scene, const std::string& dir) {
+  PresetRun run;
+  run.dir = dir;
+  run.format = scene.engine.format;
+  run.shaders = scene.engine.shaders;
+  return run;
+}
+
+// Every file written for `slots` into dir, then the manifest; with a
+// preset, PresetFiles' list.
+std::vector<std::string> FilesOf(const Scene& scene, const std::vector<Slot>& slots, const std::string& dir) {
+  std::vector<std::string> files;
+  if (!scene.engine.preset.empty()) {
+    for (const PresetFile& f : PresetFiles(ScenePreset(scene, slots, {}), ScenePresetRun(scene, dir))) {
+      files.push_back(f.path);
+    }
+  } else {
+    for (const Slot& slot : slots) {
+      const std::string f = TableFile(scene, slot);
+      files.push_back(dir + "/" + f);
+      if (scene.engine.header) files.push_back(dir + "/" + Stem(f) + ".h");
+      for (ShaderLanguage l : scene.engine.shaders) files.push_back(dir + "/" + Stem(f) + "." + ShaderLanguageName(l));
+    }
+  }
+  files.push_back(dir + "/manifest.json");
+  return files;
+}
+
+// An anisotropic group's box: its materials' roughness and anisotropy.
+struct AnisoBox {
+  double rmin = 1, rmax = 0, smin = 1, smax = 0;
+};
+
+// Axis over [lo, hi] with n entries (one entry at lo = hi: centres).
+void SetAxis(Axis* a, double lo, double hi, int n, Placement placement) {
+  a->min = lo;
+  a->max = hi;
+  a->size = lo == hi ? 1 : n;
+  a->placement = lo == hi ? Placement::kCenters : placement;
+}
+
+int64_t Texels(const Table& t) { return int64_t(t.width) * t.height; }
+
+// The texels a bake of `spec` holds (E, E_avg, dfg of the scene's models).
+int64_t SpecTexels(const BakeSpec& s) {
+  const int64_t r = s.roughness.size;
+  if (s.Anisotropic()) {
+    const int64_t rs = r * s.anisotropy.size;
+    return s.table == TableKind::kEavg ? rs : rs * s.mu.size * s.phi.size;
+  }
+  return s.table == TableKind::kEavg ? r : r * s.mu.size;
+}
+
+std::string SizeText(const Table& t) {
+  std::string s;
+  for (const Axis& a : t.axes) s += (s.empty() ? "" : "x") + std::to_string(a.size);
+  return s.empty() ? "1" : s;
+}
+
+using Progress = std::function<void(const std::string&)>;
+using LayoutOf = std::function<ImageLayout(const Table&)>;
+
+// One candidate: baked, arranged, its lookup error probed (probe.h), and
+// the stated bound: the probed error plus the stored values' claim (or,
+// when the layout's pixel type differs from the table's, the arranged
+// image's claim: integration plus rounding).
+PlannedTable Evaluate(const BakeSpec& spec, const LayoutOf& layout_of, const ProbeOptions& probe, double collapse,
+                      double target, const std::string& label, const Progress& progress) {
+  PlannedTable p;
+  p.spec = spec;
+  p.table = Bake(spec);
+  p.layout = layout_of(p.table);
+  p.interpolation_error = LookupError(p.table, probe).max_abs_error;
+  const Image im = ArrangeTable(p.table, p.layout);
+  const PixelType stored = spec.half ? PixelType::kHalf : PixelType::kFloat;
+  p.total_error = p.interpolation_error + (im.pixel == stored ? p.table.integration_error : im.max_abs_error);
+  p.collapse_error = collapse;
+  p.meets_target = p.total_error + collapse <= target;
+  if (progress) {
+    std::string warp = p.spec.table == TableKind::kEavg ? "" : std::string(" mu ") + WarpName(spec.mu.warp);
+    progress(label + " " + SizeText(p.table) + warp + ": lookup error " + Num(p.total_error));
+  }
+  return p;
+}
+
+// A ladder of candidates, smallest first: the first that meets the target
+// is kept, else the one with the smallest error. `stop_texels`: give up
+// once candidates are larger than this (another choice is smaller).
+struct Rung {
+  int n;
+  Warp warp;
+};
+PlannedTable Climb(const std::vector<Rung>& rungs, const std::function<BakeSpec(const Rung&)>& make,
+                   const LayoutOf& layout_of, const ProbeOptions& probe, double collapse, double target,
+                   const std::string& label, const Progress& progress,
+                   int64_t stop_texels = std::numeric_limits<int64_t>::max()) {
+  PlannedTable best;
+  best.total_error = std::numeric_limits<double>::infinity();
+  for (const Rung& rung : rungs) {
+    const BakeSpec spec = make(rung);
+    if (SpecTexels(spec) > stop_texels) break;
+    PlannedTable p = Evaluate(spec, layout_of, probe, collapse, target, label, progress);
+    const bool better = p.total_error < best.total_error;
+    if (p.meets_target || better) best = std::move(p);
+    if (best.meets_target) break;
+  }
+  return best;
+}
+
+// The sizes 2, 4, ... up to n_max.
+std::vector<int> Doublings(int from, int n_max) {
+  std::vector<int> v;
+  for (int n = from; n <= n_max; n *= 2) v.push_back(n);
+  return v;
+}
+
+std::vector<Rung> Rungs(const std::vector<int>& sizes, const std::vector<Warp>& warps) {
+  std::vector<Rung> r;
+  for (int n : sizes) {
+    for (Warp w : warps) r.push_back({n, w});
+  }
+  return r;
+}
+
+// The planner of one scene: the engine's layouts, the target, the probe.
+class Planner {
+ public:
+  Planner(const Scene& scene, const Progress& progress) : scene_(scene), progress_(progress) {
+    if (!scene.engine.preset.empty()) preset_ = &FindPreset(scene.engine.preset);
+  }
+
+  // The spec of an isotropic table of `kind` for the group `model`,
+  // roughness [rmin, rmax] (before its size is chosen).
+  BakeSpec IsoBase(TableKind kind, const SceneMaterial& model, double rmin, double rmax) const {
+    BakeSpec base;
+    if (preset_) base = EngineTable(*preset_, kind)->spec;  // the engine's axes, placement, warps, clamps
+    base.table = kind;
+    base.model.kind = model.model == ModelKind::kGgxAniso ? ModelKind::kGgx : model.model;
+    base.model.gamma = model.model == ModelKind::kStudentT ? model.gamma : 2.0;
+    base.masking = model.masking;
+    if (preset_) return base;
+    base.half = scene_.engine.pixel == PixelType::kHalf;
+    base.complement = scene_.engine.complement && kind != TableKind::kDfg;
+    base.mu.placement = base.roughness.placement = scene_.engine.placement;
+    base.roughness.min = rmin;
+    base.roughness.max = rmax;
+    return base;
+  }
+
+  LayoutOf IsoLayout(TableKind kind) const {
+    if (preset_) {
+      const ImageLayout l = EngineTable(*preset_, kind)->layout;
+      return [l](const Table&) { return l; };
+    }
+    return GenericLayout();
+  }
+  LayoutOf GenericLayout() const {
+    const bool unorm16 = scene_.engine.unorm16;
+    return [unorm16](const Table& t) {
+      ImageLayout l = DefaultLayout(t);
+      if (unorm16) l.pixel = PixelType::kUnorm16;
+      return l;
+    };
+  }
+
+  bool IsoSizeFixed(TableKind kind) const {
+    return preset_ && EngineFixesSize(*preset_, *EngineTable(*preset_, kind));
+  }
+
+  // The ladder of an isotropic table: sizes 2, 4, ... up to the limit per
+  // axis and mu linear or square (E_avg: one axis); under a preset, the
+  // engine's warps, and its size where it fixes it.
+  // [rmin, rmax]: the materials' roughness (under a preset, within the
+  // engine's axis).
+  PlannedTable PlanIso(const BakeSpec& base, double rmin, double rmax, double collapse, const std::string& label,
+                       bool with_hint) const {
+    const TableKind kind = base.table;
+    const double target = scene_.engine.error_target;
+    const bool one_r = !preset_ && base.roughness.min == base.roughness.max;
+    const bool fixed = IsoSizeFixed(kind);
+    std::vector<Warp> warps = {Warp::kLinear, Warp::kSquare};
+    if (kind == TableKind::kEavg) warps = {Warp::kLinear};
+    if (preset_) warps = {base.mu.warp};
+    auto make = [&](const Rung& rung) {
+      BakeSpec spec = base;
+      if (fixed) return spec;
+      spec.mu.size = rung.n;
+      spec.mu.warp = rung.warp;
+      spec.roughness.size = one_r ? 1 : rung.n;
+      if (one_r) spec.roughness.placement = Placement::kCenters;
+      return spec;
+    };
+    ProbeOptions probe;
+    if (preset_) {
+      probe.roughness_min = rmin;
+      probe.roughness_max = rmax;
+    }
+    const std::vector<Rung> rungs =
+        fixed ? std::vector<Rung>{{base.mu.size, base.mu.warp}} : Rungs(Doublings(2, scene_.engine.max_lut_size), warps);
+    const bool single = kind == TableKind::kEavg && one_r;  // one value: nothing to refine
+    PlannedTable p = Climb(single ? std::vector<Rung>{rungs.front()} : rungs, make, IsoLayout(kind), probe, collapse,
+                           target, label, progress_);
+    p.size_fixed = fixed;
+    // A roughness axis across the mirror cut (alpha = 1e-4, r = 0.01: E
+    // jumps to 1 below it) is never resolved by interpolation, whatever the
+    // size; a range that starts at the cut is.
+    const double cut = std::sqrt(kMinAlpha<double>);
+    const bool crosses = kind != TableKind::kSelNorm && rmin < rmax && rmin < cut && rmax > cut;
+    std::string prefix;
+    if (!p.meets_target && with_hint && collapse >= target) {
+      p.hint = "the collapse alone (" + Num(collapse) + ") is above the target: no table size meets it";
+      return p;
+    }
+    if (!p.meets_target && with_hint && !single && crosses && preset_) {
+      p.hint = "the materials' roughness crosses the mirror cut (r = 0.01, where E jumps to 1), which no size resolves";
+      return p;
+    }
+    BakeSpec hint_base = base;
+    if (crosses) {
+      hint_base.roughness.min = cut;
+      prefix = "the roughness range crosses the mirror cut (r = 0.01, where E jumps to 1), which no size resolves; "
+               "with roughness from 0.01, ";
+    }
+    if (!p.meets_target && with_hint && !single) {
+      // The smallest size (and warp) beyond the limit that would meet the
+      // target, up to 4 times the limit and at most 1024 per axis.
+      const int from = crosses ? 2 : fixed ? 2 : 2 * scene_.engine.max_lut_size;
+      const int to = std::min(1024, 4 * std::max(scene_.engine.max_lut_size, fixed ? base.mu.size : 0));
+      auto beyond = [&](const Rung& rung) {
+        BakeSpec spec = hint_base;
+        spec.mu.size = rung.n;
+        spec.mu.warp = rung.warp;
+        spec.roughness.size = one_r ? 1 : rung.n;
+        if (one_r) spec.roughness.placement = Placement::kCenters;
+        return spec;
+      };
+      std::vector<Rung> more;
+      for (const Rung& r : Rungs(Doublings(from, to), warps)) {
+        if (crosses || !fixed || r.n != base.mu.size) more.push_back(r);
+      }
+      const PlannedTable h = Climb(more, beyond, IsoLayout(kind), probe, collapse, target, label + " (beyond the limit)",
+                                   progress_);
+      if (h.meets_target) {
+        p.hint = prefix + SizeText(h.table) + (kind == TableKind::kEavg ? "" : std::string(", mu warp ") + WarpName(h.spec.mu.warp)) +
+                 " would meet it (lookup error " + Num(h.total_error) + ")";
+      } else {
+        p.hint = prefix + "no size up to " + std::to_string(to) + " per axis meets it";
+      }
+    }
+    return p;
+  }
+
+  // The ggx-aniso tables over a box: E over mu x phi_o x r x s, E_avg over
+  // r x s, each axis that the box spans.
+  BakeSpec AnisoBase(TableKind kind, Masking masking, const AnisoBox& b) const {
+    BakeSpec base;
+    base.table = kind;
+    base.model.kind = ModelKind::kGgxAniso;
+    base.masking = masking;
+    const Placement pl = preset_ ? Placement::kCenters : scene_.engine.placement;
+    base.half = !preset_ && scene_.engine.pixel == PixelType::kHalf;
+    base.complement = !preset_ && scene_.engine.complement;
+    base.mu.placement = base.phi.placement = pl;
+    SetAxis(&base.roughness, b.rmin, b.rmax, 2, pl);
+    SetAxis(&base.anisotropy, b.smin, b.smax, 2, pl);
+    return base;
+  }
+
+  PlannedTable PlanAniso(const BakeSpec& base, const std::string& label, int64_t stop_texels) const {
+    const double target = scene_.engine.error_target;
+    const bool eavg = base.table == TableKind::kEavg;
+    const bool span_r = base.roughness.size > 1, span_s = base.anisotropy.size > 1;
+    auto make = [&](const Rung& rung) {
+      BakeSpec spec = base;
+      const int half = std::max(2, rung.n / 2);
+      if (!eavg) {
+        spec.mu.size = rung.n;
+        spec.mu.warp = rung.warp;
+        spec.phi.size = half;
+      }
+      spec.roughness.size = span_r ? (eavg ? rung.n : half) : 1;
+      spec.anisotropy.size = span_s ? (eavg ? rung.n : half) : 1;
+      return spec;
+    };
+    // E_avg(r, s) costs a hemispherical integral per entry: at most 8 per
+    // axis; E at most 2^16 texels.
+    std::vector<Rung> rungs;
+    if (eavg) {
+      rungs = span_r || span_s ? Rungs(Doublings(2, std::min(8, scene_.engine.max_lut_size)), {Warp::kLinear})
+                               : std::vector<Rung>{{1, Warp::kLinear}};
+    } else {
+      for (const Rung& r : Rungs(Doublings(2, scene_.engine.max_lut_size), {Warp::kLinear, Warp::kSquare})) {
+        if (SpecTexels(make(r)) <= (int64_t(1) << 16)) rungs.push_back(r);
+      }
+    }
+    ProbeOptions probe;
+    probe.probes = eavg ? 4 : 8;
+    probe.minor_probes = 4;
+    return Climb(rungs, make, GenericLayout(), probe, 0.0, target, label, progress_, stop_texels);
+  }
+
+  const Preset* preset() const { return preset_; }
+
+ private:
+  const Scene& scene_;
+  Progress progress_;
+  const Preset* preset_ = nullptr;
+};
+
+// Isotropic lookups of one group and table kind: who, over which
+// roughness, and the largest collapse error among them.
+struct Member {
+  std::string name;
+  double rmin, rmax;
+  double collapse = 0;
+  std::string how;  // "", "clearcoat", "collapsed"
+};
+
+std::string Range(double lo, double hi) { return lo == hi ? Num(lo) : "[" + Num(lo) + ", " + Num(hi) + "]"; }
 
 }  // namespace
 
@@ -540,203 +1007,312 @@ Scene LoadScene(const std::string& path) {
   Bad(path + ": a scene is a .toml, .gltf or .glb file");
 }
 
-double InterpolationError(const Table& t, int probes) {
-  const bool eavg = t.spec.table == TableKind::kEavg;
-  const Axis& am = t.spec.mu;
-  const Axis& ar = t.spec.roughness;
-  const int nm = eavg ? 1 : am.size, nr = ar.size;
-  // Probe positions in fractional texel index: the midpoint of (up to
-  // `probes`) cells; for centres placement the two ends of the axis, where
-  // a GPU's clamp-to-edge holds the last texel's value; and along mu, more
-  // points in the first two cells and below texel 0, where E's grazing
-  // boundary layer (E -> 1 as mu -> 0) is narrower than a cell.
-  auto positions = [&](const Axis& a, int n, bool grazing) {
-    std::vector<double> f;
-    if (n == 1) return std::vector<double>{0.0};
-    const int cells = n - 1, k = std::min(cells, probes);
-    for (int i = 0; i < k; ++i) f.push_back(i * cells / k + 0.5);
-    if (a.placement == Placement::kCenters) {
-      f.push_back(-0.5);
-      f.push_back(n - 0.5);
-    }
-    if (grazing) {
-      for (double x : {0.05, 0.1, 0.2, 0.3, 0.7, 0.9}) f.push_back(x);
-      if (cells > 1) {
-        for (double x : {1.1, 1.25, 1.75, 1.9}) f.push_back(x);
+void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
+  SceneEngine& e = scene->engine;
+  std::string pixel;
+  for (const auto& [option, value] : overrides) {
+    if (option == "--preset") {
+      FindPreset(value);  // its message names --preset
+      e.preset = value;
+    } else if (option == "--format") {
+      ParseContainer(value);
+      e.format = Lowercase(value);
+    } else if (option == "--pixel") {
+      if (value != "float" && value != "half" && value != "unorm16") {
+        Bad("--pixel: expected float, half or unorm16, got '" + value + "'");
       }
-      if (a.placement == Placement::kCenters) {
-        for (double x : {-0.45, -0.4, -0.3, -0.2, -0.1}) f.push_back(x);
+      pixel = value;
+    } else if (option == "--shader") {
+      std::vector<ShaderLanguage> langs;
+      std::stringstream ss(value);
+      for (std::string item; std::getline(ss, item, ',');) {
+        const ShaderLanguage l = ParseShaderLanguage(item);
+        if (std::find(langs.begin(), langs.end(), l) != langs.end()) Bad("--shader: '" + item + "' is given twice");
+        langs.push_back(l);
       }
+      if (value.empty() || value.back() == ',') Bad("--shader: an empty language after the last comma");
+      e.shaders = langs;
+    } else if (option == "--max-size") {
+      const double n = std::strtod(value.c_str(), nullptr);
+      if (!(n >= 2 && n <= 8192) || n != std::floor(n)) Bad("--max-size: '" + value + "' is not an integer in [2, 8192]");
+      e.max_lut_size = int(n);
+    } else if (option == "--error-target") {
+      const double t = std::strtod(value.c_str(), nullptr);
+      if (!(t >= 1e-7 && t <= 1)) Bad("--error-target: '" + value + "' is outside [1e-07, 1]");
+      e.error_target = t;
+    } else {
+      Bad(option + ": a scene bake takes its settings from the scene file");
     }
-    return f;
-  };
-  // The fractional texel index of value v on axis a (Axis::ValueAt
-  // inverted), for the points where a table is not smooth.
-  auto index_of = [](const Axis& a, int n, double v) {
-    double t = std::clamp((v - a.min) / (a.max - a.min), 0.0, 1.0);
-    if (a.warp == Warp::kSquare) t = std::sqrt(t);
-    if (a.warp == Warp::kSqrt) t = t * t;
-    return a.placement == Placement::kCenters ? t * n - 0.5 : t * (n - 1);
-  };
-  std::vector<double> fm = positions(am, nm, true), fr = positions(ar, nr, false);
-  // The grazing layer down to the smallest NoV engines clamp to (1e-4).
-  if (nm > 1) {
-    for (double mu : {1e-4, 1e-3, 1e-2}) {
-      if (mu > am.min && mu < am.max) fm.push_back(index_of(am, nm, mu));
+    scene->overrides.push_back({option, value});
+  }
+  if (!pixel.empty()) {
+    if (!e.preset.empty()) Bad("--pixel: fixed by the engine preset '" + e.preset + "' (its layout)");
+    if (pixel == "unorm16" && (e.format.empty() || ParseContainer(e.format) != Container::kDds)) {
+      Bad("--pixel unorm16: only the dds format holds unorm16 pixels (add --format dds)");
+    }
+    e.unorm16 = pixel == "unorm16";
+    e.pixel = pixel == "float" ? PixelType::kFloat : PixelType::kHalf;
+  }
+  if (e.preset.empty() && !e.format.empty()) {
+    const Container c = ParseContainer(e.format);
+    if (c == Container::kHeader && e.header) {
+      Bad("--format header: the scene writes a header beside each table already (header = true)");
     }
   }
-  // Each side of the mirror cut (alpha = kMinAlpha: E jumps to 1), where
-  // the roughness axis crosses it.
-  const double cut = std::sqrt(kMinAlpha<double>);
-  if (nr > 1 && cut > ar.min && cut < ar.max) {
-    for (double r : {cut * (1 - 1e-9), cut, cut * (1 + 1e-6), cut * 1.01}) fr.push_back(index_of(ar, nr, r));
+  if (!e.preset.empty() && SceneKinds(*scene).empty()) {
+    std::string kinds;
+    for (const PresetTable& pt : FindPreset(e.preset).tables) kinds += std::string(kinds.empty() ? "" : ", ") + TableName(pt.spec.table);
+    Bad("engine preset '" + e.preset + "' samples " + kinds + ", none of the scene's tables");
   }
-  if (fm.size() == 1 && fr.size() == 1) return 0;
-  const size_t nvalue = eavg || t.spec.table == TableKind::kE ? 1 : (t.spec.complement ? 3 : 2);
-  std::vector<double> worst(fm.size() * fr.size(), 0.0);
-  // Bilinear weights along one axis at fractional index f, clamped to the ends.
-  auto taps = [](double f, int n, int* i0, int* i1, double* w) {
-    const double c = std::clamp(f, 0.0, double(n - 1));
-    *i0 = std::min(int(std::floor(c)), std::max(0, n - 2));
-    *i1 = std::min(*i0 + 1, n - 1);
-    *w = c - *i0;
-  };
-  tbb::parallel_for(size_t(0), worst.size(), [&](size_t k) {
-    const double f_m = fm[k % fm.size()], f_r = fr[k / fm.size()];
-    const double mu = nm > 1 ? am.ValueAt(f_m) : am.Value(0);
-    const double r = nr > 1 ? ar.ValueAt(f_r) : ar.Value(0);
-    const std::vector<double> exact = ExactAt(t, mu, r);
-    int m0, m1, r0, r1;
-    double wm, wr;
-    taps(f_m, nm, &m0, &m1, &wm);
-    taps(f_r, nr, &r0, &r1, &wr);
-    for (size_t c = 0; c < nvalue; ++c) {
-      const std::vector<float>& v = t.channels[c].stored;
-      // E_avg is one row over roughness (x); the others x = mu, y = roughness.
-      auto at = [&](int i, int j) { return double(eavg ? v[size_t(j)] : v[size_t(j) * t.width + i]); };
-      const double interp = (1 - wr) * ((1 - wm) * at(m0, r0) + wm * at(m1, r0)) +
-                            wr * ((1 - wm) * at(m0, r1) + wm * at(m1, r1));
-      worst[k] = std::max(worst[k], std::abs(interp - exact[c]));
-    }
-  });
-  return *std::max_element(worst.begin(), worst.end());
 }
 
 namespace {
 
-// The EXR file of a planned table: the table and the material group.
-std::string TableFile(TableKind kind, const std::string& group) {
-  return std::string(TableName(kind)) + "_" + group + ".exr";
-}
-
-// Every file written for tables `table_files` into dir: each table's EXR,
-// its header and shader files as the engine asks, then the manifest.
-std::vector<std::string> FilesOf(const Scene& scene, const std::vector<std::string>& table_files,
-                                 const std::string& dir) {
-  std::vector<std::string> files;
-  for (const std::string& f : table_files) {
-    const std::string stem = f.substr(0, f.size() - 4);
-    files.push_back(dir + "/" + f);
-    if (scene.engine.header) files.push_back(dir + "/" + stem + ".h");
-    for (ShaderLanguage l : scene.engine.shaders) files.push_back(dir + "/" + stem + "." + ShaderLanguageName(l));
+// The slots a scene may need, each group's (for an anisotropic group, the
+// tables of both choices), sorted by group.
+std::vector<Slot> PossibleSlots(const Scene& scene) {
+  const std::vector<TableKind> kinds = SceneKinds(scene);
+  std::map<std::string, bool> groups;  // group -> anisotropic
+  for (const SceneMaterial& m : scene.materials) {
+    groups[GroupKey(m)] = m.model == ModelKind::kGgxAniso;
+    if (m.model == ModelKind::kGgxAniso) groups[IsoKey(m.masking)] = false;
+    if (m.clearcoat > 0) groups["ggx"] = false;
   }
-  files.push_back(dir + "/manifest.json");
-  return files;
+  std::vector<Slot> slots;
+  for (const auto& [group, aniso] : groups) {
+    for (TableKind k : kinds) {
+      if (aniso && k == TableKind::kDfg) continue;
+      slots.push_back({k, group, aniso});
+    }
+  }
+  return slots;
 }
 
 }  // namespace
 
 std::vector<std::string> SceneOutputFiles(const Scene& scene, const std::string& dir) {
-  std::set<std::string> groups;
-  for (const SceneMaterial& m : scene.materials) {
-    if (m.model != ModelKind::kGgxAniso) groups.insert(GroupKey(m));
-  }
-  std::vector<std::string> tables;
-  for (const std::string& g : groups) {
-    for (const TableKind kind : scene.engine.tables) tables.push_back(TableFile(kind, g));
-  }
-  return FilesOf(scene, tables, dir);
+  return FilesOf(scene, PossibleSlots(scene), dir);
 }
 
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress) {
   ScenePlan plan;
-  std::map<std::string, std::vector<const SceneMaterial*>> groups;
+  const Planner planner(scene, progress);
+  const std::vector<TableKind> kinds = SceneKinds(scene);
+  const double target = scene.engine.error_target;
+  auto wants = [&](TableKind k) { return std::find(kinds.begin(), kinds.end(), k) != kinds.end(); };
+  if (planner.preset()) {
+    for (TableKind k : scene.engine.tables) {
+      if (!wants(k)) {
+        plan.notes.push_back(std::string(TableName(k)) + " tables: engine preset '" + scene.engine.preset +
+                             "' samples none (only its own tables are baked)");
+      }
+    }
+  }
+  // Isotropic lookups per group and kind; the model of each group.
+  std::map<std::string, std::map<TableKind, std::vector<Member>>> iso;
+  std::map<std::string, SceneMaterial> model_of;
+  std::map<std::string, std::vector<const SceneMaterial*>> aniso;
   for (const SceneMaterial& m : scene.materials) {
     for (const auto& u : m.unsupported) {
       plan.notes.push_back("material '" + Printable(m.name) + "' (" + u.first + "): needs " + u.second +
                            ", which brdfbake does not bake yet");
     }
+    if (m.clearcoat > 0) {
+      SceneMaterial cc;
+      cc.model = ModelKind::kGgx;
+      model_of.emplace("ggx", cc);
+      for (TableKind k : kinds) {
+        iso["ggx"][k].push_back({m.name + " (clearcoat)", m.clearcoat_roughness_min, m.clearcoat_roughness_max, 0,
+                                 "clearcoat"});
+      }
+      plan.decisions.push_back(
+          "material '" + Printable(m.name) + "' (KHR_materials_clearcoat, roughness " +
+          Range(m.clearcoat_roughness_min, m.clearcoat_roughness_max) +
+          "): the clearcoat layer is GGX with height-correlated masking at its own roughness; its Fresnel (IOR 1.5, "
+          "F0 0.04) weights the split-sum terms and never changes E, E_avg or dfg (they are integrated with F = 1 "
+          "or split by Schlick), so it reuses the isotropic GGX tables");
+    }
     if (m.model == ModelKind::kGgxAniso) {
-      plan.notes.push_back("material '" + Printable(m.name) + "' (anisotropic GGX, strength " + Num(m.anisotropy) +
-                           "): needs E(mu, phi, r, s) tables, which brdfbake does not bake yet; no table planned");
+      aniso[GroupKey(m)].push_back(&m);
       continue;
     }
-    groups[GroupKey(m)].push_back(&m);
+    model_of.emplace(GroupKey(m), m);
+    for (TableKind k : kinds) iso[GroupKey(m)][k].push_back({m.name, m.roughness_min, m.roughness_max, 0, ""});
   }
-  for (const auto& g : groups) {
-    const SceneMaterial& first = *g.second.front();
-    double rmin = 1, rmax = 0;
-    std::vector<std::string> names;
-    for (const SceneMaterial* m : g.second) {
-      rmin = std::min(rmin, m->roughness_min);
-      rmax = std::max(rmax, m->roughness_max);
-      names.push_back(m->name);
+  // Anisotropic groups: the 4D tables over their box, or the isotropic
+  // tables at the collapsed roughness, whichever meets the target smaller.
+  std::vector<PlannedTable> aniso_tables;
+  for (const auto& [group, members] : aniso) {
+    const Masking masking = members.front()->masking;
+    AnisoBox box;
+    std::string names;
+    for (const SceneMaterial* m : members) {
+      box.rmin = std::min(box.rmin, m->roughness_min);
+      box.rmax = std::max(box.rmax, m->roughness_max);
+      box.smin = std::min(box.smin, m->anisotropy);
+      box.smax = std::max(box.smax, m->anisotropy);
+      names += (names.empty() ? "'" : ", '") + Printable(m->name) + "'";
     }
-    for (const TableKind kind : scene.engine.tables) {
-      BakeSpec base;
-      base.table = kind;
-      base.model.kind = first.model;
-      base.model.gamma = first.model == ModelKind::kStudentT ? first.gamma : 2.0;
-      base.masking = first.masking;
-      base.half = scene.engine.pixel == PixelType::kHalf;
-      base.complement = scene.engine.complement && kind != TableKind::kDfg;
-      base.mu.placement = base.roughness.placement = scene.engine.placement;
-      base.roughness.min = rmin;
-      base.roughness.max = rmax;
-      const bool one_r = rmin == rmax;
-      PlannedTable best;
-      best.total_error = std::numeric_limits<double>::infinity();
-      bool done = false;
-      for (int n = 2; n <= scene.engine.max_lut_size && !done; n *= 2) {
-        for (const Warp warp : {Warp::kLinear, Warp::kSquare}) {
-          if (kind == TableKind::kEavg && warp != Warp::kLinear) continue;
-          BakeSpec spec = base;
-          spec.mu.size = n;
-          spec.mu.warp = warp;
-          spec.roughness.size = one_r ? 1 : n;
-          if (one_r) spec.roughness.placement = Placement::kCenters;
-          if (kind == TableKind::kEavg && one_r) spec.roughness.size = 1;
-          PlannedTable p;
-          p.spec = spec;
-          p.table = Bake(spec);
-          p.interpolation_error = InterpolationError(p.table);
-          p.total_error = p.interpolation_error + p.table.integration_error;
-          if (progress) {
-            progress(std::string(TableName(kind)) + " " + g.first + " " + std::to_string(p.table.width) + "x" +
-                     std::to_string(p.table.height) + " mu " + WarpName(warp) + ": lookup error " +
-                     Num(p.total_error));
-          }
-          const bool meets = p.total_error <= scene.engine.error_target;
-          if (meets || p.total_error < best.total_error) {
-            p.meets_target = meets;
-            best = std::move(p);
-          }
-          if (meets) {
-            done = true;
-            break;
-          }
-          if (kind == TableKind::kEavg && one_r) {
-            done = true;  // one value: nothing to refine
-            break;
-          }
+    const double rc_min = CollapsedRoughness(box.rmin, box.smin), rc_max = CollapsedRoughness(box.rmax, box.smax);
+    SceneMaterial ggx;
+    ggx.model = ModelKind::kGgx;
+    ggx.masking = masking;
+    model_of.emplace(IsoKey(masking), ggx);
+    // The collapse's error over the box (report's collapse study): E over
+    // mu (square warp from 1e-4: the grazing layer), phi_o, r and s.
+    BakeSpec study = planner.AnisoBase(TableKind::kE, masking, box);
+    study.mu = Axis{"mu", 13, 1e-4, 1.0, Warp::kSquare, Placement::kEdges};
+    study.phi = Axis{"phi_o", 7, 0.0, kHalfPi, Warp::kLinear, Placement::kEdges};
+    SetAxis(&study.roughness, box.rmin, box.rmax, 5, Placement::kEdges);
+    SetAxis(&study.anisotropy, box.smin, box.smax, 5, Placement::kEdges);
+    std::map<TableKind, double> collapse;
+    for (const CollapseRow& row : CollapseStudy(study, {kCollapse})) {
+      collapse[TableKind::kE] = std::max(collapse[TableKind::kE], row.max_abs_error);
+    }
+    // dfg has no anisotropic counterpart: its scale + bias is E, off by
+    // the same.
+    collapse[TableKind::kDfg] = collapse[TableKind::kE];
+    if (wants(TableKind::kEavg)) {
+      BakeSpec avg = study;
+      avg.table = TableKind::kEavg;
+      SetAxis(&avg.roughness, box.rmin, box.rmax, 3, Placement::kEdges);
+      SetAxis(&avg.anisotropy, box.smin, box.smax, 3, Placement::kEdges);
+      for (const CollapseRow& row : CollapseStudy(avg, {kCollapse})) {
+        collapse[TableKind::kEavg] = std::max(collapse[TableKind::kEavg], row.max_abs_error);
+      }
+    }
+    const std::string who = "anisotropic GGX (" + group + ": " + names + ", roughness " + Range(box.rmin, box.rmax) +
+                            ", anisotropy " + Range(box.smin, box.smax) + ")";
+    const std::string collapsed = "the collapsed roughness r_c = (alpha_t alpha_b)^(1/4) in " + Range(rc_min, rc_max) +
+                                  " (the geometric mean of the widths, as Cycles, MaterialX and Enterprise PBR)";
+    // (b): isotropic tables over the collapsed range alone.
+    std::vector<TableKind> choice_kinds;
+    for (TableKind k : kinds) {
+      if (k != TableKind::kDfg) choice_kinds.push_back(k);
+    }
+    bool b_meets = true, a_meets = true;
+    int64_t b_texels = 0, a_texels = 0;
+    double b_error = 0, a_error = 0;
+    std::vector<PlannedTable> a_plan;
+    std::string b_text, a_text;
+    for (TableKind k : choice_kinds) {
+      const PlannedTable b = planner.PlanIso(planner.IsoBase(k, ggx, rc_min, rc_max), rc_min, rc_max, collapse[k],
+                                             std::string(TableName(k)) + " " + group + " collapsed", false);
+      b_meets &= b.meets_target;
+      b_texels += Texels(b.table);
+      b_error = std::max(b_error, b.total_error + b.collapse_error);
+      b_text += std::string(b_text.empty() ? "" : ", ") + TableName(k) + " " + SizeText(b.table) + " (collapse " +
+                Num(b.collapse_error) + " + lookup " + Num(b.total_error) + ")";
+      PlannedTable a = planner.PlanAniso(planner.AnisoBase(k, masking, box), std::string(TableName(k)) + " " + group,
+                                         b.meets_target ? Texels(b.table) : std::numeric_limits<int64_t>::max());
+      const bool a_ok = std::isfinite(a.total_error);
+      a_meets &= a_ok && a.meets_target;
+      a_texels += a_ok ? Texels(a.table) : 0;
+      a_error = std::max(a_error, a_ok ? a.total_error : std::numeric_limits<double>::infinity());
+      a_text += std::string(a_text.empty() ? "" : ", ") + TableName(k) + " " +
+                (a_ok ? SizeText(a.table) + " (lookup " + Num(a.total_error) + ")" : "larger than that");
+      if (a_ok) a_plan.push_back(std::move(a));
+    }
+    bool use_4d;
+    std::string why;
+    const std::string tgt = "the target " + Num(target);
+    const std::string a_says = "the 4D ggx-aniso tables over the box: " + a_text;
+    const std::string b_says = "isotropic GGX at " + collapsed + ": " + b_text;
+    if (choice_kinds.empty()) {
+      use_4d = false;
+      why = "the engine samples no E or E_avg table: its dfg is looked up at " + collapsed;
+    } else if (a_meets && b_meets) {
+      use_4d = a_texels < b_texels;
+      why = "both meet " + tgt + "; " + (use_4d ? a_says + " (" + std::to_string(a_texels) + " texels) is smaller than " + b_says
+                                               : b_says + " (" + std::to_string(b_texels) + " texels) is smaller than " + a_says);
+    } else if (b_meets) {
+      use_4d = false;
+      why = b_says + " meets " + tgt + " (" + std::to_string(b_texels) + " texels); " + a_says;
+    } else if (a_meets) {
+      use_4d = true;
+      why = a_says + " meets " + tgt + "; " + b_says + " does not";
+    } else {
+      use_4d = a_error < b_error;
+      why = "neither meets " + tgt + ": " + a_says + "; " + b_says + "; the smaller error (" +
+            Num(std::min(a_error, b_error)) + ") is kept";
+    }
+    plan.decisions.push_back(who + ": " + (use_4d ? "the 4D tables; " : "the isotropic tables at the collapsed roughness; ") +
+                             why + (wants(TableKind::kDfg) ? "; dfg has no anisotropic table: the base layer looks it up at the collapsed roughness, its scale + bias (= E) off by up to " + Num(collapse[TableKind::kDfg]) : ""));
+    for (TableKind k : kinds) {
+      const bool collapsed_k = k == TableKind::kDfg || !use_4d;
+      if (!collapsed_k) continue;
+      for (const SceneMaterial* m : members) {
+        iso[IsoKey(masking)][k].push_back({m->name + " (collapsed)", CollapsedRoughness(m->roughness_min, m->anisotropy),
+                                            CollapsedRoughness(m->roughness_max, m->anisotropy), collapse[k], "collapsed"});
+      }
+    }
+    if (use_4d) {
+      for (PlannedTable& a : a_plan) {
+        a.group = group;
+        for (const SceneMaterial* m : members) a.materials.push_back(m->name);
+        a.file = std::string(TableName(a.spec.table)) + "_" + group + ".exr";
+        a.why = "used by " + std::to_string(members.size()) + " anisotropic material" + (members.size() > 1 ? "s" : "") +
+                ", roughness " + Range(box.rmin, box.rmax) + ", anisotropy " + Range(box.smin, box.smax);
+        if (planner.preset()) a.why += "; engine preset '" + scene.engine.preset + "' has no layout for it: brdfbake's own";
+        aniso_tables.push_back(std::move(a));
+      }
+    }
+  }
+  // Isotropic groups, sorted; the anisotropic tables after their group's
+  // name sorts them.
+  for (const auto& [group, by_kind] : iso) {
+    const SceneMaterial& model = model_of.at(group);
+    for (TableKind kind : kinds) {
+      const auto it = by_kind.find(kind);
+      if (it == by_kind.end()) continue;
+      const std::vector<Member>& ms = it->second;
+      double rmin = 1, rmax = 0, collapse = 0;
+      std::vector<std::string> names;
+      std::string extra;
+      int plain = 0;
+      for (const Member& m : ms) {
+        rmin = std::min(rmin, m.rmin);
+        rmax = std::max(rmax, m.rmax);
+        collapse = std::max(collapse, m.collapse);
+        names.push_back(m.name);
+        plain += m.how.empty() ? 1 : 0;
+        if (m.how == "collapsed") extra += "; " + m.name + " at roughness " + Range(m.rmin, m.rmax);
+        if (m.how == "clearcoat") extra += "; " + m.name + " at roughness " + Range(m.rmin, m.rmax);
+      }
+      const std::string label = std::string(TableName(kind)) + " " + group;
+      PlannedTable p = planner.PlanIso(planner.IsoBase(kind, model, rmin, rmax), rmin, rmax, collapse, label, true);
+      p.materials = names;
+      p.group = group;
+      p.file = TableFile(scene, {kind, group});
+      p.why = "used by " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") + " with model " + group +
+              ", roughness " + Range(rmin, rmax) + extra;
+      if (p.size_fixed) p.why += "; size fixed by engine preset '" + scene.engine.preset + "'";
+      if (planner.preset()) {
+        p.why += "; axes as the engine's shader samples them, the lookup error measured over the materials' roughness";
+      }
+      plan.tables.push_back(std::move(p));
+    }
+  }
+  for (PlannedTable& a : aniso_tables) plan.tables.push_back(std::move(a));
+  std::stable_sort(plan.tables.begin(), plan.tables.end(),
+                   [](const PlannedTable& x, const PlannedTable& y) { return x.group < y.group; });
+  // Under a preset, the files are the engine's.
+  if (planner.preset()) {
+    std::vector<Slot> slots;
+    std::vector<const PlannedTable*> planned;
+    for (const PlannedTable& p : plan.tables) {
+      slots.push_back({p.spec.table, p.group, p.spec.Anisotropic()});
+      planned.push_back(&p);
+    }
+    const Preset sp = ScenePreset(scene, slots, planned);
+    for (size_t i = 0; i < plan.tables.size(); ++i) {
+      const PresetTable& pt = sp.tables[i];
+      plan.tables[i].file = pt.file.empty() ? sp.header_file : pt.file;
+      if (!scene.engine.format.empty() && !pt.file.empty()) {
+        for (const PresetFile& f : PresetFiles(sp, ScenePresetRun(scene, "."))) {
+          if (f.table == int(i) && !f.lookup) plan.tables[i].file = std::filesystem::path(f.path).filename().string();
         }
       }
-      best.materials = names;
-      best.file = TableFile(kind, g.first);
-      best.why = "used by " + std::to_string(names.size()) + " material" + (names.size() > 1 ? "s" : "") +
-                 " with model " + g.first + ", roughness " +
-                 (one_r ? Num(rmin) : "[" + Num(rmin) + ", " + Num(rmax) + "]");
-      plan.tables.push_back(std::move(best));
     }
   }
   return plan;
@@ -746,9 +1322,21 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
   std::ostringstream os;
   const SceneEngine& e = scene.engine;
   os << "scene " << Printable(scene.path) << ": " << scene.materials.size() << " material"
-     << (scene.materials.size() == 1 ? "" : "s") << "; engine: max LUT " << e.max_lut_size << ", "
-     << PixelTypeName(e.pixel) << ", " << PlacementName(e.placement) << ", error target " << Num(e.error_target)
-     << (e.complement ? ", complement" : "") << "\n";
+     << (scene.materials.size() == 1 ? "" : "s") << "; engine: ";
+  if (!e.preset.empty()) {
+    os << "preset " << e.preset << " (its layouts and containers), max LUT " << e.max_lut_size << ", error target "
+       << Num(e.error_target);
+  } else {
+    os << "max LUT " << e.max_lut_size << ", " << (e.unorm16 ? "unorm16" : PixelTypeName(e.pixel)) << ", "
+       << PlacementName(e.placement) << ", error target " << Num(e.error_target) << (e.complement ? ", complement" : "");
+  }
+  if (!e.format.empty()) os << ", format " << e.format;
+  os << "\n";
+  if (!scene.overrides.empty()) {
+    os << "overrides:";
+    for (const auto& [option, value] : scene.overrides) os << " " << option << " " << Printable(value);
+    os << "\n";
+  }
   for (size_t i = 0; i < plan.tables.size(); ++i) {
     const PlannedTable& p = plan.tables[i];
     const Table& t = p.table;
@@ -761,60 +1349,113 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
       os << " " << a.name << " " << a.size << " in [" << Num(a.min) << ", " << Num(a.max) << "] " << WarpName(a.warp)
          << " " << PlacementName(a.placement) << ";";
     }
-    os << "\n  bilinear lookup error " << Num(p.total_error) << " (interpolation at cell midpoints and axis ends "
-       << Num(p.interpolation_error) << ", integration " << Num(t.integration_error) << ") "
-       << (p.meets_target ? "<= target " : "ABOVE the target ") << Num(e.error_target)
-       << (p.meets_target ? "" : " (the largest size allowed)") << "\n";
+    os << "\n  bilinear lookup error " << Num(p.total_error) << " (interpolation at cell midpoints, axis ends, the grazing "
+       << "layer and the mirror cut " << Num(p.interpolation_error) << ", integration " << Num(t.integration_error) << ")";
+    if (p.collapse_error > 0) os << " + collapse " << Num(p.collapse_error);
+    os << " " << (p.meets_target ? "<= target " : "ABOVE the target ") << Num(e.error_target);
+    if (!p.meets_target) os << (p.size_fixed ? " (the engine's size)" : " (the largest size allowed)");
+    os << "\n";
+    if (!p.hint.empty()) os << "  to meet the target: " << p.hint << "\n";
   }
+  for (const std::string& d : plan.decisions) os << "decision: " << d << "\n";
   for (const std::string& n : plan.notes) os << "not baked: " << n << "\n";
   return os.str();
 }
 
 std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& plan, const std::string& dir) {
-  std::vector<std::string> table_files;
-  for (const PlannedTable& p : plan.tables) table_files.push_back(p.file);
-  const std::vector<std::string> files = FilesOf(scene, table_files, dir);
+  std::vector<Slot> slots;
+  std::vector<const PlannedTable*> planned;
+  for (const PlannedTable& p : plan.tables) {
+    slots.push_back({p.spec.table, p.group, p.spec.Anisotropic()});
+    planned.push_back(&p);
+  }
+  const std::vector<std::string> files = FilesOf(scene, slots, dir);
   for (const std::string& f : files) CheckOutputPath(f);
-  auto stem = [](const std::string& f) { return f.substr(0, f.size() - 4); };
   nlohmann::json manifest;
   manifest["brdfbake"] = BRDFBAKE_VERSION;
   manifest["scene"] = scene.path;
   manifest["engine"] = {{"max_lut_size", scene.engine.max_lut_size},
-                        {"pixel", PixelTypeName(scene.engine.pixel)},
+                        {"pixel", scene.engine.unorm16 ? "unorm16" : PixelTypeName(scene.engine.pixel)},
                         {"placement", PlacementName(scene.engine.placement)},
                         {"error_target", scene.engine.error_target},
                         {"complement", scene.engine.complement}};
+  if (!scene.engine.preset.empty()) manifest["engine"]["preset"] = scene.engine.preset;
+  if (!scene.engine.format.empty()) manifest["engine"]["format"] = scene.engine.format;
+  manifest["overrides"] = nlohmann::json::object();
+  for (const auto& [option, value] : scene.overrides) manifest["overrides"][option] = value;
+  // Each table's files: its own, then the others that hold it.
+  std::vector<std::string> own(plan.tables.size());
+  std::vector<nlohmann::json> extra(plan.tables.size(), nlohmann::json::array());
+  if (!scene.engine.preset.empty()) {
+    const Preset sp = ScenePreset(scene, slots, planned);
+    const PresetRun run = ScenePresetRun(scene, dir);
+    std::vector<Table> tables;
+    std::vector<Image> images;
+    for (const PlannedTable& p : plan.tables) {
+      tables.push_back(p.table);
+      images.push_back(ArrangeTable(p.table, p.layout));
+    }
+    WritePresetFiles(sp, run, tables, images);
+    for (const PresetFile& f : PresetFiles(sp, run)) {
+      const std::string name = std::filesystem::path(f.path).filename().string();
+      if (f.table < 0) {
+        for (size_t i = 0; i < plan.tables.size(); ++i) {
+          if (sp.tables[i].file.empty()) own[i] = name;
+        }
+      } else if (!f.lookup && own[size_t(f.table)].empty()) {
+        own[size_t(f.table)] = name;
+      } else {
+        extra[size_t(f.table)].push_back(name);
+      }
+    }
+  } else {
+    const Container c = scene.engine.format.empty() ? Container::kExr : ParseContainer(scene.engine.format);
+    for (size_t i = 0; i < plan.tables.size(); ++i) {
+      const PlannedTable& p = plan.tables[i];
+      const std::string file = TableFile(scene, slots[i]);
+      own[i] = file;
+      const std::string symbol = "brdfbake_" + Identifier(Stem(file));
+      const Image im = ArrangeTable(p.table, p.layout);
+      if (c == Container::kExr) {
+        WriteExr(p.table, dir + "/" + file);
+      } else {
+        WriteImage(p.table, im, c, dir + "/" + file, symbol, "");
+      }
+      if (scene.engine.header) {
+        WriteImage(p.table, im, Container::kHeader, dir + "/" + Stem(file) + ".h", symbol, "");
+        extra[i].push_back(Stem(file) + ".h");
+      }
+      for (ShaderLanguage l : scene.engine.shaders) {
+        const std::string f = Stem(file) + "." + ShaderLanguageName(l);
+        WriteFileAtomically(dir + "/" + f, ShaderFunction(p.table, im, l, symbol));
+        extra[i].push_back(f);
+      }
+    }
+  }
   manifest["tables"] = nlohmann::json::array();
-  for (const PlannedTable& p : plan.tables) {
-    WriteExr(p.table, dir + "/" + p.file);
-    nlohmann::json extra = nlohmann::json::array();
-    const Image im = ArrangeTable(p.table, DefaultLayout(p.table));
-    const std::string symbol = "brdfbake_" + stem(p.file);
-    if (scene.engine.header) {
-      WriteImage(p.table, im, Container::kHeader, dir + "/" + stem(p.file) + ".h", symbol, "");
-      extra.push_back(stem(p.file) + ".h");
-    }
-    for (ShaderLanguage l : scene.engine.shaders) {
-      const std::string f = stem(p.file) + "." + ShaderLanguageName(l);
-      WriteFileAtomically(dir + "/" + f, ShaderFunction(p.table, im, l, symbol));
-      extra.push_back(f);
-    }
+  for (size_t i = 0; i < plan.tables.size(); ++i) {
+    const PlannedTable& p = plan.tables[i];
     nlohmann::json axes = nlohmann::json::array();
     for (const Axis& a : p.table.axes) axes.push_back(nlohmann::json::parse(a.ToJson()));
-    manifest["tables"].push_back({{"file", p.file},
-                                  {"table", TableName(p.spec.table)},
-                                  {"model", nlohmann::json::parse(p.table.model_json)},
-                                  {"masking", MaskingName(p.spec.masking)},
-                                  {"materials", p.materials},
-                                  {"why", p.why},
-                                  {"axes", axes},
-                                  {"seconds", p.table.seconds},
-                                  {"max_abs_error", p.table.max_abs_error},
-                                  {"interpolation_error", p.interpolation_error},
-                                  {"lookup_error", p.total_error},
-                                  {"meets_target", p.meets_target},
-                                  {"also", extra}});
+    nlohmann::json entry = {{"file", own[i]},
+                            {"table", TableName(p.spec.table)},
+                            {"model", nlohmann::json::parse(p.table.model_json)},
+                            {"masking", MaskingName(p.spec.masking)},
+                            {"materials", p.materials},
+                            {"why", p.why},
+                            {"axes", axes},
+                            {"seconds", p.table.seconds},
+                            {"max_abs_error", p.table.max_abs_error},
+                            {"interpolation_error", p.interpolation_error},
+                            {"lookup_error", p.total_error},
+                            {"meets_target", p.meets_target},
+                            {"also", extra[i]}};
+    if (p.collapse_error > 0) entry["collapse_error"] = p.collapse_error;
+    if (p.size_fixed) entry["size_fixed_by_engine"] = true;
+    if (!p.hint.empty()) entry["to_meet_the_target"] = p.hint;
+    manifest["tables"].push_back(entry);
   }
+  manifest["decisions"] = plan.decisions;
   manifest["not_baked"] = plan.notes;
   WriteFileAtomically(dir + "/manifest.json", manifest.dump(2) + "\n");
   return files;

@@ -343,12 +343,46 @@ std::vector<int> ParseSize(const std::string& text, size_t axes, const char* for
   return out;
 }
 
+// The options with which the command line overrides a scene's settings
+// (plan and bake SCENE). `full`: all of them (plan); otherwise the two that
+// bake has no other use for.
+void AddSceneOverrides(CLI::App* app, std::string* preset, std::string* format, std::string* pixel,
+                       std::string* shader, std::string* max_size, std::string* error_target, bool full) {
+  if (full) {
+    app->add_option("--preset", *preset, "bake the scene's tables in this engine's layouts and containers");
+    app->add_option("--format", *format, "the container of every table (exr | header | inc | js | ktx2 | dds), or "
+                                         "another container the --preset engine loads");
+    app->add_option("--pixel", *pixel, "float | half | unorm16 (dds only), instead of the scene's");
+    app->add_option("--shader", *shader, "lookup functions beside each table: glsl, hlsl, wgsl, comma-separated");
+  }
+  app->add_option("--max-size", *max_size, "scenes: entries per axis at most, instead of the scene's max_lut_size")
+      ->check(kInteger);
+  app->add_option("--error-target", *error_target,
+                  "scenes: max abs error of a bilinear lookup, instead of the scene's error_target")
+      ->check(kNumber);
+}
+
+// The overrides given, in a fixed order, for ApplySceneOverrides.
+brdfbake::SceneOverrides SceneOverridesGiven(const CLI::App* app, const std::string& preset, const std::string& format,
+                                             const std::string& pixel, const std::string& shader,
+                                             const std::string& max_size, const std::string& error_target) {
+  brdfbake::SceneOverrides o;
+  const std::pair<const char*, const std::string*> all[] = {{"--preset", &preset}, {"--format", &format},
+                                                            {"--pixel", &pixel},   {"--shader", &shader},
+                                                            {"--max-size", &max_size}, {"--error-target", &error_target}};
+  for (const auto& [option, value] : all) {
+    if (Given(app, option)) o.push_back({option, *value});
+  }
+  return o;
+}
+
 struct BakeOptions {
   std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
   std::string pixel = "float", output, seed = "1", preset, format, shader, scene, symbol;
   std::string channels = "named";
   std::string target = "best";
+  std::string max_size, error_target;  // scene bakes only
   std::string alpha_x = "0.25", alpha_y = "0.25";  // ellipsoid
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
   int samples = 0, threads = 0;
@@ -432,6 +466,7 @@ struct BakeOptions {
     app->add_option("--symbol", symbol,
                     "the array's name in .h/.js files and the lookup's name (default "
                     "brdfbake_<model>_<table>, e.g. brdfbake_ggx_E)");
+    AddSceneOverrides(app, &preset, &format, &pixel, &shader, &max_size, &error_target, false);
     app->add_option("--channels", channels,
                     "named (E, dfg.scale, ...) | rgba: channels named R, G, B, A and padded to four "
                     "(B = 0, A = 1) for loaders that know only those; the meanings stay in the header")
@@ -791,9 +826,12 @@ int RunPreset(const BakeOptions& opts) {
 
 int RunSceneBake(const BakeOptions& opts) {
   for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
-                        "--pixel", "--complement", "--error-channel", "--format", "--integrator", "--samples",
-                        "--seed", "--tolerance", "--preset", "--shader", "--symbol", "--channels"}) {
-    if (Given(opts.app, o)) Bad(std::string(o) + ": a scene bake takes its settings from the scene file");
+                        "--complement", "--error-channel", "--integrator", "--samples", "--seed", "--tolerance",
+                        "--symbol", "--channels", "--threads", "--target"}) {
+    if (Given(opts.app, o)) {
+      Bad(std::string(o) + ": a scene bake takes its settings from the scene file (the command line may override "
+                           "--preset, --format, --pixel, --shader, --max-size and --error-target)");
+    }
   }
   if (opts.output.empty()) Bad("-o: a scene bake writes into a directory: name it with -o DIR");
   std::error_code ec;
@@ -803,13 +841,16 @@ int RunSceneBake(const BakeOptions& opts) {
     Bad(OneLine(opts.scene) + ": no such scene file" +
         (table.empty() ? "" : "; did you mean --table " + table + "?"));
   }
-  const brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
+  brdfbake::Scene scene = brdfbake::LoadScene(opts.scene);
+  brdfbake::ApplySceneOverrides(&scene, SceneOverridesGiven(opts.app, opts.preset, opts.format, opts.pixel, opts.shader,
+                                                            opts.max_size, opts.error_target));
+  // Every file name is known (and a --format the engine does not load
+  // refused) before the directory is made.
+  const std::vector<std::string> outputs = brdfbake::SceneOutputFiles(scene, opts.output);
   MakeOutputDirectory(opts.output);
   // Every output is checked before the plan's work (a directory in the
   // place of a table failed only after the planning).
-  for (const std::string& f : brdfbake::SceneOutputFiles(scene, opts.output)) {
-    brdfbake::CheckOutputPath(f);
-  }
+  for (const std::string& f : outputs) brdfbake::CheckOutputPath(f);
   const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
   const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
   std::printf("%s", brdfbake::PlanText(scene, plan).c_str());
@@ -819,6 +860,9 @@ int RunSceneBake(const BakeOptions& opts) {
 
 int RunBake(const BakeOptions& opts) {
   if (!opts.scene.empty()) return RunSceneBake(opts);
+  for (const char* o : {"--max-size", "--error-target"}) {
+    if (Given(opts.app, o)) Bad(std::string(o) + ": applies to scene bakes (bake SCENE -o DIR) and plan");
+  }
   if (!opts.preset.empty()) return RunPreset(opts);
   const brdfbake::BakeSpec spec = opts.Get();
   const brdfbake::Container container =
@@ -1156,8 +1200,10 @@ int main(int argc, char** argv) {
       "plan", "What `bake SCENE -o DIR` would write: the minimal set of tables for a scene's materials, "
               "each at the resolution that meets the scene's error target.");
   plan->allow_extras();
-  std::string plan_scene;
+  std::string plan_scene, plan_preset, plan_format, plan_pixel, plan_shader, plan_max_size, plan_error_target;
   plan->add_option("scene", plan_scene, "a scene: .toml (see examples/README.md), .gltf or .glb")->required();
+  AddSceneOverrides(plan, &plan_preset, &plan_format, &plan_pixel, &plan_shader, &plan_max_size, &plan_error_target,
+                    true);
 
   CLI::App* stability = app.add_subcommand(
       "stability", "Float kernels against the double reference, region by region over the "
@@ -1216,7 +1262,10 @@ int main(int argc, char** argv) {
   try {
     if (*bake) status = RunBake(bake_opts);
     if (*plan) {
-      const brdfbake::Scene scene = brdfbake::LoadScene(plan_scene);
+      brdfbake::Scene scene = brdfbake::LoadScene(plan_scene);
+      brdfbake::ApplySceneOverrides(&scene, SceneOverridesGiven(plan, plan_preset, plan_format, plan_pixel, plan_shader,
+                                                                plan_max_size, plan_error_target));
+      brdfbake::SceneOutputFiles(scene, ".");  // a --format the engine does not load is refused here too
       std::printf("%s", brdfbake::PlanText(scene, brdfbake::PlanScene(scene)).c_str());
     }
     if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
