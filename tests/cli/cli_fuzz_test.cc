@@ -338,9 +338,9 @@ TEST(SceneFuzzTest, UrisNamingOtherFilesAreNeverOpened) {
   };
   const bool trace = CanTrace(root);
   if (!trace) std::printf("strace unavailable: checking output and time only\n");
-  // One scene per URI, whose one material (anisotropic GGX, which the plan
-  // lists without a table) plans at once, and one scene with every URI
-  // and a GGX material, planned and baked.
+  // One scene per URI, whose one material (anisotropic GGX at roughness 1,
+  // where the collapse is exact and the tables small) plans at once, and
+  // one scene with every URI and a GGX material, planned and baked.
   for (size_t i = 0; i <= uris.size(); ++i) {
     const bool all = i == uris.size();
     std::string buffers, images;
