@@ -35,6 +35,10 @@ struct ProbeOptions {
   int probes = 12;       // cells (or nodes) probed per axis at most
   int minor_probes = 12;  // the same for the axes other than mu and roughness (phi_o, anisotropy, gamma)
   bool stored = true;    // the stored values (rounded to the pixel type), or the baked doubles
+  // Only lookups at roughness in [roughness_min, roughness_max] (the
+  // materials' range within a wider engine axis): the cells that overlap
+  // it, and its ends.
+  double roughness_min = -kInfinity, roughness_max = kInfinity;
 };
 
 struct ProbeResult {

@@ -115,6 +115,25 @@ std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptio
     }
     AddMirrorCut(t.axes[size_t(kr)], strengths, &pos[size_t(kr)]);
   }
+  if (kr >= 0 && t.axes[size_t(kr)].size > 1 && (o.roughness_min > -kInfinity || o.roughness_max < kInfinity)) {
+    const Axis& ar = t.axes[size_t(kr)];
+    const int n = ar.size;
+    const double lo = IndexOf(ar, std::max(o.roughness_min, ar.min)), hi = IndexOf(ar, std::min(o.roughness_max, ar.max));
+    std::vector<double> within;
+    for (double f : pos[size_t(kr)]) {
+      if (f >= lo && f <= hi) within.push_back(f);
+    }
+    // The midpoints of (up to `probes` of) the cells that overlap the range.
+    const int c0 = std::clamp(int(std::floor(lo)), 0, n - 2), c1 = std::clamp(int(std::floor(hi)), 0, n - 2);
+    const int cells = c1 - c0 + 1, k = std::min(cells, o.probes);
+    for (int i = 0; i < k; ++i) {
+      const double f = c0 + i * cells / k + 0.5;
+      if (f >= lo && f <= hi) within.push_back(f);
+    }
+    within.push_back(lo);
+    within.push_back(hi);
+    pos[size_t(kr)] = within;
+  }
   return pos;
 }
 

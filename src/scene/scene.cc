@@ -235,6 +235,16 @@ Scene LoadToml(const std::string& path) {
       s.engine.shaders.push_back(ParseShaderLanguage(l));
     }
   }
+  if (!s.engine.preset.empty()) {
+    // The engine must sample one of the scene's tables.
+    std::string kinds;
+    bool any = false;
+    for (const PresetTable& pt : FindPreset(s.engine.preset).tables) {
+      kinds += std::string(kinds.empty() ? "" : ", ") + TableName(pt.spec.table);
+      any |= std::find(s.engine.tables.begin(), s.engine.tables.end(), pt.spec.table) != s.engine.tables.end();
+    }
+    if (!any) Bad(path + ": [engine]: field 'tables': engine preset '" + s.engine.preset + "' samples " + kinds + " only");
+  }
   const toml::node* mats = root.get("material");
   if (!mats) Bad(path + ": no [[material]] entries");
   if (!mats->is_array_of_tables()) Bad(path + ": 'material' must be an array of tables ([[material]])");

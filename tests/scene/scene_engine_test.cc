@@ -326,7 +326,8 @@ TEST(ScenePresetTest, OverridesAndEnginesAreChecked) {
   for (const auto& [text, expect] : std::vector<std::pair<std::string, std::string>>{
            {"engine = \"bevvy\"\n", "field 'engine': unknown preset 'bevvy'"},
            {"[engine]\npreset = \"bevy\"\npixel = \"float\"\n", "field 'pixel': fixed by the engine preset 'bevy'"},
-           {"[engine]\npreset = 3\n", "field 'preset': expected a string"}}) {
+           {"[engine]\npreset = 3\n", "field 'preset': expected a string"},
+           {"[engine]\npreset = \"bevy\"\ntables = [\"E\"]\n", "field 'tables': engine preset 'bevy' samples dfg only"}}) {
     try {
       Toml(dir, text + mat);
       ADD_FAILURE() << "accepted " << text;
