@@ -27,6 +27,8 @@ struct SceneMaterial {
   double roughness_min = 0.5, roughness_max = 0.5;
   double gamma = 2;  // std
   double anisotropy = 0;  // ggx-aniso strength (glTF KHR_materials_anisotropy)
+  // The least strength: an anisotropyTexture modulates it over [0, strength].
+  double anisotropy_min = 0;
   Masking masking = Masking::kHeightCorrelated;
   // glTF KHR_materials_clearcoat: a GGX layer (IOR 1.5) over the base at
   // its own roughness; clearcoat = 0 is no layer.

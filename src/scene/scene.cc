@@ -300,7 +300,7 @@ Scene LoadToml(const std::string& path) {
       f.Fail("gamma", "only std has gamma");
     }
     if (mat.model == ModelKind::kGgxAniso) {
-      mat.anisotropy = f.Number("anisotropy", 0, 0, 1, true);
+      mat.anisotropy = mat.anisotropy_min = f.Number("anisotropy", 0, 0, 1, true);
     } else if (f.Has("anisotropy")) {
       f.Fail("anisotropy", "only ggx-aniso has an anisotropy");
     }
@@ -520,6 +520,16 @@ Scene LoadGltf(const std::string& path) {
         if (strength > 0) {
           mat.model = ModelKind::kGgxAniso;
           mat.anisotropy = strength;
+          const auto tex = ext.find("anisotropyTexture");
+          if (tex != ext.end()) {
+            const auto index = tex->is_object() ? tex->find("index") : tex->end();
+            if (!tex->is_object() || index == tex->end() || !index->is_number_unsigned()) {
+              Bad(where + ": field 'KHR_materials_anisotropy.anisotropyTexture': expected an object with an "
+                          "integer 'index' >= 0");
+            }
+          }
+          // The texture's blue channel scales the strength: [0, strength].
+          mat.anisotropy_min = tex != ext.end() ? 0.0 : strength;
         }
       } else if (name_ext == "KHR_materials_ior" || name_ext == "KHR_materials_specular") {
         // The F0 and F90 these set weight the split-sum terms: dfg covers them.
@@ -1159,7 +1169,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     for (const SceneMaterial* m : members) {
       box.rmin = std::min(box.rmin, m->roughness_min);
       box.rmax = std::max(box.rmax, m->roughness_max);
-      box.smin = std::min(box.smin, m->anisotropy);
+      box.smin = std::min(box.smin, m->anisotropy_min);
       box.smax = std::max(box.smax, m->anisotropy);
       names += (names.empty() ? "'" : ", '") + Printable(m->name) + "'";
     }
@@ -1252,7 +1262,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       const bool collapsed_k = k == TableKind::kDfg || !use_4d;
       if (!collapsed_k) continue;
       for (const SceneMaterial* m : members) {
-        iso[IsoKey(masking)][k].push_back({m->name + " (collapsed)", CollapsedRoughness(m->roughness_min, m->anisotropy),
+        iso[IsoKey(masking)][k].push_back({m->name + " (collapsed)", CollapsedRoughness(m->roughness_min, m->anisotropy_min),
                                             CollapsedRoughness(m->roughness_max, m->anisotropy), collapse[k], "collapsed"});
       }
     }

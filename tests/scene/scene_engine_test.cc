@@ -182,6 +182,23 @@ TEST(SceneAnisoTest, PlannedErrorClaimsBoundOnAnisotropicTables) {
   EXPECT_LE(worst, avg->total_error);
 }
 
+// An anisotropyTexture scales the strength: the box spans [0, strength].
+TEST(SceneAnisoTest, AnisotropyTextureSpansTheStrength) {
+  const std::string dir = test::Scratch("scene_aniso_texture");
+  WriteText(dir + "/t.gltf",
+            "{\"asset\": {\"version\": \"2.0\"}, \"textures\": [{\"source\": 0}], \"materials\": ["
+            "{\"name\": \"a\", \"pbrMetallicRoughness\": {\"roughnessFactor\": 0.5}, \"extensions\": "
+            "{\"KHR_materials_anisotropy\": {\"anisotropyStrength\": 0.3, \"anisotropyTexture\": {\"index\": 0}}}}]}");
+  const Scene s = LoadScene(dir + "/t.gltf");
+  ASSERT_EQ(s.materials.size(), 1u);
+  EXPECT_EQ(s.materials[0].anisotropy, 0.3);
+  EXPECT_EQ(s.materials[0].anisotropy_min, 0.0);
+  WriteText(dir + "/bad.gltf",
+            "{\"asset\": {\"version\": \"2.0\"}, \"materials\": [{\"name\": \"b\", \"extensions\": "
+            "{\"KHR_materials_anisotropy\": {\"anisotropyStrength\": 0.3, \"anisotropyTexture\": 4}}}]}");
+  EXPECT_THROW(LoadScene(dir + "/bad.gltf"), std::invalid_argument);
+}
+
 // A clearcoat layer is GGX at its own roughness: it widens the isotropic
 // GGX tables' range and adds no table of its own.
 TEST(SceneAnisoTest, ClearcoatReusesTheIsotropicTables) {
