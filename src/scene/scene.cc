@@ -1270,7 +1270,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       for (PlannedTable& a : a_plan) {
         a.group = group;
         for (const SceneMaterial* m : members) a.materials.push_back(m->name);
-        a.file = std::string(TableName(a.spec.table)) + "_" + group + ".exr";
+        a.file = TableFile(scene, {a.spec.table, group, true});
         a.why = "used by " + std::to_string(members.size()) + " anisotropic material" + (members.size() > 1 ? "s" : "") +
                 ", roughness " + Range(box.rmin, box.rmax) + ", anisotropy " + Range(box.smin, box.smax);
         if (planner.preset()) a.why += "; engine preset '" + scene.engine.preset + "' has no layout for it: brdfbake's own";

@@ -334,6 +334,14 @@ TEST(ScenePresetTest, OverridesAndEnginesAreChecked) {
   EXPECT_TRUE(dds.engine.unorm16);
   const std::vector<std::string> files = SceneOutputFiles(dds, "d");
   EXPECT_NE(std::find(files.begin(), files.end(), "d/E_ggx.dds"), files.end());
+  // The plan names the files as written, the anisotropic tables' too.
+  Scene aniso = Toml(dir, "[engine]\nmax_lut_size = 8\nerror_target = 0.05\ntables = [\"E\"]\n"
+                          "[[material]]\nname = \"a\"\nmodel = \"ggx-aniso\"\nroughness = 0.5\nanisotropy = 0.9\n");
+  ApplySceneOverrides(&aniso, {{"--format", "ktx2"}});
+  const ScenePlan aniso_plan = PlanScene(aniso);
+  ASSERT_EQ(aniso_plan.tables.size(), 1u) << PlanText(aniso, aniso_plan);
+  EXPECT_TRUE(aniso_plan.tables[0].spec.Anisotropic()) << PlanText(aniso, aniso_plan);
+  EXPECT_EQ(aniso_plan.tables[0].file, "E_ggx-aniso.ktx2");
   EXPECT_NE(std::find(files.begin(), files.end(), "d/E_ggx.wgsl"), files.end());
   // The engine in a TOML scene: `engine = "bevy"`, or `preset` in [engine]
   // (where the fields its layout fixes are refused).
