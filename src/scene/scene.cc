@@ -7,6 +7,7 @@
 #include "brdfbake/scene.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -1027,6 +1028,20 @@ Scene LoadScene(const std::string& path) {
   Bad(path + ": a scene is a .toml, .gltf or .glb file");
 }
 
+namespace {
+
+// A number that is the whole of `text` (NaN otherwise, which every range
+// check refuses).
+double WholeNumber(const std::string& text) {
+  char* end = nullptr;
+  const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
+                       ? std::numeric_limits<double>::quiet_NaN()
+                       : std::strtod(text.c_str(), &end);
+  return end && *end == '\0' ? v : std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
 void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
   SceneEngine& e = scene->engine;
   std::string pixel;
@@ -1053,11 +1068,11 @@ void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
       if (value.empty() || value.back() == ',') Bad("--shader: an empty language after the last comma");
       e.shaders = langs;
     } else if (option == "--max-size") {
-      const double n = std::strtod(value.c_str(), nullptr);
+      const double n = WholeNumber(value);
       if (!(n >= 2 && n <= 8192) || n != std::floor(n)) Bad("--max-size: '" + value + "' is not an integer in [2, 8192]");
       e.max_lut_size = int(n);
     } else if (option == "--error-target") {
-      const double t = std::strtod(value.c_str(), nullptr);
+      const double t = WholeNumber(value);
       if (!(t >= 1e-7 && t <= 1)) Bad("--error-target: '" + value + "' is outside [1e-07, 1]");
       e.error_target = t;
     } else {

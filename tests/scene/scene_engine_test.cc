@@ -319,6 +319,8 @@ TEST(ScenePresetTest, OverridesAndEnginesAreChecked) {
   ExpectOverrideRejected(s, {{"--pixel", "unorm16"}}, "only the dds format holds unorm16");
   ExpectOverrideRejected(s, {{"--max-size", "1"}}, "--max-size: '1' is not an integer in [2, 8192]");
   ExpectOverrideRejected(s, {{"--error-target", "0"}}, "--error-target: '0' is outside");
+  ExpectOverrideRejected(s, {{"--max-size", "16x"}}, "--max-size: '16x' is not an integer");
+  ExpectOverrideRejected(s, {{"--error-target", "nan"}}, "--error-target: 'nan' is outside");
   ExpectOverrideRejected(s, {{"--preset", "ue4"}}, "did you mean 'unreal'");
   ExpectOverrideRejected(s, {{"--format", "header"}}, "header = true");
   ExpectOverrideRejected(s, {{"--format", "png"}}, "png");

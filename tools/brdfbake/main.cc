@@ -827,7 +827,7 @@ int RunPreset(const BakeOptions& opts) {
 int RunSceneBake(const BakeOptions& opts) {
   for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
                         "--complement", "--error-channel", "--integrator", "--samples", "--seed", "--tolerance",
-                        "--symbol", "--channels", "--threads", "--target"}) {
+                        "--symbol", "--channels"}) {
     if (Given(opts.app, o)) {
       Bad(std::string(o) + ": a scene bake takes its settings from the scene file (the command line may override "
                            "--preset, --format, --pixel, --shader, --max-size and --error-target)");
