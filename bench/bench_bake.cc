@@ -194,6 +194,17 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
   Add("ellipsoid", Ellipsoid(T::kE), {"mu", "phi"}, {{64, 64, c}});
   Add("ellipsoid", Ellipsoid(T::kEavg), {}, {{c}});
   Add("sel", Spec(T::kSelNorm, ModelKind::kSel), {"alpha_x", "alpha_y"}, {{32, 32, c}});
+#if BRDFBAKE_WITH_CHARLIE
+  // The sheen: E with either visibility, and E_avg.
+  BakeSpec neubelt = Spec(T::kE, ModelKind::kCharlie);
+  neubelt.model.visibility = SheenVisibility::kNeubelt;
+  Add("charlie_neubelt", neubelt, size, {{64, c}});
+  Add("charlie_conty-kulla", Spec(T::kE, ModelKind::kCharlie), size, {{64, c}});
+  Add("charlie_conty-kulla", Spec(T::kEavg, ModelKind::kCharlie), size, {{32, c}});
+#endif
+#if BRDFBAKE_WITH_DISNEY
+  Add("disney-diffuse", Spec(T::kE, ModelKind::kDisneyDiffuse), size, {{64, c}});
+#endif
 
   // The double scalar reference of the same rules.
   Add("ggx", Spec(T::kDfg, ggx, I::kQuadrature, false), size, {{128, c}});

@@ -515,6 +515,8 @@ def bake_label(table_name, model, axes):
         model_text = "std over gamma"
     elif m:
         model_text = f"std (gamma {m.group(1).lstrip('_')})"
+    elif model.startswith("charlie_"):
+        model_text = f"charlie ({model[len('charlie_'):]})"
     else:
         model_text = model
     values = dict(a.split(":") for a in axes)
@@ -593,6 +595,9 @@ def readme_rows(readme, kernels_ratios):
         ("ggx-aniso E 32x16x32x16", "quadrature", "ggx-aniso E 32x16x32x16"),
         ("ellipsoid E 64x64", "quadrature", "ellipsoid E 64x64, one material"),
         ("sel_norm 32x32", "quadrature", "sel_norm 32x32"),
+        ("charlie (neubelt) E 64x64", "quadrature", "charlie (sheen) E 64x64, neubelt"),
+        ("charlie (conty-kulla) E 64x64", "quadrature", "charlie (sheen) E 64x64, conty-kulla"),
+        ("disney-diffuse E 64x64", "quadrature", "disney-diffuse E 64x64"),
         ("ggx E 32x32", "engine", "ggx E 32x32, engine setting (1024 NDF samples)"),
     ]
     lines = []

@@ -181,9 +181,16 @@ void ReleaseBakeCaches();
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed = 0);
 
-// The estimate moved into the physical range (E in [0, 1]; scale, bias >= 0
-// and scale + bias <= 1), as the tables store it; the errors cover the move.
-TexelEstimate ClampToRange(const TexelEstimate& v);
+// The largest E (and E_avg) of the spec's model: 1, or +inf for charlie
+// and disney-diffuse, which do not conserve energy (the Disney diffuse
+// lobe reflects more than it receives at high roughness, the sheen's
+// visibility terms exceed the masking bound at grazing angles).
+double StoredEMax(const BakeSpec& spec);
+
+// The estimate moved into the physical range (E in [0, e_max]; scale,
+// bias >= 0 and scale + bias <= 1), as the tables store it; the errors
+// cover the move.
+TexelEstimate ClampToRange(const TexelEstimate& v, double e_max = 1.0);
 
 // E_avg at one roughness, as the E_avg table bakes it (texel `index` picks
 // the random streams of the sampling integrators), and its error estimate.

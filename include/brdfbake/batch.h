@@ -43,7 +43,7 @@ enum class BatchFresnel { kSchlick, kDielectric, kConductor };
 // non-finite one changes only its own element's outputs, to NaN or to the
 // value below the horizon.
 struct BatchModel {
-  ModelKind kind = ModelKind::kGgx;  // ggx, beckmann, std, ellipsoid or sel
+  ModelKind kind = ModelKind::kGgx;  // ggx, beckmann, std, ellipsoid, sel, charlie, disney-diffuse
   float alpha_x = 0.25f, alpha_y = 0.25f;
   float gamma = 2.0f;
   float theta_x = 0, theta_y = 0, theta_z = 0;
@@ -51,6 +51,9 @@ struct BatchModel {
   BatchFresnel fresnel = BatchFresnel::kSchlick;
   float f0 = 1.0f;             // Schlick F0; 1 means F = 1
   float eta = 1.5f, k = 0.0f;  // dielectric eta, or conductor eta + i k
+  // charlie: its visibility (Lambda, G1 and G2 need conty-kulla). charlie
+  // and disney-diffuse take alpha_x = alpha_y in (0, 1] and F = 1.
+  SheenVisibility visibility = SheenVisibility::kContyKulla;
 };
 
 // The descriptor of a model's parameters (in float), with `masking` and

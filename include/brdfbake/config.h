@@ -25,6 +25,13 @@
 #define BRDFBAKE_WITH_SEL 1
 #endif
 
+#ifndef BRDFBAKE_WITH_CHARLIE
+#define BRDFBAKE_WITH_CHARLIE 1
+#endif
+#ifndef BRDFBAKE_WITH_DISNEY
+#define BRDFBAKE_WITH_DISNEY 1
+#endif
+
 #if BRDFBAKE_WITH_STD && !BRDFBAKE_WITH_BECKMANN
 #error "the std family needs beckmann (BRDFBAKE_MODELS)"
 #endif

@@ -39,9 +39,16 @@ Container ContainerFromPath(const std::string& path);
 struct ImageLayout {
   bool roughness_on_x = false;  // x = roughness, y = mu (three.js, Cycles)
   bool flip_rows = false;       // row 0 holds the last entry of the y axis
+  // A channel: scale * (its source in table `table`) + offset, clamped to
+  // at most `max`. Table 0 is the image's own table, k > 0 the k-th of the
+  // others ArrangeTables takes (another model over the same axes: the
+  // Charlie sheen in Filament's third channel, say). HDRP stores the
+  // Disney diffuse E / 1.03571 - 0.5, MaterialX its sheen clamped to 1.
   struct Out {
     std::string name;  // channel name (EXR) / role in the comments
     Source source;
+    int table = 0;
+    double scale = 1, offset = 0, max = kInfinity;
   };
   std::vector<Out> channels;
   PixelType pixel = PixelType::kFloat;
@@ -76,6 +83,15 @@ struct Image {
 
 // Throws std::invalid_argument if a channel's source is not in the table.
 Image ArrangeTable(const Table& table, const ImageLayout& layout);
+// The same with the channels of `others` (the layout's tables 1, 2, ...),
+// each over the same axes as `table`; the claim covers every table read.
+Image ArrangeTables(const Table& table, const std::vector<const Table*>& others,
+                    const ImageLayout& layout);
+
+// A channel's meaning as the file's conventions state it: "E", or with
+// another table, its affine map and clamp, "E of disney-diffuse * 0.9655 -
+// 0.5".
+std::string ChannelMeaning(const ImageLayout::Out& out, const std::vector<const Table*>& others);
 
 // Everything a loader needs, as "key: value" lines (table, model, masking,
 // axes with their maps, row order, channels, pixel type, error, preset).

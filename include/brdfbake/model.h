@@ -16,16 +16,19 @@
 #include "brdfbake/config.h"
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/fresnel.h"
+#include "brdfbake/models/sheen.h"
 #include "brdfbake/models/vec3.h"
 
 namespace brdfbake {
 
 // The model families, and ggx-aniso: GGX whose widths a table takes from
 // the roughness and the glTF anisotropy strength (bake and eval of E only).
-enum class ModelKind { kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso };
+// kCharlie is the Charlie sheen (models/sheen.h), kDisneyDiffuse the Disney
+// diffuse BRDF (models/disney_diffuse.h).
+enum class ModelKind { kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso, kCharlie, kDisneyDiffuse };
 
 // The kind's name on the command line and in files: ggx, beckmann, std,
-// ellipsoid, sel, ggx-aniso.
+// ellipsoid, sel, ggx-aniso, charlie, disney-diffuse.
 const char* ModelName(ModelKind kind);
 
 // The kind `name` names; std::invalid_argument with a one-line message
@@ -38,6 +41,10 @@ struct ModelParams {
   double alpha_y = 0.25;
   double gamma = 2.0;  // std only; +inf = Beckmann
   double theta_x = 0, theta_y = 0, theta_z = 0;  // ellipsoid A = S R, sel Q (radians)
+  // charlie only: the visibility term (models/sheen.h). charlie and
+  // disney-diffuse are isotropic (alpha_x = alpha_y = r^2; disney-diffuse
+  // takes r = sqrt(alpha_x)) with alpha in (0, 1].
+  SheenVisibility visibility = SheenVisibility::kContyKulla;
 
   const char* name() const { return ModelName(kind); }
 
@@ -52,6 +59,10 @@ struct ModelInfo {
   const char* source;
 };
 const std::vector<ModelInfo>& Models();  // the families this build contains
+
+// The visibility `name` names (neubelt, conty-kulla); std::invalid_argument
+// with a one-line message otherwise.
+SheenVisibility ParseSheenVisibility(const std::string& name);
 
 // Whether `kind` is a model family of this build (BRDFBAKE_MODELS);
 // ggx-aniso is built with ggx.

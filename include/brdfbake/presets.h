@@ -34,6 +34,10 @@ struct PresetTable {
   // Other containers the engine loads this table from (bake --preset
   // --format): the file keeps its stem and takes the container's extension.
   std::vector<Container> also;
+  // The other tables the layout's channels read (its table k is with[k -
+  // 1]): another model's E over the same axes, such as the Charlie sheen
+  // in Filament's third channel. Their axes are the table's own.
+  std::vector<BakeSpec> with;
 };
 
 struct Preset {
@@ -71,6 +75,13 @@ struct PresetFile {
 // work. Throws std::invalid_argument for a --format no table of the engine
 // is loaded from.
 std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run);
+
+// The image of `table` (pt.spec's bake, or a scene's over its own axes) in
+// pt's layout: pt.with baked over table's mu and roughness axes (with
+// `threads`, and `tolerance` when > 0; progress per table) and arranged
+// with it.
+Image ArrangePresetTable(const PresetTable& pt, const Table& table, int threads = 0,
+                         double tolerance = 0, const ProgressFn& progress = nullptr);
 
 // Writes them (each through an AtomicFile) from the baked tables and their
 // arrangements, one per preset table.

@@ -58,11 +58,13 @@ void ValidateEvalRequest(const EvalRequest& req) {
       const ModelKind kind = req.model.kind;
       const std::string m = req.model.name();
       const bool ellipsoid = kind == ModelKind::kEllipsoid;
+      const bool lobe = kind == ModelKind::kCharlie || kind == ModelKind::kDisneyDiffuse;
       if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
-          !aniso && !ellipsoid) {
-        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std and ellipsoid only (got '" + m + "')");
+          !aniso && !ellipsoid && !lobe) {
+        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie and "
+            "disney-diffuse only (got '" + m + "')");
       }
-      if ((aniso || ellipsoid) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+      if ((aniso || ellipsoid || lobe) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
       if (ellipsoid) continue;  // the material's own widths and angles
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
@@ -146,10 +148,11 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
   }
   if (q == "E_avg") {
     const EavgEstimate e = IntegrateEavg(spec, roughness);
-    return "," + Fmt(std::clamp(e.value, 0.0, 1.0)) + "," + Fmt(e.error);
+    return "," + Fmt(std::clamp(e.value, 0.0, StoredEMax(spec))) + "," + Fmt(e.error);
   }
   spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
-  const TexelEstimate v = ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)));
+  const TexelEstimate v =
+      ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)), StoredEMax(spec));
   if (q == "E") return "," + Fmt(v.e) + "," + Fmt(v.err_e);
   return "," + Fmt(v.scale) + "," + Fmt(v.bias) + "," + Fmt(std::max(v.err_scale, v.err_bias));
 }

@@ -31,6 +31,7 @@
 #include "rules/ggx/azimuthal.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
 #include "rules/sel/sel_norm.h"
+#include "rules/sheen/sheen_albedo.h"
 #include "sampling/sampling_integrators.h"
 #include "sampling/sampling_simd.h"
 
@@ -168,6 +169,16 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (sel && (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
     Bad("--table sel_norm: the quadrature only, without --complement");
   }
+  const bool sheen = m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse;
+  if (sheen && spec.table == TableKind::kDfg) {
+    Bad("--table: " + std::string(spec.model.name()) +
+        " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse "
+        "channels are its E)");
+  }
+  if (sheen && spec.integrator != IntegratorKind::kQuadrature) {
+    Bad("--integrator: " + std::string(spec.model.name()) + " tables are baked with the quadrature only");
+  }
+  if (sheen && spec.complement && spec.table == TableKind::kDfg) Bad("--complement: no dfg here");
   const bool ellipsoid = m == ModelKind::kEllipsoid;
   if (ellipsoid && spec.table == TableKind::kDfg) {
     Bad("--table: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
@@ -176,9 +187,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     Bad("--integrator: ellipsoid tables are baked with the quadrature only");
   }
   if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso &&
-      !sel && !ellipsoid) {
-    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann and std (got '" +
-        std::string(spec.model.name()) + "')");
+      !sel && !ellipsoid && !sheen) {
+    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie and "
+        "disney-diffuse (got '" + std::string(spec.model.name()) + "')");
   }
   if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
   if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
@@ -351,9 +362,29 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
   return {};
 }
 
+// E of the sheen and diffuse lobes (rules/sheen/sheen_albedo.h), in lanes
+// or by the double reference.
+TexelEstimate SheenTexel(const BakeSpec& spec, double alpha, double mu) {
+  RuleResult r;
+  if (spec.model.kind == ModelKind::kDisneyDiffuse) {
+    const double rough = std::sqrt(alpha);
+    r = spec.simd ? SimdDisneyAlbedo(rough, mu) : DisneyAlbedo(rough, mu);
+  } else {
+    const SheenVisibility v = spec.model.visibility;
+    const int n = spec.EffectiveSamples();
+    r = spec.simd ? SimdCharlieAlbedo(alpha, v, mu, spec.tolerance, n)
+                  : CharlieAlbedo(CharlieSheen<double>(alpha, v), mu, spec.tolerance, n);
+  }
+  TexelEstimate t;
+  t.e = r.value;
+  t.err_e = r.error;
+  return t;
+}
+
 TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
-  if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   const ModelKind m = spec.model.kind;
+  if (m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse) return SheenTexel(spec, alpha, mu);
+  if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   if (m == ModelKind::kGgx) return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
 #if BRDFBAKE_WITH_BECKMANN
   if (m == ModelKind::kBeckmann) return TexelFor(BeckmannNdf<double>(alpha), mu, spec, texel_seed);
@@ -397,7 +428,24 @@ std::string ModelJson(const BakeSpec& spec) {
                  "about pi/2, so [0, pi/2] covers every azimuth";
     return j.dump();
   }
+  if (spec.model.kind == ModelKind::kDisneyDiffuse) {
+    j["roughness"] = "r itself: F_D90 = 1/2 + 2 r (L.H)^2";
+    j["definition"] = "Disney diffuse of [Burley12], base colour 1: f = (1/pi) (1 + (F_D90 - 1) "
+                      "(1 - NoL)^5) (1 + (F_D90 - 1) (1 - NoV)^5)";
+    return j.dump();
+  }
   j["alpha"] = "roughness^2";
+  if (spec.model.kind == ModelKind::kCharlie) {
+    j["visibility"] = SheenVisibilityName(spec.model.visibility);
+    j["definition"] =
+        spec.model.visibility == SheenVisibility::kNeubelt
+            ? "Charlie sheen of [EstevezKulla17], f = D(h) / (4 (NoL + NoV - NoL NoV)) "
+              "([Neubelt13]), D = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi), F = 1"
+            : "Charlie sheen of [EstevezKulla17], f = D(h) G2 / (4 NoL NoV), G2 = 1 / (1 + "
+              "Lambda(NoV) + Lambda(NoL)) with the paper's fitted Lambda, D = (2 + 1/alpha) "
+              "sin(theta_h)^(1/alpha) / (2 pi), F = 1";
+    return j.dump();
+  }
   if (spec.model.kind == ModelKind::kStudentT && spec.HasGammaAxis()) {
     j["gamma"] = "the gamma axis (brdfbake.axes); its last value inf is beckmann";
   } else if (spec.model.kind == ModelKind::kStudentT) {
@@ -457,6 +505,26 @@ std::string IntegratorJson(const BakeSpec& spec) {
                        "scalar reference with --target scalar)",
                  "sum over the psi pieces of |K15 - G7|, plus the rays' own sums of |K15 - G7| "
                  "carried through the Kronrod weights");
+        break;
+      }
+      if (spec.model.kind == ModelKind::kCharlie) {
+        describe("mu_i in [0, 1] and the azimuth phi between wi and wo in [0, pi]: E = int 2 mu_i "
+                 "V(mu_i, mu) int D(h) dphi dmu_i (both visibilities depend on the cosines only; "
+                 "src/rules/sheen/sheen_albedo.h)",
+                 "Gauss-Kronrod 15 in mu_i on [0, mu] graded towards 0 and [mu, 1], each node's "
+                 "azimuthal integral by Gauss-Kronrod 15 on pieces bisected worst first; the mu_i "
+                 "pieces bisected worst first (nodes in double SIMD lanes)",
+                 "sum over the mu_i pieces of |K15 - G7|, plus the azimuthal rules' sums carried "
+                 "through the Kronrod weights");
+        break;
+      }
+      if (spec.model.kind == ModelKind::kDisneyDiffuse) {
+        describe("mu_i in [0, 1], the azimuth of wi in closed form: the azimuthal mean of f is a "
+                 "polynomial of degree 8 in mu_i (src/rules/sheen/sheen_albedo.h)",
+                 spec.table == TableKind::kEavg
+                     ? "8 x 8-point Gauss-Legendre over (mu_i, mu), exact for the polynomial"
+                     : "8-point Gauss-Legendre in mu_i, exact for the polynomial",
+                 "difference from the 6-point rule (also exact: rounding only) plus 1e-15 E");
         break;
       }
       if ((spec.model.kind == ModelKind::kGgx && spec.table != TableKind::kDfg) || beckmann_e) {
@@ -533,6 +601,8 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "Gauss-Kronrod 15 in sqrt(mu) as for the other models, A(mu) the average of "
                  "E(mu, phi_o) over phi_o in [0, pi/2] by adaptive Gauss-Kronrod 15; error: the "
                  "rules' |K15 - G7| plus the propagated errors of E";
+  } else if (spec.table == TableKind::kEavg && spec.model.kind == ModelKind::kDisneyDiffuse) {
+    j["E_avg"] = "2 int_0^1 E(mu) mu dmu by the 8 x 8-point Gauss-Legendre rule above (exact)";
   } else if (spec.table == TableKind::kEavg) {
     if (spec.integrator == IntegratorKind::kQuadrature) {
       j["E_avg"] = "2 int_0^1 E(mu) mu dmu, adaptive Gauss-Kronrod 15 in sqrt(mu) from the "
@@ -546,7 +616,11 @@ std::string IntegratorJson(const BakeSpec& spec) {
     }
   }
   j["grazing"] = "mu = 0 evaluated at mu = 1e-7";
-  j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
+  if (spec.model.kind == ModelKind::kCharlie) {
+    j["smallest_alpha"] = "alpha < 1e-6 is evaluated at 1e-6";
+  } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
+    j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
+  }
   return j.dump();
 }
 
@@ -881,6 +955,10 @@ static int StdEavgGrading(const BakeSpec& spec) {
 
 EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
   const double alpha = AlphaFromRoughness(roughness);
+  if (spec.model.kind == ModelKind::kDisneyDiffuse) {
+    const RuleResult r = spec.simd ? SimdDisneyEavg(roughness) : DisneyEavg(roughness);
+    return {r.value, r.error};
+  }
   if (spec.integrator == IntegratorKind::kQuadrature) {
     return AdaptiveEavg([&](double mu) { return Texel(spec, alpha, mu, 0); }, spec.tolerance,
                         StdEavgGrading(spec));
@@ -953,7 +1031,8 @@ const char* Definition(const std::string& meaning) {
 }  // namespace
 
 const char* const kStoredRange =
-    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1]; dfg.scale and dfg.bias clamped to >= 0 with "
+    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1] (charlie and disney-diffuse: E and E_avg "
+    "clamped to >= 0 only, neither lobe conserves energy); dfg.scale and dfg.bias clamped to >= 0 with "
     "scale + bias <= 1 in the stored precision; brdfbake.max_abs_error covers the clamp and the "
     "rounding to the pixel type";
 
@@ -1101,6 +1180,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
 #endif
   std::atomic<int64_t> done{0};
   std::vector<double>& v0 = t.channels[0].values;
+  const double e_max = StoredEMax(spec);
   if (sel) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), y = static_cast<int>(i / t.width);
@@ -1119,7 +1199,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       const EavgEstimate e = ellipsoid ? EllipsoidEavg(spec)
                              : aniso   ? AnisoEavg(spec, r, spec.anisotropy.Value(z))
                                        : IntegrateEavg(slice_specs[z], r, uint64_t(i));
-      const double value = std::clamp(e.value, 0.0, 1.0);
+      const double value = std::clamp(e.value, 0.0, e_max);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;
       if (progress) progress(++done, total);
@@ -1150,7 +1230,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
         v = Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       }
       if (spec.table == TableKind::kE) {
-        const double e = std::clamp(v.e, 0.0, 1.0);  // ClampToRange's E
+        const double e = std::clamp(v.e, 0.0, e_max);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;
         error[idx] = v.err_e;
       } else {
@@ -1207,10 +1287,15 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   return t;
 }
 
-TexelEstimate ClampToRange(const TexelEstimate& v) {
+double StoredEMax(const BakeSpec& spec) {
+  const ModelKind m = spec.model.kind;
+  return m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse ? kInfinity : 1.0;
+}
+
+TexelEstimate ClampToRange(const TexelEstimate& v, double e_max) {
   TexelEstimate c = v;
-  // E: the true value lies in [0, 1], so the clamp only moves towards it.
-  c.e = std::clamp(v.e, 0.0, 1.0);
+  // E: the true value lies in [0, e_max], so the clamp only moves towards it.
+  c.e = std::clamp(v.e, 0.0, e_max);
   // scale, bias >= 0 likewise; scale + bias <= 1 is kept by moving both
   // down by half the excess, and the move is added to their errors.
   double s = std::max(v.scale, 0.0), b = std::max(v.bias, 0.0);

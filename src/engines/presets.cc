@@ -30,6 +30,27 @@ BakeSpec Spec(TableKind table, int n_mu, int n_r, Placement placement) {
   return s;
 }
 
+// E of another model over a preset table's axes (ArrangePresetTable gives
+// it the table's axes).
+BakeSpec LobeE(ModelKind kind, SheenVisibility visibility = SheenVisibility::kContyKulla) {
+  BakeSpec s;
+  s.table = TableKind::kE;
+  s.model.kind = kind;
+  s.model.visibility = visibility;
+  return s;
+}
+
+// Channel `name` from table 1 (the preset table's first `with`).
+ImageLayout::Out With(const char* name, Source source, double scale = 1, double offset = 0,
+                      double max = kInfinity) {
+  ImageLayout::Out o{name, source};
+  o.table = 1;
+  o.scale = scale;
+  o.offset = offset;
+  o.max = max;
+  return o;
+}
+
 ImageLayout Layout(std::vector<ImageLayout::Out> channels, PixelType pixel, bool roughness_on_x = false,
                    bool flip_rows = false) {
   ImageLayout l;
@@ -57,16 +78,19 @@ std::vector<Preset> MakePresets() {
   {
     // Filament: DFG 128x128 RGB16F, NoV on x at centres, r on y with row 0
     // the smooth end (cmgen writes the image's rows bottom-up), R = bias,
-    // G = E (multiscatter form), B = the cloth (Charlie) term, shipped as
-    // uint16 half bits #included inside DFG.cpp's array initializer.
+    // G = E (multiscatter form), B = the cloth term, the Charlie sheen's E
+    // with the neubelt visibility at alpha = r^2 (CubemapIBL's
+    // DFV_Charlie_Uniform), shipped as uint16 half bits #included inside
+    // DFG.cpp's array initializer.
     Preset f{"filament",
              "Filament's DFG: 128x128, x = NoV, y = roughness (row 0 smooth), R = bias, G = E, "
-             "B = cloth (not baked: 0), half bits as dfg.inc, #included into DFG_LUT[]",
+             "B = cloth (Charlie sheen E, neubelt), half bits as dfg.inc, #included into DFG_LUT[]",
              {},
              ""};
     PresetTable t = Entry(Spec(TableKind::kDfg, 128, 128, Placement::kCenters),
-                  Layout({{"R", Source::kBias}, {"G", Source::kE}, {"B", Source::kZero}}, PixelType::kHalf),
+                  Layout({{"R", Source::kBias}, {"G", Source::kE}, With("B", Source::kE)}, PixelType::kHalf),
                   Container::kInc, "dfg.inc", "DFG_LUT");
+    t.with = {LobeE(ModelKind::kCharlie, SheenVisibility::kNeubelt)};
     f.tables.push_back(t);
     p.push_back(f);
   }
@@ -85,32 +109,39 @@ std::vector<Preset> MakePresets() {
   {
     // Unity HDRP: FGD 64x64, x = sqrt(NoV), y = r, both with the endpoints
     // on the first and last texel centres (Remap01ToHalfTexelCoord: the
-    // edges placement), x = bias, y = E, z = Disney diffuse - 0.5.
+    // edges placement), x = bias, y = E, z = the Disney diffuse E at the
+    // perceptual roughness, divided by 1.03571 (DisneyDiffuseNoPI's
+    // normalisation), less 0.5 (GetPreIntegratedFGDGGXAndDisneyDiffuse
+    // adds it back).
     Preset h{"hdrp",
              "HDRP's preintegrated FGD: 64x64, x = sqrt(NoV), y = roughness, endpoints on texel "
-             "centres, R = bias, G = E, B = Disney diffuse (not baked: 0), half EXR",
+             "centres, R = bias, G = E, B = Disney diffuse E / 1.03571 - 0.5, half EXR",
              {},
              ""};
     BakeSpec s = Spec(TableKind::kDfg, 64, 64, Placement::kEdges);
     s.mu.warp = Warp::kSquare;  // coordinate c = sqrt(NoV): NoV = c^2
     h.tables.push_back(Entry(s,
-                        Layout({{"R", Source::kBias}, {"G", Source::kE}, {"B", Source::kZero}},
+                        Layout({{"R", Source::kBias}, {"G", Source::kE},
+                                With("B", Source::kE, 1 / 1.03571, -0.5)},
                                PixelType::kHalf),
                         Container::kExr, "preintegrated_fgd.exr", "PreintegratedFGD"));
+    h.tables.back().with = {LobeE(ModelKind::kDisneyDiffuse)};
     p.push_back(h);
   }
   {
     // Godot 4: 128x128 rgba16f, NoV on x at centres, r on y at centres,
-    // rows flipped, R = bias, G = E, B = cloth.
+    // rows flipped, R = bias, G = E, B = cloth (the Charlie sheen's E with
+    // the neubelt visibility at alpha = r^2, as integrate_dfg.glsl).
     Preset g{"godot",
              "Godot 4's DFG: 128x128, x = NoV, y = roughness (rows flipped), R = bias, G = E, "
-             "B = cloth (not baked: 0), A = 1, RGBA half EXR",
+             "B = cloth (Charlie sheen E, neubelt), A = 1, RGBA half EXR",
              {},
              ""};
     g.tables.push_back(Entry(Spec(TableKind::kDfg, 128, 128, Placement::kCenters),
-                        Layout({{"R", Source::kBias}, {"G", Source::kE}, {"B", Source::kZero}, {"A", Source::kOne}},
+                        Layout({{"R", Source::kBias}, {"G", Source::kE}, With("B", Source::kE), {"A", Source::kOne}},
                                PixelType::kHalf, false, true),
                         Container::kExr, "dfg_lut.exr", "DFG_LUT"));
+    g.tables.back().with = {LobeE(ModelKind::kCharlie, SheenVisibility::kNeubelt)};
     p.push_back(g);
   }
   {
@@ -165,18 +196,22 @@ std::vector<Preset> MakePresets() {
   }
   {
     // MaterialX: the albedo table, 64x64 float RGB, NoV on x, ALPHA (not
-    // r) on y, both at centres, R = scale, G = bias, B = sheen.
+    // r) on y, both at centres, R = scale, G = bias, B = sheen: the
+    // Charlie E with the neubelt visibility (mx_imageworks_sheen_brdf) at
+    // the NDF width y itself (= r^2 here), clamped to 1 as the generator
+    // clamps it.
     Preset m{"materialx",
              "MaterialX's albedo table: 64x64, x = NoV, y = alpha at centres (r = sqrt(alpha)), "
-             "R = scale, G = bias, B = sheen (not baked: 0), float EXR",
+             "R = scale, G = bias, B = sheen (Charlie E, neubelt, at most 1), float EXR",
              {},
              ""};
     BakeSpec s = Spec(TableKind::kDfg, 64, 64, Placement::kCenters);
     s.roughness.warp = Warp::kSqrt;  // r = sqrt(t): alpha = t at the texel centres
     m.tables.push_back(Entry(s,
-                        Layout({{"R", Source::kScale}, {"G", Source::kBias}, {"B", Source::kZero}},
+                        Layout({{"R", Source::kScale}, {"G", Source::kBias}, With("B", Source::kE, 1, 0, 1)},
                                PixelType::kFloat),
                         Container::kExr, "albedo_table.exr", "albedo_table"));
+    m.tables.back().with = {LobeE(ModelKind::kCharlie, SheenVisibility::kNeubelt)};
     p.push_back(m);
   }
   {
@@ -355,6 +390,24 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
                      std::to_string(preset.tables.size()) + " tables (" + preset.name + ")", Container::kHeader});
   }
   return files;
+}
+
+Image ArrangePresetTable(const PresetTable& pt, const Table& table, int threads, double tolerance,
+                         const ProgressFn& progress) {
+  std::vector<Table> with;
+  with.reserve(pt.with.size());
+  for (BakeSpec s : pt.with) {
+    s.mu = table.spec.mu;
+    s.roughness = table.spec.roughness;
+    s.half = table.spec.half;
+    s.threads = threads;
+    if (tolerance > 0) s.tolerance = tolerance;
+    ValidateBakeSpec(s);
+    with.push_back(Bake(s, progress));
+  }
+  std::vector<const Table*> others;
+  for (const Table& w : with) others.push_back(&w);
+  return ArrangeTables(table, others, pt.layout);
 }
 
 void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vector<Table>& tables,

@@ -380,13 +380,42 @@ ImageLayout RgbaLayout(const ImageLayout& layout) {
   return l;
 }
 
-Image ArrangeTable(const Table& t, const ImageLayout& layout) {
-  const SourceReader reader{t};
-  for (const ImageLayout::Out& o : layout.channels) {
-    if (!reader.Has(o.source)) {
-      Bad(std::string("the ") + TableName(t.spec.table) + " table has no " + SourceName(o.source));
+std::string ChannelMeaning(const ImageLayout::Out& o, const std::vector<const Table*>& others) {
+  std::string m = SourceName(o.source);
+  if (o.table > 0 && o.table <= int(others.size())) {
+    m += std::string(" of ") + others[o.table - 1]->spec.model.name();
+    if (others[o.table - 1]->spec.model.kind == ModelKind::kCharlie) {
+      m += std::string(" (") + SheenVisibilityName(others[o.table - 1]->spec.model.visibility) + ")";
     }
   }
+  if (o.scale != 1) m += " * " + NumG9(o.scale);
+  if (o.offset != 0) m += (o.offset < 0 ? " - " : " + ") + NumG9(std::abs(o.offset));
+  if (std::isfinite(o.max)) m += ", at most " + NumG9(o.max);
+  return m;
+}
+
+Image ArrangeTable(const Table& t, const ImageLayout& layout) { return ArrangeTables(t, {}, layout); }
+
+Image ArrangeTables(const Table& t, const std::vector<const Table*>& others, const ImageLayout& layout) {
+  std::vector<SourceReader> readers = {SourceReader{t}};
+  for (const Table* o : others) {
+    if (o->width != t.width || o->height != t.height) {
+      Bad(std::string("the ") + o->spec.model.name() + " table's size differs from the " +
+          TableName(t.spec.table) + " table's");
+    }
+    readers.push_back(SourceReader{*o});
+  }
+  for (const ImageLayout::Out& o : layout.channels) {
+    if (o.table < 0 || o.table >= int(readers.size())) {
+      Bad("channel " + o.name + " reads table " + std::to_string(o.table) + " of " +
+          std::to_string(readers.size()));
+    }
+    const Table& src = o.table == 0 ? t : *others[o.table - 1];
+    if (!readers[o.table].Has(o.source)) {
+      Bad(std::string("the ") + TableName(src.spec.table) + " table has no " + SourceName(o.source));
+    }
+  }
+  const SourceReader& reader = readers[0];
   const bool one_d = t.spec.table == TableKind::kEavg;
   const bool transpose = layout.roughness_on_x && !one_d;
   Image im;
@@ -400,12 +429,17 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
   if (transpose) std::swap(im.axes[0], im.axes[1]);
   for (const ImageLayout::Out& o : layout.channels) {
     im.channel_names.push_back(o.name);
-    im.channel_sources.push_back(SourceName(o.source));
+    im.channel_sources.push_back(ChannelMeaning(o, others));
   }
-  // The claim: the table's largest integration estimate (twice for E or
-  // 1-E formed from scale + bias) plus this image's largest rounding.
-  bool derived = false;
-  for (const ImageLayout::Out& o : layout.channels) derived |= reader.Derived(o.source);
+  // The claim: the largest integration estimate of a table read (twice for
+  // E or 1-E formed from scale + bias; times a channel's scale) plus this
+  // image's largest rounding.
+  double integration = 0;
+  for (const ImageLayout::Out& o : layout.channels) {
+    const Table& src = o.table == 0 ? t : *others[o.table - 1];
+    const bool derived = readers[o.table].Derived(o.source);
+    integration = std::max(integration, src.integration_error * (derived ? 2 : 1) * std::abs(o.scale));
+  }
   double rounding = 0;
   const size_t n = size_t(im.width) * im.height * im.channels;
   im.values.resize(n);
@@ -424,7 +458,10 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
       const size_t src = transpose ? size_t(x) * t.width + ty : size_t(ty) * t.width + x;
       const size_t dst = (size_t(y) * im.width + x) * im.channels;
       for (int c = 0; c < im.channels; ++c) {
-        raw[c] = reader.At(layout.channels[c].source, src);
+        const ImageLayout::Out& o = layout.channels[c];
+        raw[c] = o.table == 0 && o.scale == 1 && o.offset == 0
+                     ? reader.At(o.source, src)
+                     : std::min(o.scale * readers[o.table].At(o.source, src) + o.offset, o.max);
         im.values[dst + c] = RoundToPixel(raw[c], im.pixel);
       }
       if (scale_c >= 0 && bias_c >= 0) {
@@ -437,7 +474,7 @@ Image ArrangeTable(const Table& t, const ImageLayout& layout) {
       }
     }
   }
-  im.max_abs_error = t.integration_error * (derived ? 2 : 1) + rounding;
+  im.max_abs_error = integration + rounding;
   return im;
 }
 

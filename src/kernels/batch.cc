@@ -56,6 +56,14 @@ ModelDispatch DispatchOf(ModelKind kind) {
     case ModelKind::kSel:
       return {SelEvalBatch, nullptr, false};
 #endif
+#if BRDFBAKE_WITH_CHARLIE
+    case ModelKind::kCharlie:
+      return {CharlieEvalBatch, CharlieSampleBatch, true};
+#endif
+#if BRDFBAKE_WITH_DISNEY
+    case ModelKind::kDisneyDiffuse:
+      return {DisneyEvalBatch, nullptr, false};
+#endif
     default:
       return {};
   }
@@ -116,6 +124,12 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
     Bad(std::string(entry) + ": " + e.what());
   }
   CheckFresnel(entry, model);
+  const bool no_fresnel =
+      model.kind == ModelKind::kCharlie || model.kind == ModelKind::kDisneyDiffuse;
+  if (no_fresnel && !(model.fresnel == BatchFresnel::kSchlick && model.f0 == 1.0f)) {
+    Bad(std::string(entry) + ": model " + ModelName(model.kind) +
+        " has no Fresnel factor (F = 1): give BatchFresnel::kSchlick with f0 = 1");
+  }
   return m;
 }
 
@@ -151,6 +165,11 @@ void CheckQuantity(const BatchModel& model, Quantity q, bool pair) {
   if (!BatchSupports(model.kind, q)) {
     Bad(std::string("EvalBatch: model ") + ModelName(model.kind) + " has no quantity " +
         QuantityName(q));
+  }
+  if (model.kind == ModelKind::kCharlie && model.visibility == SheenVisibility::kNeubelt &&
+      (q == Quantity::kLambda || q == Quantity::kG1 || q == Quantity::kG2)) {
+    Bad(std::string("EvalBatch: charlie with the neubelt visibility has no ") + QuantityName(q) +
+        " (it has no masking term)");
   }
   if (pair != IsPairQuantity(q)) {
     Bad(std::string("EvalBatch: ") + QuantityName(q) + " takes " +
@@ -259,6 +278,7 @@ BatchModel BatchModelOf(const ModelParams& model, Masking masking, const Fresnel
   p.theta_x = float(model.theta_x);
   p.theta_y = float(model.theta_y);
   p.theta_z = float(model.theta_z);
+  p.visibility = model.visibility;
   p.masking = masking;
   switch (fresnel.kind) {
     case FresnelKind::kOne:
@@ -289,6 +309,7 @@ ModelParams ModelParamsOf(const BatchModel& model) {
   p.theta_x = model.theta_x;
   p.theta_y = model.theta_y;
   p.theta_z = model.theta_z;
+  p.visibility = model.visibility;
   return p;
 }
 
@@ -328,6 +349,10 @@ bool BatchSupports(ModelKind kind, Quantity q) {
       return q != Quantity::kK && q != Quantity::kPdfNdf;
     case ModelKind::kSel:
       return q == Quantity::kK;
+    case ModelKind::kCharlie:
+      return q != Quantity::kK && q != Quantity::kPdfVisible;
+    case ModelKind::kDisneyDiffuse:
+      return q == Quantity::kBrdf;
     case ModelKind::kGgxAniso:
       return false;
   }
@@ -342,8 +367,11 @@ bool BatchSupports(ModelKind kind, Sampler s) {
       return true;
     case ModelKind::kEllipsoid:
       return s == Sampler::kVisible;
+    case ModelKind::kCharlie:
+      return s == Sampler::kNdf;
     case ModelKind::kSel:
     case ModelKind::kGgxAniso:
+    case ModelKind::kDisneyDiffuse:
       return false;
   }
   return false;

@@ -57,6 +57,11 @@ void ReflectBatch(const float* const* in, float* const* out, size_t n);
 void LightWeightBatch(const float* const* in, float* const* out, size_t n);
 
 void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
+void CharlieEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
+                      size_t n);
+void CharlieSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
+                        size_t n);
+void DisneyEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
 
 // In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
 // Model##Eval (and Model##Sample) and defines the dispatchers above.

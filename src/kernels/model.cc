@@ -12,9 +12,11 @@
 #include "base/error.h"
 #include "base/text.h"
 #include "brdfbake/models/beckmann.h"
+#include "brdfbake/models/disney_diffuse.h"
 #include "brdfbake/models/ellipsoid.h"
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/sel.h"
+#include "brdfbake/models/sheen.h"
 #include "brdfbake/models/std_ndf.h"
 
 namespace brdfbake {
@@ -114,6 +116,85 @@ class SelModel : public Model {
   SelLobe<double> lobe_;
 };
 
+// The sheen and the diffuse lobe have no Fresnel factor (F = 1).
+void NoFresnel(const char* model, const Fresnel& f) {
+  if (f.kind != FresnelKind::kOne) {
+    Bad(std::string("model ") + model + " has no Fresnel factor (F = 1); give no Fresnel");
+  }
+}
+
+// The Charlie sheen (models/sheen.h): an NDF with its own visibility; the
+// masking argument does not apply (the conty-kulla G2 is height-correlated).
+class CharlieModel : public Model {
+ public:
+  explicit CharlieModel(const ModelParams& p) : p_(p), sheen_(p.alpha_x, p.visibility) {}
+  const ModelParams& params() const override { return p_; }
+  double D(const Vec3<double>& m) const override { return sheen_.D(m); }
+  double Lambda(const Vec3<double>& w) const override {
+    NeedsMasking("Lambda");
+    return sheen_.Lambda(w);
+  }
+  double G1(const Vec3<double>& w) const override {
+    NeedsMasking("G1");
+    return sheen_.G1(w);
+  }
+  double G2(const Vec3<double>& wi, const Vec3<double>& wo, Masking) const override {
+    NeedsMasking("G2");
+    return sheen_.G2Cos(wi.z, wo.z);
+  }
+  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel, Masking,
+              int) const override {
+    NoFresnel("charlie", fresnel);
+    return sheen_.Brdf(wi, wo);
+  }
+  // The NDF's own sampler (density D(m) m.z): the sheen has no visible-normal one.
+  Vec3<double> Sample(const Vec3<double>&, double u1, double u2) const override {
+    return sheen_.SampleNdf(u1, u2);
+  }
+  double Pdf(const Vec3<double>&, const Vec3<double>& m) const override { return sheen_.PdfNdf(m); }
+
+ private:
+  void NeedsMasking(const char* what) const {
+    if (p_.visibility == SheenVisibility::kNeubelt) {
+      Bad(std::string("charlie with the neubelt visibility has no ") + what +
+          " (it has no masking term); use the conty-kulla visibility");
+    }
+  }
+  ModelParams p_;
+  CharlieSheen<double> sheen_;
+};
+
+// The Disney diffuse BRDF (models/disney_diffuse.h) at r = sqrt(alpha_x).
+class DisneyDiffuseModel : public Model {
+ public:
+  explicit DisneyDiffuseModel(const ModelParams& p) : p_(p), diffuse_(std::sqrt(p.alpha_x)) {}
+  const ModelParams& params() const override { return p_; }
+  bool IsMicrofacet() const override { return false; }
+  double D(const Vec3<double>&) const override { NotDefined("D"); }
+  double Lambda(const Vec3<double>&) const override { NotDefined("Lambda"); }
+  double G1(const Vec3<double>&) const override { NotDefined("G1"); }
+  double G2(const Vec3<double>&, const Vec3<double>&, Masking) const override {
+    NotDefined("G2");
+  }
+  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel, Masking,
+              int) const override {
+    NoFresnel("disney-diffuse", fresnel);
+    return diffuse_.Brdf(wi, wo);
+  }
+  Vec3<double> Sample(const Vec3<double>&, double, double) const override {
+    NotDefined("normal sampling");
+  }
+  double Pdf(const Vec3<double>&, const Vec3<double>&) const override { NotDefined("pdf"); }
+
+ private:
+  [[noreturn]] static void NotDefined(const char* what) {
+    Bad(std::string("model disney-diffuse (a diffuse BRDF, no microfacets) has no ") + what +
+        "; use the quantity brdf");
+  }
+  ModelParams p_;
+  DisneyDiffuse<double> diffuse_;
+};
+
 }  // namespace
 
 double Model::K(const Vec3<double>&) const {
@@ -128,6 +209,7 @@ std::string ModelParams::ToJson() const {
   if (kind == ModelKind::kStudentT) {
     if (std::isinf(gamma)) j["gamma"] = "inf"; else j["gamma"] = gamma;
   }
+  if (kind == ModelKind::kCharlie) j["visibility"] = SheenVisibilityName(visibility);
   if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
     j["theta_x"] = theta_x;
     j["theta_y"] = theta_y;
@@ -151,6 +233,12 @@ const std::vector<ModelInfo>& Models() {
 #if BRDFBAKE_WITH_SEL
       {ModelKind::kSel, "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), [TokuyoshiHarada]"},
 #endif
+#if BRDFBAKE_WITH_CHARLIE
+      {ModelKind::kCharlie, "alpha in (0, 1] (isotropic), visibility neubelt or conty-kulla", "Charlie sheen, [EstevezKulla17]; visibility [Neubelt13] or the paper's fitted Lambda"},
+#endif
+#if BRDFBAKE_WITH_DISNEY
+      {ModelKind::kDisneyDiffuse, "r = sqrt(alpha) in [0, 1] (isotropic)", "Disney diffuse, [Burley12]; no microfacets"},
+#endif
   };
   return kModels;
 }
@@ -158,7 +246,8 @@ const std::vector<ModelInfo>& Models() {
 namespace {
 
 constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
-                                ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso};
+                                ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso,
+                                ModelKind::kCharlie,   ModelKind::kDisneyDiffuse};
 
 // Every model name this build accepts: the families, and ggx-aniso (a
 // table model of the ggx family).
@@ -187,6 +276,8 @@ const char* ModelName(ModelKind kind) {
     case ModelKind::kEllipsoid: return "ellipsoid";
     case ModelKind::kSel: return "sel";
     case ModelKind::kGgxAniso: return "ggx-aniso";
+    case ModelKind::kCharlie: return "charlie";
+    case ModelKind::kDisneyDiffuse: return "disney-diffuse";
   }
   return "ggx";
 }
@@ -197,6 +288,14 @@ ModelKind ParseModelKind(const std::string& name) {
   }
   Bad("unknown model '" + name + "' (expected " + BuiltModels() + ")" +
       DidYouMean(name, BuiltModelNames(), {{"trowbridge-reitz", "ggx"}, {"student-t", "std"}}));
+}
+
+SheenVisibility ParseSheenVisibility(const std::string& name) {
+  for (SheenVisibility v : {SheenVisibility::kNeubelt, SheenVisibility::kContyKulla}) {
+    if (name == SheenVisibilityName(v)) return v;
+  }
+  Bad("unknown sheen visibility '" + name + "' (expected neubelt or conty-kulla)" +
+      DidYouMean(name, {"neubelt", "conty-kulla"}, {{"ashikhmin", "neubelt"}, {"kulla", "conty-kulla"}}));
 }
 
 bool ModelBuilt(ModelKind kind) {
@@ -223,10 +322,28 @@ void ValidateModelParams(const ModelParams& p) {
     Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
         BuiltModels() + ")");
   }
+  if (p.kind == ModelKind::kDisneyDiffuse) {
+    // r = sqrt(alpha) in [0, 1]: r = 0 is an ordinary diffuse lobe.
+    if (!(p.alpha_x >= 0 && p.alpha_x <= 1) || p.alpha_x != p.alpha_y) {
+      Bad("model disney-diffuse takes one roughness r in [0, 1] (alpha = r^2; got alpha_x " +
+          ExactText(p.alpha_x) + ", alpha_y " + ExactText(p.alpha_y) + ")");
+    }
+    return;
+  }
   CheckAlpha("alpha_x", p.alpha_x);
   CheckAlpha("alpha_y", p.alpha_y);
   if (p.kind == ModelKind::kStudentT && !StudentTGammaAllowed(p.gamma)) {
     Bad("gamma " + StudentTGammaDomain(p.gamma));
+  }
+  if (p.kind == ModelKind::kCharlie) {
+    if (p.alpha_x != p.alpha_y) {
+      Bad("model " + std::string(p.name()) + " is isotropic: alpha_x and alpha_y must be equal (got " +
+          ExactText(p.alpha_x) + " and " + ExactText(p.alpha_y) + ")");
+    }
+    if (p.alpha_x > 1) {
+      Bad("alpha of model " + std::string(p.name()) + " must lie in (0, 1] (roughness at most 1; got " +
+          ExactText(p.alpha_x) + ")");
+    }
   }
   if (p.kind == ModelKind::kEllipsoid || p.kind == ModelKind::kSel) {
     CheckAngle("theta_x", p.theta_x);
@@ -276,6 +393,12 @@ std::unique_ptr<Model> MakeModel(const ModelParams& p) {
 #endif
 #if BRDFBAKE_WITH_SEL
   if (p.kind == ModelKind::kSel) return std::make_unique<SelModel>(p);
+#endif
+#if BRDFBAKE_WITH_CHARLIE
+  if (p.kind == ModelKind::kCharlie) return std::make_unique<CharlieModel>(p);
+#endif
+#if BRDFBAKE_WITH_DISNEY
+  if (p.kind == ModelKind::kDisneyDiffuse) return std::make_unique<DisneyDiffuseModel>(p);
 #endif
   return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
 }

@@ -21,6 +21,7 @@
 #include "rules/beckmann/beckmann_azimuth.h"
 #include "rules/ggx/azimuthal.h"
 #include "rules/sel/sel_norm.h"
+#include "rules/sheen/sheen_albedo.h"
 #include "rules/slope/azimuthal_slope.h"
 #include "rules/std/std_azimuth.h"
 
@@ -29,6 +30,13 @@ namespace brdfbake {
 // AnisoGgxAlbedo (aniso_ggx.h) with each ray piece's nodes in lanes.
 RuleResult SimdAnisoGgxAlbedo(double alpha_x, double alpha_y, double mu, double phi,
                                    Masking masking, double tol, int max_pieces);
+
+// CharlieAlbedo, DisneyAlbedo and DisneyEavg (sheen_albedo.h) with their
+// nodes in lanes.
+RuleResult SimdCharlieAlbedo(double alpha, SheenVisibility visibility, double mu, double tol,
+                             int max_pieces);
+RuleResult SimdDisneyAlbedo(double r, double mu);
+RuleResult SimdDisneyEavg(double r);
 
 // SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);

@@ -770,7 +770,13 @@ PlannedTable Evaluate(const BakeSpec& spec, const LayoutOf& layout_of, const Pro
   p.table = Bake(spec);
   p.layout = layout_of(p.table);
   p.interpolation_error = LookupError(p.table, probe).max_abs_error;
-  const Image im = ArrangeTable(p.table, p.layout);
+  // The claim of this table's own channels (an engine layout's channels
+  // from other tables, Filament's sheen say, are theirs).
+  ImageLayout own = p.layout;
+  own.channels.erase(std::remove_if(own.channels.begin(), own.channels.end(),
+                                    [](const ImageLayout::Out& o) { return o.table != 0; }),
+                     own.channels.end());
+  const Image im = ArrangeTable(p.table, own);
   const PixelType stored = spec.half ? PixelType::kHalf : PixelType::kFloat;
   p.total_error = p.interpolation_error + (im.pixel == stored ? p.table.integration_error : im.max_abs_error);
   p.collapse_error = collapse;
@@ -1426,9 +1432,9 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
     const PresetRun run = ScenePresetRun(scene, dir);
     std::vector<Table> tables;
     std::vector<Image> images;
-    for (const PlannedTable& p : plan.tables) {
-      tables.push_back(p.table);
-      images.push_back(ArrangeTable(p.table, p.layout));
+    for (size_t i = 0; i < plan.tables.size(); ++i) {
+      tables.push_back(plan.tables[i].table);
+      images.push_back(ArrangePresetTable(sp.tables[i], plan.tables[i].table, plan.tables[i].table.spec.threads));
     }
     WritePresetFiles(sp, run, tables, images);
     for (const PresetFile& f : PresetFiles(sp, run)) {

@@ -48,7 +48,7 @@ struct Baked {
 
 Baked BakePreset(const PresetTable& pt) {
   Baked b{Bake(pt.spec), {}};
-  b.image = ArrangeTable(b.table, pt.layout);
+  b.image = ArrangePresetTable(pt, b.table);
   return b;
 }
 
@@ -63,6 +63,23 @@ TexelEstimate Exact(double nov, double r, TableKind kind = TableKind::kDfg) {
   return IntegrateTexel(spec, r, nov);
 }
 
+// The other lobes engines store beside the GGX terms, at the same (NoV, r):
+// the Charlie sheen's E with the neubelt visibility (Filament's and
+// Godot's cloth, MaterialX's sheen) and the Disney diffuse E (HDRP).
+struct Lobes {
+  double cloth = 0, diffuse = 0;
+};
+Lobes LobesAt(double nov, double r) {
+  BakeSpec s;
+  s.model.kind = ModelKind::kCharlie;
+  s.model.visibility = SheenVisibility::kNeubelt;
+  Lobes l;
+  l.cloth = IntegrateTexel(s, r, nov).e;
+  s.model.kind = ModelKind::kDisneyDiffuse;
+  l.diffuse = IntegrateTexel(s, r, nov).e;
+  return l;
+}
+
 double Value(const Image& im, int x, int y, int c) {
   return im.values[(size_t(y) * im.width + x) * im.channels + c];
 }
@@ -72,7 +89,7 @@ double Value(const Image& im, int x, int y, int c) {
 // them, `expect(exact)` the channel values.
 void CheckLayout(const Image& im, int width, int height,
                  const std::function<std::pair<double, double>(int, int)>& where,
-                 const std::function<std::vector<double>(const TexelEstimate&)>& expect,
+                 const std::function<std::vector<double>(const TexelEstimate&, const Lobes&)>& expect,
                  double rel_tol, const char* what, double abs_tol = 1e-6) {
   ASSERT_EQ(im.width, width) << what;
   ASSERT_EQ(im.height, height) << what;
@@ -80,7 +97,7 @@ void CheckLayout(const Image& im, int width, int height,
     for (int x = 0; x < width; x += std::max(1, width / 9)) {
       for (const auto& p : {std::pair<int, int>{x, y}, {width - 1, y}, {x, height - 1}}) {
         const auto [nov, r] = where(p.first, p.second);
-        const std::vector<double> want = expect(Exact(nov, r));
+        const std::vector<double> want = expect(Exact(nov, r), LobesAt(nov, r));
         ASSERT_EQ(int(want.size()), im.channels) << what;
         for (int c = 0; c < im.channels; ++c) {
           EXPECT_NEAR(Value(im, p.first, p.second, c), want[c], rel_tol * std::abs(want[c]) + abs_tol)
@@ -101,17 +118,17 @@ TEST(PresetTest, Filament) {
   const Baked b = BakePreset(TableOf("filament"));
   // x = NoV at centres; row 0 is the smooth end, r = 0.5 / 128 (cmgen
   // writes file row y from image row H - 1 - y of CubemapIBL::DFG, whose
-  // row 0 is the rough end); R = bias, G = E, B = 0.
+  // row 0 is the rough end); R = bias, G = E, B = the cloth E.
   CheckLayout(b.image, 128, 128, [](int x, int y) {
     return std::pair{Centre(x, 128), Centre(y, 128)};
-  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0}; },
+  }, [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.bias, v.scale + v.bias, l.cloth}; },
   kHalfRel, "filament");
 }
 
 TEST(PresetTest, Unreal) {
   const Baked b = BakePreset(TableOf("unreal"));
   CheckLayout(b.image, 128, 32, [](int x, int y) { return std::pair{Centre(x, 128), Centre(y, 32)}; },
-              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, 0.0, "unreal",
+              [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.scale, v.bias}; }, 0.0, "unreal",
               0.5 / 65535 + 1e-7);
   // unorm16 codes: round(v * 65535).
   const TexelEstimate v = Exact(Centre(5, 128), Centre(7, 32));
@@ -121,11 +138,14 @@ TEST(PresetTest, Unreal) {
 TEST(PresetTest, Hdrp) {
   const Baked b = BakePreset(TableOf("hdrp"));
   // Texel i holds coordinate c = i / (N - 1) (endpoints on texel centres);
-  // x = sqrt(NoV), so NoV = c^2; R = bias, G = E.
+  // x = sqrt(NoV), so NoV = c^2; R = bias, G = E, B = the Disney diffuse
+  // E / 1.03571 - 0.5.
   CheckLayout(b.image, 64, 64, [](int x, int y) {
     const double c = Edge(x, 64);
     return std::pair{c * c, Edge(y, 64)};
-  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0}; },
+  }, [](const TexelEstimate& v, const Lobes& l) {
+    return std::vector<double>{v.bias, v.scale + v.bias, l.diffuse / 1.03571 - 0.5};
+  },
   kHalfRel, "hdrp");
 }
 
@@ -133,28 +153,31 @@ TEST(PresetTest, Godot) {
   const Baked b = BakePreset(TableOf("godot"));
   CheckLayout(b.image, 128, 128, [](int x, int y) {
     return std::pair{Centre(x, 128), 1.0 - Centre(y, 128)};
-  }, [](const TexelEstimate& v) { return std::vector<double>{v.bias, v.scale + v.bias, 0.0, 1.0}; },
+  }, [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.bias, v.scale + v.bias, l.cloth, 1.0}; },
   kHalfRel, "godot");
 }
 
 TEST(PresetTest, Bevy) {
   const Baked b = BakePreset(TableOf("bevy"));
   CheckLayout(b.image, 64, 64, [](int x, int y) { return std::pair{Centre(x, 64), Centre(y, 64)}; },
-              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "bevy");
+              [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "bevy");
 }
 
 TEST(PresetTest, Three) {
   const Baked b = BakePreset(TableOf("three"));
   // x = roughness, y = NoV.
   CheckLayout(b.image, 16, 16, [](int x, int y) { return std::pair{Centre(y, 16), Centre(x, 16)}; },
-              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "three");
+              [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.scale, v.bias}; }, kHalfRel, "three");
 }
 
 TEST(PresetTest, Materialx) {
   const Baked b = BakePreset(TableOf("materialx"));
   // y = alpha at centres: r = sqrt(alpha).
   CheckLayout(b.image, 64, 64, [](int x, int y) { return std::pair{Centre(x, 64), std::sqrt(Centre(y, 64))}; },
-              [](const TexelEstimate& v) { return std::vector<double>{v.scale, v.bias, 0.0}; }, 1e-7, "materialx");
+              [](const TexelEstimate& v, const Lobes& l) {
+                return std::vector<double>{v.scale, v.bias, std::min(l.cloth, 1.0)};
+              },
+              1e-7, "materialx");
 }
 
 TEST(PresetTest, CyclesAndEnterprisePbr) {
@@ -162,7 +185,7 @@ TEST(PresetTest, CyclesAndEnterprisePbr) {
   // x = r, y = NoV, edges, both clamped at 1e-4.
   CheckLayout(e.image, 32, 32, [](int x, int y) {
     return std::pair{std::max(Edge(y, 32), 1e-4), std::max(Edge(x, 32), 1e-4)};
-  }, [](const TexelEstimate& v) { return std::vector<double>{v.e}; }, 1e-7, "cycles E");
+  }, [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.e}; }, 1e-7, "cycles E");
   const Baked a = BakePreset(TableOf("cycles", 1));
   ASSERT_EQ(a.image.width, 32);
   ASSERT_EQ(a.image.height, 1);
@@ -171,7 +194,7 @@ TEST(PresetTest, CyclesAndEnterprisePbr) {
   EXPECT_NEAR(a.image.values[31], 0.409137, 5e-6);
   const Baked p = BakePreset(TableOf("enterprise-pbr", 0));
   CheckLayout(p.image, 32, 32, [](int x, int y) { return std::pair{Centre(x, 32), Centre(y, 32)}; },
-              [](const TexelEstimate& v) { return std::vector<double>{v.e}; }, 1e-7, "enterprise-pbr E");
+              [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.e}; }, 1e-7, "enterprise-pbr E");
 }
 
 // ------------------------------------------------------------ containers
@@ -528,6 +551,55 @@ TEST(EngineTablesTest, ThreeJsAndBevyMatchTexelByTexel) {
   EXPECT_LT(db.max, 2e-2);
   EXPECT_GT(dt_wrong.max, 0.1);
   EXPECT_GT(db_wrong.max, 0.1);
+}
+
+// Filament's shipped dfg.inc (64x64, a v1.19 build; tests/data): row k
+// holds perceptual roughness min(1, (k + 1.5) / 64) (CubemapIBL::DFG's
+// coordinate and cmgen's row order), NoV = (col + 0.5) / 64; R = bias,
+// G = E, B = the cloth: DFV_Charlie_Uniform, 4096 uniform half vectors of
+// the Charlie sheen with the neubelt visibility at alpha = r^2. Each
+// channel against ours at those coordinates, and the cloth also against
+// ours with the rows flipped (a layout error).
+TEST(EngineTablesTest, FilamentClothMatchesTexelByTexel) {
+  const EngineTable f = LoadEngine("filament_dfg_64.json");
+  ASSERT_EQ(f.data.size(), 64u);
+  BakeSpec cloth;
+  cloth.model.kind = ModelKind::kCharlie;
+  cloth.model.visibility = SheenVisibility::kNeubelt;
+  double max_rel[3] = {}, sum2[3] = {}, flipped = 0;
+  int n = 0;
+  for (int row = 0; row < 64; ++row) {
+    const double r = std::min(1.0, (row + 1.5) / 64);
+    for (int col = 0; col < 64; ++col) {
+      const double nov = (col + 0.5) / 64;
+      const TexelEstimate g = Exact(nov, r);
+      const double ours[3] = {g.bias, g.scale + g.bias, IntegrateTexel(cloth, r, nov).e};
+      for (int c = 0; c < 3; ++c) {
+        // Relative to max(1, value): the cloth E reaches 9 at the corner.
+        const double rel = (f.data[row][col][c] - ours[c]) / std::max(1.0, ours[c]);
+        max_rel[c] = std::max(max_rel[c], std::abs(rel));
+        sum2[c] += rel * rel;
+      }
+      if (row % 8 == 0) {
+        const double rf = std::min(1.0, (63 - row + 1.5) / 64);
+        flipped = std::max(flipped, std::abs(f.data[row][col][2] - IntegrateTexel(cloth, rf, nov).e));
+      }
+      ++n;
+    }
+  }
+  for (int c = 0; c < 3; ++c) {
+    std::printf("Filament dfg.inc channel %c against ours: max %.3g, RMS %.3g (of max(1, value))\n", "RGB"[c],
+                max_rel[c], std::sqrt(sum2[c] / n));
+  }
+  std::printf("Filament cloth with the rows flipped: max %.3g\n", flipped);
+  // Sampling noise and half rounding: about 1e-3 RMS; the largest
+  // differences sit at grazing NoV and small roughness, where 1024 (GGX)
+  // or 4096 (cloth) samples resolve a peaked integrand worst.
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_LT(std::sqrt(sum2[c] / n), 3e-3) << "RGB"[c];
+    EXPECT_LT(max_rel[c], 3e-2) << "RGB"[c];
+  }
+  EXPECT_GT(flipped, 0.1);
 }
 
 }  // namespace

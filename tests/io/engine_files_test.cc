@@ -56,7 +56,7 @@ BakedPreset WritePreset(const std::string& name, const std::string& dir) {
   BakedPreset b;
   for (const PresetTable& pt : p.tables) {
     b.tables.push_back(Bake(pt.spec));
-    b.images.push_back(ArrangeTable(b.tables.back(), pt.layout));
+    b.images.push_back(ArrangePresetTable(pt, b.tables.back()));
   }
   PresetRun run;
   run.dir = dir;

@@ -76,7 +76,7 @@ Baked BakeCase(const Case& c) {
   if (!c.preset.empty()) {
     const PresetTable& pt = FindPreset(c.preset).tables.at(c.table);
     Baked b{Bake(pt.spec), {}};
-    b.image = ArrangeTable(b.table, pt.layout);
+    b.image = ArrangePresetTable(pt, b.table);
     return b;
   }
   Baked b{Bake(c.spec), {}};
@@ -633,7 +633,7 @@ std::vector<std::string> Programs(ShaderLanguage lang) {
       pt.spec.mu.size = std::min(pt.spec.mu.size, 8);
       pt.spec.roughness.size = std::min(pt.spec.roughness.size, 8);
       b.table = Bake(pt.spec);
-      b.image = ArrangeTable(b.table, pt.layout);
+      b.image = ArrangePresetTable(pt, b.table);
     } else {
       b = BakeCase(c);
     }
@@ -770,7 +770,7 @@ TEST(DocsTest, EngineSnippetsCompile) {
       std::vector<Image> images;
       for (const PresetTable& pt : e.tables) {
         tables.push_back(Bake(pt.spec));
-        images.push_back(ArrangeTable(tables.back(), pt.layout));
+        images.push_back(ArrangePresetTable(pt, tables.back()));
       }
       WritePresetFiles(e, run, tables, images);
       WriteText(stem + ".cc", code + "int main() { return KullaConty(0.5f, 0.7f, 0.5f) > 0.0f ? 0 : 1; }\n");

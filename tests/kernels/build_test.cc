@@ -40,19 +40,20 @@ TEST(BuildTest, OnlyTheConfiguredFamiliesAreRegistered) {
   std::vector<std::string> registered;
   for (const ModelInfo& m : Models()) registered.push_back(ModelName(m.kind));
   std::vector<std::string> expected;
-  for (const char* m : {"ggx", "beckmann", "std", "ellipsoid", "sel"}) {
-    if (IsConfigured(m)) expected.push_back(m);
+  for (const char* m : {"ggx", "beckmann", "std", "ellipsoid", "sel", "charlie", "disney"}) {
+    if (IsConfigured(m)) expected.push_back(std::string(m) == "disney" ? "disney-diffuse" : m);
   }
   EXPECT_EQ(registered, expected);
 }
 
 TEST(BuildTest, BuiltFamiliesWorkAndOthersAreRejected) {
   const std::string dir = test::Scratch("build_test");
-  for (const char* name : {"ggx", "beckmann", "std", "ellipsoid", "sel"}) {
+  for (const char* name : {"ggx", "beckmann", "std", "ellipsoid", "sel", "charlie", "disney-diffuse"}) {
     ModelParams p;
     p.kind = ParseModelKind(name);
     p.gamma = 3;
-    const bool built = IsConfigured(name);
+    const bool lobe = p.kind == ModelKind::kCharlie || p.kind == ModelKind::kDisneyDiffuse;
+    const bool built = IsConfigured(std::string(name) == "disney-diffuse" ? "disney" : name);
     EXPECT_EQ(ModelBuilt(p.kind), built) << name;
     if (!built) {
       try {
@@ -76,6 +77,13 @@ TEST(BuildTest, BuiltFamiliesWorkAndOthersAreRejected) {
     const auto model = MakeModel(p);
     EXPECT_EQ(model->params().kind, p.kind);
     if (std::string(name) == "sel") continue;
+    if (lobe) {
+      BakeSpec spec;
+      spec.model = p;
+      spec.mu.size = spec.roughness.size = 3;
+      for (double v : Bake(spec).channels[0].values) EXPECT_TRUE(std::isfinite(v) && v >= 0) << name;
+      continue;
+    }
     GridRequest g;
     g.model = p;
     g.width = g.height = 8;

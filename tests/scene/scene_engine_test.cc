@@ -295,7 +295,7 @@ TEST(ScenePresetTest, FixedSizeEngineFileIsTheEnginesOwn) {
   run.dir = dir + "/preset";
   std::filesystem::create_directories(run.dir);
   const Table t = Bake(filament.tables[0].spec);
-  WritePresetFiles(filament, run, {t}, {ArrangeTable(t, filament.tables[0].layout)});
+  WritePresetFiles(filament, run, {t}, {ArrangePresetTable(filament.tables[0], t)});
   const std::string a = Slurp(dir + "/scene/dfg.inc"), b = Slurp(dir + "/preset/dfg.inc");
   EXPECT_FALSE(a.empty());
   EXPECT_TRUE(a == b) << "the scene's dfg.inc differs from the preset's";

@@ -190,13 +190,17 @@ struct ModelOptions {
   std::string model = "ggx";
   std::string alpha, alpha_x, alpha_y, roughness;
   std::string gamma = "2";
+  std::string visibility = "conty-kulla";
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
   CLI::App* app = nullptr;
 
   void Add(CLI::App* a) {
     app = a;
     app->add_option("--model,-m", model,
-                    "ggx | beckmann | std | ellipsoid | sel, or ggx-aniso (E, E_avg only)")
+                    "ggx | beckmann | std | ellipsoid | sel | charlie (sheen) | disney-diffuse, or "
+                    "ggx-aniso (E, E_avg only)")
+        ->capture_default_str();
+    app->add_option("--visibility", visibility, "charlie: neubelt | conty-kulla")
         ->capture_default_str();
     app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25")
         ->check(kNumber);
@@ -228,11 +232,21 @@ struct ModelOptions {
         Bad(std::string(t) + ": model " + model + " has no rotation (only ellipsoid and sel do)");
       }
     }
+    if (Given(app, "--visibility") && p.kind != brdfbake::ModelKind::kCharlie) {
+      Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
+    }
+    p.visibility = brdfbake::ParseSheenVisibility(visibility);
     double a = 0.25;
     if (!alpha.empty() && !roughness.empty()) Bad("--alpha and --roughness are exclusive");
     if (!alpha.empty()) a = ParseNumber("--alpha", alpha);
     bool mirror = false;
-    if (!roughness.empty()) {
+    const bool diffuse = p.kind == brdfbake::ModelKind::kDisneyDiffuse;
+    if (!roughness.empty() && diffuse) {
+      // r itself is the diffuse lobe's parameter: r = 0 is no mirror.
+      const double r = ParseNumber("--roughness", roughness);
+      if (!(r >= 0 && r <= 1)) Bad("--roughness of disney-diffuse must lie in [0, 1] (got " + roughness + ")");
+      a = r * r;
+    } else if (!roughness.empty()) {
       const double r = ParseNumber("--roughness", roughness);
       mirror = r == 0 && mirror_ok && p.kind != brdfbake::ModelKind::kEllipsoid;
       if (!mirror && (!(r > 0) || !(r <= 100))) {
@@ -377,7 +391,8 @@ brdfbake::SceneOverrides SceneOverridesGiven(const CLI::App* app, const std::str
 }
 
 struct BakeOptions {
-  std::string table, model = "ggx", gamma = "2", size = "32x32", warp = "linear", range;
+  std::string table, model = "ggx", gamma = "2", visibility = "conty-kulla", size = "32x32",
+      warp = "linear", range;
   std::string placement = "edges", masking = "height-correlated", integrator = "quadrature";
   std::string pixel = "float", output, seed = "1", preset, format, shader, scene, symbol;
   std::string channels = "named";
@@ -397,7 +412,11 @@ struct BakeOptions {
     app->add_option("--table,-t", table, "E | E_avg | dfg | sel_norm (with --model sel)");
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
-                    "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm)")
+                    "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm) | "
+                    "charlie (sheen, --visibility) | disney-diffuse (E, E_avg)")
+        ->capture_default_str();
+    app->add_option("--visibility", visibility,
+                    "charlie: neubelt (1 / (4 (NoL + NoV - NoL NoV))) | conty-kulla (the fitted Lambda)")
         ->capture_default_str();
     app->add_option("--gamma", gamma,
                     "std: tail parameter in [1.500001, inf]; without it, a third --size entry bakes "
@@ -482,6 +501,16 @@ struct BakeOptions {
       Bad("--gamma: model " + model + " has no gamma (only std does)");
     }
     spec.model.gamma = ParseNumberOrInf("--gamma", gamma);
+    if (Given(app, "--visibility") && spec.model.kind != brdfbake::ModelKind::kCharlie) {
+      Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
+    }
+    spec.model.visibility = brdfbake::ParseSheenVisibility(visibility);
+    const bool lobe = spec.model.kind == brdfbake::ModelKind::kCharlie ||
+                      spec.model.kind == brdfbake::ModelKind::kDisneyDiffuse;
+    if (Given(app, "--masking") && lobe) {
+      Bad("--masking: model " + model + " has no Smith masking" +
+          (spec.model.kind == brdfbake::ModelKind::kCharlie ? " (its visibility is --visibility)" : ""));
+    }
     spec.masking = ParseMasking(masking);
     spec.integrator = brdfbake::ParseIntegrator(integrator);
     if (Given(app, "--tolerance") && spec.integrator != brdfbake::IntegratorKind::kQuadrature) {
@@ -769,8 +798,8 @@ int RunPreset(const BakeOptions& opts) {
   const brdfbake::Preset& preset = brdfbake::FindPreset(opts.preset);
   // A preset fixes the tables; only how they are computed and where they go
   // may be chosen.
-  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement",
-                        "--masking", "--pixel", "--complement", "--error-channel", "--integrator",
+  for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range",
+                        "--placement", "--masking", "--pixel", "--complement", "--error-channel", "--integrator",
                         "--samples", "--seed", "--symbol", "--channels"}) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
   }
@@ -798,7 +827,7 @@ int RunPreset(const BakeOptions& opts) {
   size_t held = 0;
   for (const brdfbake::PresetTable& pt : preset.tables) {
     all_values += brdfbake::BakeOutputValues(pt.spec);
-    held += brdfbake::BakeOutputBytes(pt.spec);
+    held += brdfbake::BakeOutputBytes(pt.spec) * (1 + pt.with.size());
   }
   for (const brdfbake::PresetFile& f : files) {
     if (!f.lookup) brdfbake::CheckContainerMemory(f.container, all_values, held, f.path);
@@ -811,7 +840,11 @@ int RunPreset(const BakeOptions& opts) {
     Progress progress;
     tables.push_back(brdfbake::Bake(spec, [&](int64_t d, int64_t n) { progress(d, n); }));
     progress.Finish();
-    images.push_back(brdfbake::ArrangeTable(tables.back(), pt.layout));
+    Progress with_progress;
+    images.push_back(brdfbake::ArrangePresetTable(pt, tables.back(), opts.threads,
+                                                  Given(opts.app, "--tolerance") ? opts.tolerance : 0,
+                                                  [&](int64_t d, int64_t n) { with_progress(d, n); }));
+    if (!pt.with.empty()) with_progress.Finish();
   }
   brdfbake::WritePresetFiles(preset, run, tables, images);
   for (const brdfbake::PresetFile& f : files) {
@@ -825,7 +858,7 @@ int RunPreset(const BakeOptions& opts) {
 }
 
 int RunSceneBake(const BakeOptions& opts) {
-  for (const char* o : {"--table", "--model", "--gamma", "--size", "--warp", "--range", "--placement", "--masking",
+  for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range", "--placement", "--masking",
                         "--complement", "--error-channel", "--integrator", "--samples", "--seed", "--tolerance",
                         "--symbol", "--channels"}) {
     if (Given(opts.app, o)) {

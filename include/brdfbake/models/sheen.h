@@ -1,0 +1,155 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The Charlie sheen BRDF of [EstevezKulla17]: an inverted microfacet
+// distribution whose normals lie near the surface plane,
+//   D(m) = (2 + 1/alpha) sin(theta_m)^(1/alpha) / (2 pi)        (eq. 2),
+// normalised so that its projected area is one, integral D(m) cos(theta_m)
+// dm = 1 (with s = sin(theta_m): integral_0^1 (2 + 1/alpha) s^(1/alpha + 1)
+// ds = 1). alpha is the width the engines pass, alpha = r^2 of the
+// perceptual sheen roughness r; it is taken in [kMinSheenAlpha, 1].
+//
+// f(wi, wo) = F D(h) V with one of two visibility terms V (docs/models.md
+// names the engines that use each):
+//  - neubelt ([Neubelt13]): V = 1 / (4 (NoL + NoV - NoL NoV)), a smooth
+//    replacement of the Cook-Torrance denominator with no masking;
+//  - conty-kulla ([EstevezKulla17] section 3): V = G2 / (4 NoL NoV), the
+//    height-correlated G2 = 1 / (1 + Lambda(NoV) + Lambda(NoL)) of the
+//    paper's fitted Lambda,
+//      Lambda(c) = exp(L(c))                  for c < 1/2,
+//                  exp(2 L(1/2) - L(1 - c))   for c >= 1/2,
+//      L(x) = a / (1 + b x^p) + d x + e,
+//    each of (a, b, p, d, e) interpolated between the paper's fits at
+//    alpha = 0 and alpha = 1 with the weight (1 - alpha)^2 on the first
+//    (the paper's Table 1 and the line below it, whose "r" is this alpha).
+//    Lambda grows without bound at grazing cosines, but not fast enough
+//    to keep V below 1 where both cosines are small (V(0.01, 0.01) > 1).
+// The "terminator softening" of the paper's section 4 is not part of
+// either V.
+
+#ifndef BRDFBAKE_MODELS_SHEEN_H_
+#define BRDFBAKE_MODELS_SHEEN_H_
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "brdfbake/models/constants.h"
+#include "brdfbake/models/vec3.h"
+
+namespace brdfbake {
+
+enum class SheenVisibility { kNeubelt, kContyKulla };
+
+// "neubelt" or "conty-kulla".
+inline const char* SheenVisibilityName(SheenVisibility v) {
+  return v == SheenVisibility::kNeubelt ? "neubelt" : "conty-kulla";
+}
+
+// The smallest alpha the Charlie model evaluates; below it the lobe is
+// evaluated at this width. E(mu) vanishes as alpha -> 0 for every mu > 0
+// but converges ever more slowly at grazing mu (at alpha = 1e-6 it still
+// differs from 0 for mu below about 1e-3).
+template <typename T>
+inline constexpr T kMinSheenAlpha = T(1e-6);
+
+template <typename T>
+T ClampSheenAlpha(T alpha) {
+  return std::clamp(alpha, kMinSheenAlpha<T>, T(1));
+}
+
+// The fitted L(x) of the conty-kulla Lambda at width alpha
+// ([EstevezKulla17] Table 1; t = (1 - alpha)^2 weighs the alpha = 0 fit).
+template <typename T>
+T CharlieL(T alpha, T x) {
+  const T t = (T(1) - alpha) * (T(1) - alpha);
+  const T a = T(21.5473) + t * (T(25.3245) - T(21.5473));
+  const T b = T(3.82987) + t * (T(3.32435) - T(3.82987));
+  const T p = T(0.19823) + t * (T(0.16801) - T(0.19823));
+  const T d = T(-1.97760) + t * (T(-1.27393) - T(-1.97760));
+  const T e = T(-4.32054) + t * (T(-4.85967) - T(-4.32054));
+  return a / (T(1) + b * std::pow(x, p)) + d * x + e;
+}
+
+// The power p of x in L(x) at width alpha.
+template <typename T>
+T CharlieLPower(T alpha) {
+  const T t = (T(1) - alpha) * (T(1) - alpha);
+  return T(0.19823) + t * (T(0.16801) - T(0.19823));
+}
+
+template <typename T>
+class CharlieSheen {
+ public:
+  CharlieSheen(T alpha, SheenVisibility visibility)
+      : alpha_(ClampSheenAlpha(alpha)), visibility_(visibility) {
+    q_ = T(0.5) / alpha_;
+    k_ = (T(2) + T(1) / alpha_) / kTwoPi<T>;
+  }
+
+  T alpha() const { return alpha_; }
+  SheenVisibility visibility() const { return visibility_; }
+
+  // D at cos(theta_m) = c in [0, 1]: k (1 - c^2)^(1 / (2 alpha)), the
+  // power as exp(q log1p(-c^2)) so that a c near 0 keeps its digits.
+  T DCos(T c) const { return DCos2(c * c); }
+  // The same at c^2 = cos(theta_m)^2.
+  T DCos2(T c2) const {
+    if (!(c2 < T(1))) return T(0);
+    return k_ * std::exp(q_ * std::log1p(-c2));
+  }
+  T D(const Vec3<T>& m) const { return m.z > T(0) ? DCos(std::min(m.z, T(1))) : T(0); }
+
+  // The conty-kulla Lambda at a cosine c in (0, 1]; +inf at c <= 0.
+  T LambdaCos(T c) const {
+    if (!(c > T(0))) return std::numeric_limits<T>::infinity();
+    c = std::min(c, T(1));
+    if (c < T(0.5)) return std::exp(CharlieL(alpha_, c));
+    return std::exp(T(2) * CharlieL(alpha_, T(0.5)) - CharlieL(alpha_, T(1) - c));
+  }
+  T Lambda(const Vec3<T>& w) const { return LambdaCos(w.z); }
+  T G1(const Vec3<T>& w) const { return w.z > T(0) ? T(1) / (T(1) + LambdaCos(w.z)) : T(0); }
+  // The height-correlated G2 of the conty-kulla visibility.
+  T G2Cos(T nol, T nov) const {
+    if (!(nol > T(0)) || !(nov > T(0))) return T(0);
+    return T(1) / (T(1) + LambdaCos(nov) + LambdaCos(nol));
+  }
+
+  // V such that f = F D(h) V, for NoL, NoV in (0, 1].
+  T Visibility(T nol, T nov) const {
+    if (!(nol > T(0)) || !(nov > T(0))) return T(0);
+    if (visibility_ == SheenVisibility::kNeubelt) {
+      return T(1) / (T(4) * (nol + nov - nol * nov));
+    }
+    return G2Cos(nol, nov) / (T(4) * nol * nov);
+  }
+
+  // f(wi, wo) with F = 1: D(h) V for wi, wo above the horizon, 0 else.
+  T Brdf(const Vec3<T>& wi, const Vec3<T>& wo) const {
+    if (!(wi.z > T(0)) || !(wo.z > T(0))) return T(0);
+    const Vec3<T> s = wi + wo;
+    const T len = Length(s);
+    if (!(len > T(0))) return T(0);
+    return DCos(std::min(s.z / len, T(1))) * Visibility(std::min(wi.z, T(1)), std::min(wo.z, T(1)));
+  }
+
+  // Normals with density D(m) m.z: phi = 2 pi u1 and, with s =
+  // sin(theta_m), whose density is (2 + 1/alpha) s^(1/alpha + 1), the CDF
+  // s^(2 + 1/alpha) inverted at u2.
+  Vec3<T> SampleNdf(T u1, T u2) const {
+    const T s = std::pow(std::clamp(u2, T(0), T(1)), alpha_ / (T(2) * alpha_ + T(1)));
+    const T c = std::sqrt(std::max(T(0), (T(1) - s) * (T(1) + s)));
+    const T phi = kTwoPi<T> * u1;
+    return {s * std::cos(phi), s * std::sin(phi), c};
+  }
+  T PdfNdf(const Vec3<T>& m) const { return m.z > T(0) ? D(m) * std::min(m.z, T(1)) : T(0); }
+
+ private:
+  T alpha_;
+  SheenVisibility visibility_;
+  T q_, k_;
+};
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_MODELS_SHEEN_H_

@@ -1,0 +1,261 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The rules of sheen_albedo.h as templates over the evaluator of their
+// nodes: the Scalar* evaluators are the double reference,
+// lanes/sheen_lanes.cc evaluates the same nodes in lanes.
+
+#ifndef BRDFBAKE_SRC_RULES_SHEEN_SHEEN_ALBEDO_RULE_H_
+#define BRDFBAKE_SRC_RULES_SHEEN_SHEEN_ALBEDO_RULE_H_
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "brdfbake/models/disney_diffuse.h"
+#include "brdfbake/models/sheen.h"
+#include "quadrature/adaptive_rule.h"
+#include "quadrature/gauss_legendre.h"
+#include "rules/sheen/sheen_albedo.h"
+
+namespace brdfbake {
+
+// What the arc integrand depends on at one theta_h (CharlieAlbedoWith):
+// y = wo.h = p + r cos(phi_h), NoL = 2 c y - mu.
+struct CharlieArcTerms {
+  double p, r, two_c, mu;
+};
+
+// g = V NoL 4 (wo.h) at one point of the arc, for wo.h = y and NoL = nol
+// (nol >= 0).
+inline double CharlieArcIntegrand(const CharlieSheen<double>& sheen, double mu, double y,
+                                  double nol) {
+  if (!(nol > 0)) return 0;
+  if (sheen.visibility() == SheenVisibility::kNeubelt) return nol * y / (nol * (1 - mu) + mu);
+  return y * sheen.G2Cos(std::min(nol, 1.0), mu) / mu;
+}
+
+// The double reference's g at 15 azimuths, and at 15 values of z =
+// NoL^power towards the arc's end (the integrand times dphi/dz).
+struct ScalarCharlieNodes {
+  const CharlieSheen<double>* sheen;
+  void operator()(const CharlieArcTerms& t, const double* phi, double* g) const {
+    for (int i = 0; i < 15; ++i) {
+      const double y = t.p + t.r * std::cos(phi[i]);
+      g[i] = CharlieArcIntegrand(*sheen, t.mu, y, t.two_c * y - t.mu);
+    }
+  }
+  void AtEnd(const CharlieArcTerms& t, double power, const double* z, double* g) const {
+    for (int i = 0; i < 15; ++i) {
+      const double nol = std::pow(z[i], 1 / power);
+      const double y = (nol + t.mu) / t.two_c;
+      const double cp = std::clamp((y - t.p) / t.r, -1.0, 1.0);
+      const double sp = std::sqrt((1 - cp) * (1 + cp));
+      const double jac = nol / (z[i] * power * t.two_c * t.r * sp);
+      g[i] = CharlieArcIntegrand(*sheen, t.mu, y, nol) * jac;
+    }
+  }
+};
+
+template <class Nodes>
+RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, double tol,
+                             int max_pieces, const Nodes& nodes) {
+  const double mu = std::clamp(mu_in, 1e-7, 1.0);
+  const double s_mu = std::sqrt((1 - mu) * (1 + mu));
+  const double q = 0.5 / sheen.alpha();
+  const bool ck = sheen.visibility() == SheenVisibility::kContyKulla;
+  const double power = CharlieLPower(sheen.alpha());
+  // NoL is largest at phi_h = 0, cos(2 theta_h - theta_o): positive below
+  // theta_max = pi/4 + theta_o/2.
+  const double theta_max = 0.25 * kPi<double> + 0.5 * std::acos(mu);
+  // J(theta_h) = 2 int_0^phi_max g dphi with its error, to an absolute
+  // tolerance `inner_tol`.
+  auto over_arc = [&](double c, double s, double inner_tol, double* err) {
+    CharlieArcTerms t{mu * c, s_mu * s, 2 * c, mu};
+    // NoL = 0 at cos(phi) = (mu / (2 c) - mu c) / (s_mu s).
+    const double den = t.r;
+    const double cm = den > 0 ? (mu / t.two_c - t.p) / den : -1.0;
+    if (!(cm < 1)) {
+      *err = 0;
+      return 0.0;
+    }
+    const double phi_max = cm <= -1 ? kPi<double> : std::acos(cm);
+    const bool arc_end = phi_max < kPi<double>;
+    const double nol0 = t.two_c * (t.p + t.r) - mu;  // NoL at phi_h = 0, its largest
+    auto phi_at = [&](double nol) {
+      return std::acos(std::clamp(((nol + mu) / t.two_c - t.p) / t.r, -1.0, 1.0));
+    };
+    // The pieces: in phi, and where the arc ends inside (0, pi), its last
+    // part (NoL below nol0 / 2) cut at NoL = nol0 / 2 4^-k down to mu / 4:
+    // both visibilities change over NoL ~ mu there (V ~ 1 / (NoL + mu), or
+    // G2 ~ 1 / (Lambda(mu) + Lambda(NoL))). For conty-kulla that part is
+    // integrated in z = NoL^power, in which its Lambda, a function of
+    // NoL^power (power about 0.2) near NoL = 0, is smooth; its plain part
+    // is cut at NoL = 1/2, where Lambda changes branch (its second
+    // derivative jumps).
+    std::vector<double> plain_cuts = {0.0};
+    std::vector<double> z_cuts;
+    const double nol_split = 0.5 * nol0;
+    if (ck && 0.5 < nol0 && (!arc_end || 0.5 > nol_split)) plain_cuts.push_back(phi_at(0.5));
+    if (arc_end) {
+      std::vector<double> levels = {nol_split};
+      while (levels.back() > 0.25 * mu && levels.size() < 24) levels.push_back(0.25 * levels.back());
+      if (ck) {
+        plain_cuts.push_back(phi_at(nol_split));
+        z_cuts.push_back(0.0);
+        for (auto it = levels.rbegin(); it != levels.rend(); ++it) z_cuts.push_back(std::pow(*it, power));
+      } else {
+        for (double l : levels) plain_cuts.push_back(phi_at(l));
+        plain_cuts.push_back(phi_max);
+      }
+    } else {
+      plain_cuts.push_back(phi_max);
+    }
+    auto make = [&](bool in_z, double a, double b) {
+      return KronrodPieceBatch(a, b, 2.0, [&](const double* x, double* v, double* e) {
+        if (in_z) {
+          nodes.AtEnd(t, power, x, v);
+        } else {
+          nodes(t, x, v);
+        }
+        for (int i = 0; i < 15; ++i) e[i] = 0;
+      });
+    };
+    std::vector<GkPiece> pieces;
+    std::vector<char> in_z;
+    auto add = [&](const std::vector<double>& cuts, bool z) {
+      for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+        if (!(cuts[k + 1] > cuts[k])) continue;
+        pieces.push_back(make(z, cuts[k], cuts[k + 1]));
+        in_z.push_back(z);
+      }
+    };
+    add(plain_cuts, false);
+    add(z_cuts, true);
+    double v, e;
+    auto sums = [&] {
+      v = e = 0;
+      for (const GkPiece& p : pieces) {
+        v += p.value;
+        e += p.err;
+      }
+    };
+    // The worst piece bisected until the tolerance, or until |K15 - G7| is
+    // down to the rounding of the sum (a large weight D sin(theta_h) can
+    // ask for more).
+    for (sums(); e > std::max(inner_tol, 1e-13 * v) && pieces.size() < 96; sums()) {
+      size_t w = 0;
+      for (size_t k = 1; k < pieces.size(); ++k) {
+        if (pieces[k].err > pieces[w].err) w = k;
+      }
+      const GkPiece p = pieces[w];
+      const double m = 0.5 * (p.a + p.b);
+      pieces[w] = make(in_z[w], p.a, m);
+      pieces.push_back(make(in_z[w], m, p.b));
+      in_z.push_back(in_z[w]);
+    }
+    *err = e;
+    return v;
+  };
+  // The outer integrand D(theta_h) sin(theta_h) J(theta_h) in s, theta_h =
+  // theta_max (1 - s^2): J vanishes as (theta_max - theta_h)^(3/2) at
+  // theta_max, smooth in s, and a narrow lobe's peak there, over the width
+  // tan(theta_max) / (2 q) in theta_h, is wider in s. The inner tolerance
+  // makes each node's error at most a tenth of `tol` (the Kronrod weights
+  // of a piece sum to its width, the widths to 1).
+  auto piece = [&](double a, double b) {
+    return KronrodPiece(a, b, 1.0, [&](double sv, double* err) {
+      const double th = theta_max * (1 - sv * sv);
+      const double c = std::cos(th), s = std::sin(th);
+      const double w = sheen.DCos2(c * c) * s * 2 * theta_max * sv;
+      if (!(w > 0)) {
+        *err = 0;
+        return 0.0;
+      }
+      double e;
+      const double j = over_arc(c, s, 0.1 * tol / w, &e);
+      *err = w * e;
+      return w * j;
+    });
+  };
+  // Graded by 4 towards s = 0 down to the peak's width, and for a grazing
+  // view to sqrt(mu / theta_max): within about mu of theta_max the arc's
+  // end moves at the rate 1 / cos(theta_h) (its cos(phi_max) holds mu /
+  // (2 cos(theta_h))).
+  std::vector<GkPiece> pieces;
+  const double finest = std::min(std::sqrt(std::min(0.25, std::tan(theta_max) / (2 * q * theta_max))),
+                                 std::sqrt(mu / theta_max));
+  double edge = 0.5;
+  pieces.push_back(piece(edge, 1.0));
+  while (edge > 4 * finest && pieces.size() < 24) {
+    pieces.push_back(piece(0.25 * edge, edge));
+    edge *= 0.25;
+  }
+  pieces.push_back(piece(0.0, edge));
+  auto totals = [&](double* rule, double* inner) {
+    *rule = *inner = 0;
+    for (const GkPiece& p : pieces) {
+      *rule += p.err;
+      *inner += p.prop;
+    }
+  };
+  double rule_err, inner_err;
+  totals(&rule_err, &inner_err);
+  while (rule_err + inner_err > tol && rule_err > 0.1 * tol &&
+         int(pieces.size()) < std::max(max_pieces, 8)) {
+    BisectWorst(&pieces, piece);
+    totals(&rule_err, &inner_err);
+  }
+  return SumOfPieces(pieces, rule_err + inner_err);
+}
+
+// The double reference's azimuthal mean of pi f at n cosines x.
+struct ScalarDisneyNodes {
+  double r;
+  void operator()(const double* x, double mu, int n, double* m) const {
+    const DisneyDiffuse<double> f(r);
+    for (int i = 0; i < n; ++i) m[i] = f.AzimuthMean(x[i], mu);
+  }
+};
+
+// 2 integral_0^1 x M(x, mu) dx by the n-point rule `gl`.
+template <class Nodes>
+double DisneyRule(const GaussLegendre& gl, double mu, const Nodes& nodes) {
+  const int n = static_cast<int>(gl.x.size());
+  double m[16];
+  nodes(gl.x.data(), mu, n, m);
+  double s = 0;
+  for (int i = 0; i < n; ++i) s += gl.w[i] * gl.x[i] * m[i];
+  return 2 * s;
+}
+
+template <class Nodes>
+RuleResult DisneyAlbedoWith(double mu, const Nodes& nodes) {
+  static const GaussLegendre fine(8), coarse(6);
+  const double e = DisneyRule(fine, mu, nodes);
+  RuleResult out;
+  out.value = e;
+  out.error = std::abs(e - DisneyRule(coarse, mu, nodes)) + 1e-15 * std::abs(e);
+  out.pieces = 1;
+  return out;
+}
+
+template <class Nodes>
+RuleResult DisneyEavgWith(const Nodes& nodes) {
+  static const GaussLegendre fine(8), coarse(6);
+  auto rule = [&](const GaussLegendre& gl) {
+    double s = 0;
+    for (size_t k = 0; k < gl.x.size(); ++k) s += gl.w[k] * gl.x[k] * DisneyRule(gl, gl.x[k], nodes);
+    return 2 * s;
+  };
+  const double e = rule(fine);
+  RuleResult out;
+  out.value = e;
+  out.error = std::abs(e - rule(coarse)) + 1e-15 * std::abs(e);
+  out.pieces = 1;
+  return out;
+}
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_RULES_SHEEN_SHEEN_ALBEDO_RULE_H_
