@@ -13,7 +13,7 @@ case "$mode" in run|test) ;; *) echo "usage: sh tools/setup.sh run|test" >&2; ex
 cd "$(dirname "$0")/.."
 
 packages="build-essential cmake libhwy-dev libopenexr-dev libtbb-dev libboost-dev \
-libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libzstd-dev libgtest-dev libbenchmark-dev"
+libcli11-dev nlohmann-json3-dev libtomlplusplus-dev libzstd-dev libpng-dev libgtest-dev libbenchmark-dev"
 # The tests also read files back with OpenImageIO, compile the generated
 # shaders with glslang, run the GLSL and WGSL lookups in headless Chromium
 # (WebGL2, and WebGPU on its SwiftShader Vulkan), import the three.js and

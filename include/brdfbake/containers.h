@@ -23,17 +23,19 @@ namespace brdfbake {
 enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kZero, kOne };
 const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "0", "1"
 
-const char* PixelTypeName(PixelType p);  // float, half, unorm16
+const char* PixelTypeName(PixelType p);  // float, half, unorm16, unorm8
 
 // kInc is the array body alone (comma-separated values after a comment), to
 // be #included inside an initializer: `const uint16_t lut[] = {\n#include
 // "dfg.inc"\n};` (Filament's form).
-enum class Container { kExr, kHeader, kJs, kKtx2, kDds, kInc };
-const char* ContainerName(Container c);  // exr, header, js, ktx2, dds, inc
+// kPng is 8- or 16-bit unorm PNG (libpng): gray, gray + alpha, RGB or RGBA
+// by the channel count, with the conventions in tEXt chunks.
+enum class Container { kExr, kHeader, kJs, kKtx2, kDds, kInc, kPng };
+const char* ContainerName(Container c);  // exr, header, js, ktx2, dds, inc, png
 // Throws std::invalid_argument naming the bad value.
 Container ParseContainer(const std::string& s);
 // The container a file name's extension names (.exr, .h/.hpp, .inc,
-// .js/.mjs, .ktx2, .dds); throws std::invalid_argument for any other.
+// .js/.mjs, .ktx2, .dds, .png); throws std::invalid_argument for any other.
 Container ContainerFromPath(const std::string& path);
 
 struct ImageLayout {

@@ -8,9 +8,9 @@
 
 namespace brdfbake {
 
-// 32-bit float, IEEE half, or a 16-bit unsigned normalized code
-// (v = code / 65535).
-enum class PixelType { kFloat, kHalf, kUnorm16 };
+// 32-bit float, IEEE half, or a 16- or 8-bit unsigned normalized code
+// (v = code / 65535, code / 255).
+enum class PixelType { kFloat, kHalf, kUnorm16, kUnorm8 };
 
 }  // namespace brdfbake
 

@@ -50,6 +50,9 @@ struct Preset {
 
 const std::vector<Preset>& Presets();
 const Preset& FindPreset(const std::string& name);  // throws std::invalid_argument
+// Whether this build holds every model family the preset's tables need
+// (BRDFBAKE_MODELS): Filament's cloth channel needs charlie, say.
+bool PresetBuilt(const Preset& preset);
 
 // What a preset bake writes besides the tables themselves: a container the
 // engine also loads (empty: the preset's own), and shader lookups.

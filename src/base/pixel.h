@@ -19,17 +19,20 @@
 
 namespace brdfbake {
 
-// The 16-bit code of v: IEEE half bits, or round(v 65535) for unorm16
-// (v clamped to [0, 1]). Float pixels have no code (0).
+// The 16-bit code of v: IEEE half bits, or round(v 65535) for unorm16,
+// round(v 255) for unorm8 (v clamped to [0, 1]). Float pixels have no code
+// (0).
 inline uint16_t PixelCode(double v, PixelType p) {
   if (p == PixelType::kHalf) return Imath::half(float(v)).bits();
   if (p == PixelType::kUnorm16) return uint16_t(std::lround(std::clamp(v, 0.0, 1.0) * 65535.0));
+  if (p == PixelType::kUnorm8) return uint16_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
   return 0;
 }
 
-// The value a 16-bit code stands for.
+// The value a code stands for.
 inline double PixelCodeValue(uint16_t code, PixelType p) {
   if (p == PixelType::kUnorm16) return code / 65535.0;
+  if (p == PixelType::kUnorm8) return code / 255.0;
   Imath::half h;
   h.setBits(code);
   return double(float(h));

@@ -246,6 +246,7 @@ const char* Extension(Container c) {
     case Container::kKtx2: return ".ktx2";
     case Container::kDds: return ".dds";
     case Container::kInc: return ".inc";
+    case Container::kPng: return ".png";
   }
   return ".exr";
 }
@@ -446,6 +447,16 @@ void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vec
 const std::vector<Preset>& Presets() {
   static const std::vector<Preset> kPresets = MakePresets();
   return kPresets;
+}
+
+bool PresetBuilt(const Preset& preset) {
+  for (const PresetTable& pt : preset.tables) {
+    if (!ModelBuilt(pt.spec.model.kind)) return false;
+    for (const BakeSpec& w : pt.with) {
+      if (!ModelBuilt(w.model.kind)) return false;
+    }
+  }
+  return true;
 }
 
 const Preset& FindPreset(const std::string& name) {

@@ -23,6 +23,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfStringAttribute.h>
 #include <nlohmann/json.hpp>
+#include <png.h>
 #include <zstd.h>
 
 #include "base/error.h"
@@ -257,6 +258,84 @@ std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, 
   return f;
 }
 
+// PNG through libpng: 8- or 16-bit codes (big-endian), the channel count
+// as the colour type, the conventions as tEXt chunks (their keys).
+// libpng reports errors by longjmp to the setjmp below, out of its own
+// frames only; the objects with destructors live outside that scope.
+struct PngOut {
+  std::string bytes;
+  std::string error;
+};
+
+extern "C" {
+static void PngWrite(png_structp png, png_bytep data, png_size_t n) {
+  static_cast<PngOut*>(png_get_io_ptr(png))->bytes.append(reinterpret_cast<const char*>(data), n);
+}
+static void PngFlush(png_structp) {}
+static void PngError(png_structp png, png_const_charp msg) {
+  static_cast<PngOut*>(png_get_error_ptr(png))->error = msg;
+  png_longjmp(png, 1);
+}
+static void PngWarning(png_structp, png_const_charp) {}
+}
+
+// The libpng calls, in a frame of their own that holds no object with a
+// destructor and no local the longjmp of an error could leave stale.
+bool PngEncode(png_structp png, png_infop info, PngOut* out, int width, int height, int depth,
+               int color_type, png_textp text, int n_text, png_bytepp rows) {
+  if (setjmp(png_jmpbuf(png)) != 0) return false;
+  png_set_write_fn(png, out, PngWrite, PngFlush);
+  png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), depth, color_type, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_text(png, info, text, n_text);
+  png_set_rows(png, info, rows);
+  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  return true;
+}
+
+std::string PngBytes(const Image& im, const std::vector<std::pair<std::string, std::string>>& kv) {
+  if (im.pixel != PixelType::kUnorm8 && im.pixel != PixelType::kUnorm16) {
+    Bad(std::string("--format png: holds unorm8 or unorm16 pixels, not ") + PixelTypeName(im.pixel));
+  }
+  const int nc = im.channels;
+  const int types[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
+                       PNG_COLOR_TYPE_RGBA};
+  const bool wide = im.pixel == PixelType::kUnorm16;
+  const size_t row_bytes = size_t(im.width) * nc * (wide ? 2 : 1);
+  std::vector<unsigned char> pixels(row_bytes * im.height);
+  for (size_t i = 0; i < im.bits16.size(); ++i) {
+    if (wide) {
+      pixels[2 * i] = static_cast<unsigned char>(im.bits16[i] >> 8);
+      pixels[2 * i + 1] = static_cast<unsigned char>(im.bits16[i] & 0xff);
+    } else {
+      pixels[i] = static_cast<unsigned char>(im.bits16[i]);
+    }
+  }
+  std::vector<png_bytep> rows(im.height);
+  for (int y = 0; y < im.height; ++y) rows[y] = pixels.data() + size_t(y) * row_bytes;
+  std::vector<std::string> keys, values;
+  for (const auto& [k, v] : kv) {
+    keys.push_back(k.substr(0, 79));
+    values.push_back(v);
+  }
+  std::vector<png_text> text(kv.size());
+  for (size_t i = 0; i < kv.size(); ++i) {
+    text[i].compression = PNG_TEXT_COMPRESSION_NONE;
+    text[i].key = const_cast<char*>(keys[i].c_str());
+    text[i].text = const_cast<char*>(values[i].c_str());
+    text[i].text_length = values[i].size();
+  }
+  PngOut out;
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &out, PngError, PngWarning);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  const bool ok = png != nullptr && info != nullptr &&
+                  PngEncode(png, info, &out, im.width, im.height, wide ? 16 : 8, types[nc - 1],
+                            text.data(), int(text.size()), rows.data());
+  png_destroy_write_struct(&png, &info);
+  if (!ok) throw std::runtime_error("--format png: libpng failed: " + out.error);
+  return out.bytes;
+}
+
 // DDS with the DX10 extension header (Microsoft's DDS_HEADER and
 // DDS_HEADER_DXT10 layouts).
 std::string DdsBytes(const Image& im) {
@@ -319,6 +398,7 @@ const char* PixelTypeName(PixelType p) {
     case PixelType::kFloat: return "float";
     case PixelType::kHalf: return "half";
     case PixelType::kUnorm16: return "unorm16";
+    case PixelType::kUnorm8: return "unorm8";
   }
   return "float";
 }
@@ -331,6 +411,7 @@ const char* ContainerName(Container c) {
     case Container::kKtx2: return "ktx2";
     case Container::kDds: return "dds";
     case Container::kInc: return "inc";
+    case Container::kPng: return "png";
   }
   return "exr";
 }
@@ -338,11 +419,11 @@ const char* ContainerName(Container c) {
 Container ParseContainer(const std::string& given) {
   const std::string s = Lowercase(given);
   for (Container c : {Container::kExr, Container::kHeader, Container::kJs, Container::kKtx2,
-                      Container::kDds, Container::kInc}) {
+                      Container::kDds, Container::kInc, Container::kPng}) {
     if (s == ContainerName(c)) return c;
   }
-  Bad("--format: unknown format '" + given + "' (expected exr, header, js, ktx2, dds or inc)" +
-      DidYouMean(given, {"exr", "header", "js", "ktx2", "dds", "inc"}, {{"h", "header"}, {"hpp", "header"},
+  Bad("--format: unknown format '" + given + "' (expected exr, header, js, ktx2, dds, inc or png)" +
+      DidYouMean(given, {"exr", "header", "js", "ktx2", "dds", "inc", "png"}, {{"h", "header"}, {"hpp", "header"},
                                                                          {"mjs", "js"}, {"ktx", "ktx2"}}));
 }
 
@@ -354,8 +435,9 @@ Container ContainerFromPath(const std::string& path) {
   if (ext == ".js" || ext == ".mjs") return Container::kJs;
   if (ext == ".ktx2") return Container::kKtx2;
   if (ext == ".dds") return Container::kDds;
+  if (ext == ".png") return Container::kPng;
   Bad("-o: '" + path + "' " + (ext.empty() ? "has no extension" : "names a " + ext + " file") +
-      "; bake writes .exr, .h/.hpp (header), .inc (array body), .js/.mjs, .ktx2 or .dds");
+      "; bake writes .exr, .h/.hpp (header), .inc (array body), .js/.mjs, .ktx2, .dds or .png");
 }
 
 ImageLayout DefaultLayout(const Table& table) {
@@ -559,6 +641,7 @@ size_t ContainerWriteBytes(Container container, int64_t values) {
       break;
     case Container::kKtx2:
     case Container::kDds:
+    case Container::kPng:
       per_value += 3 * sizeof(float);  // the pixels, the file, their sum
       break;
   }
@@ -588,6 +671,9 @@ void CheckContainerMemory(Container container, int64_t values, size_t held,
 void WriteImage(const Table& table, const Image& im, Container container, const std::string& path,
                 const std::string& symbol, const std::string& preset, int ktx2_zstd_level) {
   const auto conv = ImageConventions(table, im, preset);
+  if (im.pixel == PixelType::kUnorm8 && container != Container::kPng) {
+    Bad(std::string("--format ") + ContainerName(container) + ": holds no unorm8 pixels (png does)");
+  }
   switch (container) {
     case Container::kExr: {
       if (im.pixel == PixelType::kUnorm16) Bad("--format exr: holds half or float pixels, not unorm16");
@@ -632,6 +718,9 @@ void WriteImage(const Table& table, const Image& im, Container container, const 
       return;
     case Container::kDds:
       WriteFileAtomically(path, DdsBytes(im));
+      return;
+    case Container::kPng:
+      WriteFileAtomically(path, PngBytes(im, conv));
       return;
     case Container::kInc: {
       // The conventions as a comment, then the values alone: the file is

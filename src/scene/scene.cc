@@ -605,6 +605,7 @@ const char* ExtensionOf(Container c) {
     case Container::kJs: return ".js";
     case Container::kKtx2: return ".ktx2";
     case Container::kDds: return ".dds";
+    case Container::kPng: return ".png";
     case Container::kInc: return ".inc";
   }
   return ".exr";

@@ -467,7 +467,7 @@ struct BakeOptions {
     app->add_option("--tolerance", tolerance, "quadrature: refine until two rules agree to this")
         ->capture_default_str()
         ->check(kNumber);
-    app->add_option("--pixel", pixel, "float | half | unorm16 (dds only)")->capture_default_str();
+    app->add_option("--pixel", pixel, "float | half | unorm16 (dds, png) | unorm8 (png)")->capture_default_str();
     app->add_flag("--complement", complement,
                   "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
     app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
@@ -541,8 +541,9 @@ struct BakeOptions {
     spec.complement = complement;
     spec.error_channel = error_channel;
     spec.threads = threads;
-    if (pixel != "float" && pixel != "half" && (pixel != "unorm16" || for_report)) {
-      Bad("--pixel: expected float, half" + std::string(for_report ? "" : " or unorm16") + ", got '" + pixel + "'");
+    if (pixel != "float" && pixel != "half" && ((pixel != "unorm16" && pixel != "unorm8") || for_report)) {
+      Bad("--pixel: expected float, half" + std::string(for_report ? "" : ", unorm16 or unorm8") + ", got '" +
+          pixel + "'");
     }
     spec.half = pixel == "half";
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
@@ -828,6 +829,8 @@ int RunPreset(const BakeOptions& opts) {
   for (const brdfbake::PresetTable& pt : preset.tables) {
     all_values += brdfbake::BakeOutputValues(pt.spec);
     held += brdfbake::BakeOutputBytes(pt.spec) * (1 + pt.with.size());
+    // A model family the build leaves out fails here, before any work.
+    for (const brdfbake::BakeSpec& w : pt.with) brdfbake::ValidateBakeSpec(w);
   }
   for (const brdfbake::PresetFile& f : files) {
     if (!f.lookup) brdfbake::CheckContainerMemory(f.container, all_values, held, f.path);
@@ -903,8 +906,14 @@ int RunBake(const BakeOptions& opts) {
   if (!opts.format.empty() && brdfbake::ContainerFromPath(opts.output) != container) {
     Bad("-o: '" + opts.output + "' does not name a " + opts.format + " file");
   }
-  if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds) {
-    Bad("--pixel unorm16: only the dds format holds unorm16 pixels");
+  if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds && container != brdfbake::Container::kPng) {
+    Bad("--pixel unorm16: only the dds and png formats hold unorm16 pixels");
+  }
+  if (opts.pixel == "unorm8" && container != brdfbake::Container::kPng) {
+    Bad("--pixel unorm8: only the png format holds unorm8 pixels");
+  }
+  if (container == brdfbake::Container::kPng && opts.pixel != "unorm8" && opts.pixel != "unorm16") {
+    Bad("-o: png holds unorm8 or unorm16 pixels: give --pixel unorm8 or unorm16 (got " + opts.pixel + ")");
   }
   const std::vector<brdfbake::ShaderLanguage> langs = ShaderLanguages(opts.shader);
   if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
@@ -940,6 +949,7 @@ int RunBake(const BakeOptions& opts) {
   if (arranged) {
     brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
     if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
+    if (opts.pixel == "unorm8") layout.pixel = brdfbake::PixelType::kUnorm8;
     if (rgba) layout = brdfbake::RgbaLayout(layout);
     image = brdfbake::ArrangeTable(table, layout);
   }
