@@ -26,11 +26,13 @@ namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 // ScalarCharlieNodes with the 15 nodes in lanes (the 16th repeats the
-// first): cos, pow, exp and log by Highway's (a few ulp in double), the
-// visibility by CharlieVisibility of kernels/sheen-inl.h.
+// first): cos, pow, exp and log by Highway's (a few ulp in double),
+// Lambda(NoL) by CharlieLogLambda of kernels/sheen-inl.h, Lambda(mu) once
+// per texel.
 struct SimdCharlieNodes {
   CharlieConsts<DF64> c;
   double mu;
+  double lambda_mu;  // conty-kulla: Lambda(mu)
 
   void operator()(const CharlieArcTerms& t, const double* phi, double* g) const {
     Eval<false>(t, 0, phi, g);
@@ -50,7 +52,8 @@ struct SimdCharlieNodes {
     HWY_ALIGN double in[16], out[16];
     NodesTo16(x, in);
     const V p = hn::Set(d, t.p), r = hn::Set(d, t.r), two_c = hn::Set(d, t.two_c);
-    const V muv = hn::Set(d, mu), one = hn::Set(d, 1.0), zero = hn::Zero(d), four = hn::Set(d, 4.0);
+    const V muv = hn::Set(d, mu), one = hn::Set(d, 1.0), zero = hn::Zero(d);
+    const V one_lambda_mu = hn::Set(d, 1 + lambda_mu);
     for (size_t i = 0; i < 16; i += N) {
       const V xv = hn::Load(d, in + i);
       V y, nol, jac = one;
@@ -66,9 +69,17 @@ struct SimdCharlieNodes {
       }
       const auto up = hn::Gt(nol, zero);
       const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
-      // V NoL 4 y, V from the kernel (its clamp of NoL at 1 as G2Cos's).
-      const V f = hn::Mul(hn::Mul(hn::Mul(CharlieVisibility(d, c, nl, muv), four), hn::Mul(nol, y)), jac);
-      hn::Store(hn::IfThenElseZero(up, f), d, out + i);
+      V f;
+      if (c.neubelt) {
+        // V NoL 4 y = NoL y / (NoL + mu - NoL mu).
+        f = hn::Div(hn::Mul(nol, y), hn::Add(hn::NegMulAdd(nl, muv, nl), muv));
+      } else {
+        // V NoL 4 y = y G2 / mu, G2 = 1 / (1 + Lambda(mu) + Lambda(NoL)),
+        // Lambda(mu) once per texel.
+        const V lam = hn::Exp(d, CharlieLogLambda(d, c, nl));
+        f = hn::Div(y, hn::Mul(muv, hn::Add(one_lambda_mu, lam)));
+      }
+      hn::Store(hn::IfThenElseZero(up, hn::Mul(f, jac)), d, out + i);
     }
     for (int i = 0; i < 15; ++i) g[i] = out[i];
   }
@@ -77,8 +88,9 @@ struct SimdCharlieNodes {
 RuleResult CharlieTexel(double alpha, SheenVisibility visibility, double mu, double tol,
                         int max_pieces) {
   const CharlieSheen<double> sheen(alpha, visibility);
-  const SimdCharlieNodes nodes{CharlieConsts<DF64>(DF64(), alpha, visibility),
-                               std::clamp(mu, 1e-7, 1.0)};
+  const double m = std::clamp(mu, 1e-7, 1.0);
+  const SimdCharlieNodes nodes{CharlieConsts<DF64>(DF64(), alpha, visibility), m,
+                               visibility == SheenVisibility::kContyKulla ? sheen.LambdaCos(m) : 0.0};
   return CharlieAlbedoWith(sheen, mu, tol, max_pieces, nodes);
 }
 
