@@ -1196,7 +1196,7 @@ std::string SheenDecision(const Scene& scene, const std::vector<TableKind>& kind
   const std::string& preset = scene.engine.preset;
   const std::string engine = EngineSheen(preset);
   if (in_channel) {
-    return "engine preset '" + preset + "' serves them from a channel of its own table, over every roughness" +
+    return "engine preset '" + preset + "' serves the sheen from a channel of its own table, over every roughness" +
            (engine.empty() ? "" : " (" + engine + ")") +
            ": no sheen table of its own; that is the engine's visibility, not glTF's conty-kulla one";
   }
@@ -1401,8 +1401,9 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
   }
   // Sheen layers: the charlie tables over their roughness, or the engine's
   // channel.
+  double smin = 1, smax = 0;
+  size_t sheen_decision = 0;
   if (!sheen.empty()) {
-    double smin = 1, smax = 0;
     std::string names;
     for (const SceneMaterial* m : sheen) {
       smin = std::min(smin, m->sheen_roughness_min);
@@ -1412,6 +1413,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     const std::string who = "the sheen layer" + std::string(sheen.size() > 1 ? "s" : "") + " of " + names +
                             " (sheen roughness " + Range(smin, smax) + ")";
     const bool in_channel = SheenInEngineChannel(scene);
+    sheen_decision = plan.decisions.size();
     plan.decisions.push_back(who + ": " + SheenDecision(scene, sheen_kinds, in_channel));
     if (sheen_kinds.empty() && !in_channel) {
       plan.notes.push_back(who + ": the charlie E over (mu, sheen roughness) that glTF's sheen scales the base layer "
@@ -1605,6 +1607,38 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       }
     }
   }
+  // The engine's sheen channel: its lookup error over the sheen roughness,
+  // the channel's table (the Charlie E with the engine's visibility)
+  // baked over the axes of the first planned table that carries it, and
+  // probed as the planned tables are (before the engine's pixel rounding
+  // and any clamp of its layout).
+  if (!sheen.empty() && SheenInEngineChannel(scene)) {
+    const PresetTable& carrier = *SheenChannelTable(*planner.preset());
+    for (const PlannedTable& p : plan.tables) {
+      if (p.spec.table != carrier.spec.table || SlotOf(scene, p.spec.table, p.group, p.spec.Anisotropic()).generic) {
+        continue;
+      }
+      for (const BakeSpec& w : carrier.with) {
+        if (w.model.kind != ModelKind::kCharlie) continue;
+        BakeSpec channel = w;
+        channel.mu = p.table.spec.mu;
+        channel.roughness = p.table.spec.roughness;
+        channel.threads = p.table.spec.threads;
+        ProbeOptions probe;
+        probe.roughness_min = smin;
+        probe.roughness_max = smax;
+        const Table ct = Bake(channel);
+        const double error = LookupError(ct, probe).max_abs_error + ct.integration_error;
+        if (progress) progress("sheen channel of " + p.file + " " + SizeText(ct) + ": lookup error " + Num(error));
+        plan.decisions[sheen_decision] +=
+            "; in " + p.file + " (" + SizeText(ct) + ") the channel's bilinear lookup error over the sheen roughness is " +
+            Num(error) + (error <= target ? ", within" : ", ABOVE") + " the target " + Num(target) +
+            " (before the engine's pixel rounding)";
+        break;
+      }
+      break;
+    }
+  }
   return plan;
 }
 
@@ -1630,8 +1664,12 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
   for (size_t i = 0; i < plan.tables.size(); ++i) {
     const PlannedTable& p = plan.tables[i];
     const Table& t = p.table;
-    os << "table " << i + 1 << ": " << p.file << " (" << TableName(p.spec.table) << ", " << MaskingName(p.spec.masking)
-       << "), " << p.why << "\n";
+    // The sheen has a visibility term, not a masking variant.
+    const std::string shape = p.spec.model.kind == ModelKind::kCharlie
+                                  ? std::string(SheenVisibilityName(p.spec.model.visibility)) + " visibility"
+                                  : MaskingName(p.spec.masking);
+    os << "table " << i + 1 << ": " << p.file << " (" << TableName(p.spec.table) << ", " << shape << "), " << p.why
+       << "\n";
     os << "  materials:";
     for (const std::string& m : p.materials) os << " " << Printable(m);
     os << "\n  axes:";
@@ -1730,7 +1768,6 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
     nlohmann::json entry = {{"file", own[i]},
                             {"table", TableName(p.spec.table)},
                             {"model", nlohmann::json::parse(p.table.model_json)},
-                            {"masking", MaskingName(p.spec.masking)},
                             {"materials", p.materials},
                             {"why", p.why},
                             {"axes", axes},
@@ -1740,6 +1777,8 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
                             {"lookup_error", p.total_error},
                             {"meets_target", p.meets_target},
                             {"also", extra[i]}};
+    // The sheen's visibility is in its model; it has no masking variant.
+    if (p.spec.model.kind != ModelKind::kCharlie) entry["masking"] = MaskingName(p.spec.masking);
     if (p.collapse_error > 0) entry["collapse_error"] = p.collapse_error;
     if (p.size_fixed) entry["size_fixed_by_engine"] = true;
     if (!p.hint.empty()) entry["to_meet_the_target"] = p.hint;
