@@ -312,6 +312,41 @@ TEST(SceneSheenTest, EnginePresetsServeTheSheenOrGetBrdfbakesFiles) {
             std::string::npos)
       << fd;
 
+  // Godot, at sizes of the scene's choice: the stated error of its cloth
+  // channel bounds random lookups of that channel (the Charlie E, neubelt,
+  // over the planned dfg's axes) at the sheen roughness.
+  Scene godot = LoadScene(dir + "/s.gltf");
+  ApplySceneOverrides(&godot, {{"--preset", "godot"}, {"--max-size", "16"}});
+  const ScenePlan gp = PlanScene(godot);
+  const std::string gd = Joined(gp.decisions);
+  const std::string says = "the channel's bilinear lookup error over the sheen roughness is ";
+  const size_t at = gd.find(says);
+  ASSERT_NE(at, std::string::npos) << gd;
+  const double stated = std::stod(gd.substr(at + says.size()));
+  const PlannedTable* dfg = Find(gp, "dfg_lut.exr");
+  ASSERT_NE(dfg, nullptr) << PlanText(godot, gp);
+  BakeSpec cloth;
+  cloth.table = TableKind::kE;
+  cloth.model.kind = ModelKind::kCharlie;
+  cloth.model.visibility = SheenVisibility::kNeubelt;
+  cloth.mu = dfg->table.spec.mu;
+  cloth.roughness = dfg->table.spec.roughness;
+  const Table ct = Bake(cloth);
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  double worst = 0;
+  for (int i = 0; i < 600; ++i) {
+    const double mu = i % 2 ? uni(rng) : std::exp(std::log(1e-4) * uni(rng)), r = 0.6 * uni(rng);
+    auto texel = [&](int x, int y) { return double(ct.channels[0].stored[size_t(y) * ct.width + x]); };
+    const double lookup = test::TextureBilinear(texel, cloth.mu.size, cloth.roughness.size,
+                                                test::TextureCoordinate(cloth.mu, mu),
+                                                test::TextureCoordinate(cloth.roughness, r));
+    worst = std::max(worst, std::abs(lookup - ClampToRange(IntegrateTexel(cloth, r, mu), kInfinity).e));
+  }
+  std::printf("godot's cloth channel (%dx%d): stated lookup error %.3g, random lookups %.3g\n", ct.width, ct.height,
+              stated, worst);
+  EXPECT_LE(worst, stated * (1 + 1e-3));  // the decision prints 4 digits
+
   Scene bevy = LoadScene(dir + "/s.gltf");
   ApplySceneOverrides(&bevy, {{"--preset", "bevy"}, {"--error-target", "1e-2"}, {"--max-size", "16"}});
   const ScenePlan bp = PlanScene(bevy);
