@@ -34,9 +34,17 @@ struct SceneMaterial {
   // its own roughness; clearcoat = 0 is no layer.
   double clearcoat = 0;
   double clearcoat_roughness_min = 0, clearcoat_roughness_max = 0;
+  // A sheen layer (glTF KHR_materials_sheen with a sheen colour above 0,
+  // TOML sheen_roughness): the Charlie NDF with the conty-kulla visibility
+  // at its own roughness (alpha = r^2), which scales the base layer by
+  // 1 - max(sheenColor) E(NoV, r). A sheenRoughnessTexture modulates the
+  // factor over [0, factor].
+  bool sheen = false;
+  double sheen_roughness_min = 0, sheen_roughness_max = 0;
   std::string source;  // "toml" or "glTF material 3"
   // Features brdfbake recognises but does not bake tables for (glTF
-  // extensions), each with the table it would need.
+  // extensions), each with what it would need and why it is not baked
+  // ("needs ..., which brdfbake does not bake yet").
   std::vector<std::pair<std::string, std::string>> unsupported;
 };
 
@@ -106,7 +114,7 @@ struct PlannedTable {
 
 struct ScenePlan {
   std::vector<PlannedTable> tables;
-  // How anisotropic and clearcoat materials are served, and why.
+  // How anisotropic, clearcoat and sheen materials are served, and why.
   std::vector<std::string> decisions;
   std::vector<std::string> notes;  // materials or features not baked, and why
 };
@@ -115,8 +123,9 @@ struct ScenePlan {
 // bilinear lookup meets the error target. Anisotropic GGX groups get the
 // smaller of the 4D ggx-aniso tables over their (r, s) box and the
 // isotropic tables looked up at the collapsed roughness that meets the
-// target; clearcoat layers the isotropic GGX tables. `progress` gets one
-// line per candidate tried.
+// target; clearcoat layers the isotropic GGX tables; sheen layers the
+// charlie (conty-kulla) E and E_avg over their sheen roughness, or the
+// engine's own sheen channel. `progress` gets one line per candidate tried.
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress = nullptr);
 
 // The files a bake of `scene` may write into `dir` (each table's file, its

@@ -163,14 +163,18 @@ std::vector<double> ExactTableValues(const Table& t, const std::vector<double>& 
     one.gamma.size = 0;
     one.model.gamma = value("gamma", s.model.gamma);
   }
+  // The stored range: [0, 1], or unbounded above for the lobes that do
+  // not conserve energy (charlie, disney-diffuse: StoredEMax), as the bake
+  // stores them.
+  const double e_max = StoredEMax(s);
   if (s.table == TableKind::kEavg) {
     one.table = TableKind::kE;
-    const double v = std::clamp(IntegrateEavg(one, r).value, 0.0, 1.0);
+    const double v = std::clamp(IntegrateEavg(one, r).value, 0.0, e_max);
     out.push_back(s.complement ? 1 - v : v);
     return out;
   }
   const double mu = std::max(value("mu", s.mu.min), s.mu.clamp_min);
-  const TexelEstimate v = ClampToRange(IntegrateTexel(one, r, mu));
+  const TexelEstimate v = ClampToRange(IntegrateTexel(one, r, mu), e_max);
   if (s.table == TableKind::kE) {
     out.push_back(s.complement ? 1 - v.e : v.e);
   } else {

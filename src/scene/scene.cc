@@ -114,6 +114,20 @@ Masking MaskingOf(const Fields& f) {
   f.Fail("masking", "'" + Excerpt(m) + "' is not height-correlated or separable");
 }
 
+// A roughness field: a number in [0, 1], or a range [min, max] within it.
+void RoughnessRange(const Fields& f, const std::string& field, double* lo, double* hi) {
+  const toml::node* r = f.t.get(field);
+  if (r->is_array()) {
+    const toml::array& a = *r->as_array();
+    if (a.size() != 2 || !a[0].is_number() || !a[1].is_number()) f.Fail(field, "a range is two numbers [min, max]");
+    *lo = a[0].value<double>().value() + 0.0;  // -0 as 0
+    *hi = a[1].value<double>().value() + 0.0;
+    if (!(*lo >= 0 && *lo <= *hi && *hi <= 1)) f.Fail(field, "the range must satisfy 0 <= min <= max <= 1");
+  } else {
+    *lo = *hi = f.Number(field, 0.5, 0, 1, true);
+  }
+}
+
 std::string ReadBytes(const std::string& path, size_t limit = std::string::npos);
 
 // toml++ bounds the nesting of values (arrays, inline tables) at 256 levels,
@@ -257,7 +271,7 @@ Scene LoadToml(const std::string& path) {
     std::string name = "#" + std::to_string(index);
     if (const toml::node* n = mt.get("name"); n && n->is_string()) name = std::string(**n->as_string());
     const Fields f{mt, path + ": material '" + Excerpt(name) + "'"};
-    f.OnlyKnown({"name", "model", "roughness", "gamma", "anisotropy", "masking"});
+    f.OnlyKnown({"name", "model", "roughness", "gamma", "anisotropy", "masking", "sheen_roughness"});
     SceneMaterial mat;
     mat.name = f.String("name", "", true);
     if (mat.name.empty()) f.Fail("name", "must not be empty");
@@ -269,20 +283,16 @@ Scene LoadToml(const std::string& path) {
     }
     mat.model = ParseModelKind(model);
     if (!ModelBuilt(mat.model)) f.Fail("model", "'" + model + "' is not in this build (BRDFBAKE_MODELS)");
-    const toml::node* r = mt.get("roughness");
-    if (!r) f.Fail("roughness", "missing (a number in [0, 1] or a range [min, max])");
-    if (r->is_array()) {
-      const toml::array& a = *r->as_array();
-      if (a.size() != 2 || !a[0].is_number() || !a[1].is_number()) {
-        f.Fail("roughness", "a range is two numbers [min, max]");
+    if (!f.Has("roughness")) f.Fail("roughness", "missing (a number in [0, 1] or a range [min, max])");
+    RoughnessRange(f, "roughness", &mat.roughness_min, &mat.roughness_max);
+    if (f.Has("sheen_roughness")) {
+      // A sheen layer over the base (glTF's KHR_materials_sheen): the
+      // charlie model's tables over its roughness.
+      if (!ModelBuilt(ModelKind::kCharlie)) {
+        f.Fail("sheen_roughness", "a sheen layer needs the charlie model, which is not in this build (BRDFBAKE_MODELS)");
       }
-      mat.roughness_min = a[0].value<double>().value() + 0.0;  // -0 as 0
-      mat.roughness_max = a[1].value<double>().value() + 0.0;
-      if (!(mat.roughness_min >= 0 && mat.roughness_min <= mat.roughness_max && mat.roughness_max <= 1)) {
-        f.Fail("roughness", "the range must satisfy 0 <= min <= max <= 1");
-      }
-    } else {
-      mat.roughness_min = mat.roughness_max = f.Number("roughness", 0.5, 0, 1, true);
+      mat.sheen = true;
+      RoughnessRange(f, "sheen_roughness", &mat.sheen_roughness_min, &mat.sheen_roughness_max);
     }
     if (mat.model == ModelKind::kStudentT) {
       const toml::node* g = mt.get("gamma");
@@ -535,9 +545,53 @@ Scene LoadGltf(const std::string& path) {
       } else if (name_ext == "KHR_materials_ior" || name_ext == "KHR_materials_specular") {
         // The F0 and F90 these set weight the split-sum terms: dfg covers them.
       } else if (name_ext == "KHR_materials_transmission") {
-        mat.unsupported.push_back({name_ext, "a transmission (BTDF) albedo table over roughness and IOR"});
+        mat.unsupported.push_back(
+            {name_ext, "needs a transmission (BTDF) albedo table over roughness and IOR, which brdfbake does not bake yet"});
       } else if (name_ext == "KHR_materials_sheen") {
-        mat.unsupported.push_back({name_ext, "a sheen (Charlie NDF) albedo table over roughness"});
+        // The sheen layer: the Charlie NDF, conty-kulla visibility, at
+        // sheenRoughnessFactor (its texture's alpha modulates it over [0,
+        // factor]); a sheenColorFactor of 0 (the default) is no layer.
+        const std::string field = "KHR_materials_sheen.";
+        double colour = 0;
+        if (const auto c = ext.find("sheenColorFactor"); c != ext.end()) {
+          if (!c->is_array() || c->size() != 3) {
+            Bad(where + ": field '" + field + "sheenColorFactor': expected an array of three numbers");
+          }
+          for (size_t k = 0; k < 3; ++k) {
+            const nlohmann::json& v = (*c)[k];
+            if (!v.is_number()) {
+              Bad(where + ": field '" + field + "sheenColorFactor[" + std::to_string(k) + "]': expected a number, got a " +
+                  JsonType(v));
+            }
+            const double x = v.get<double>() + 0.0;
+            if (!(x >= 0 && x <= 1)) {
+              Bad(where + ": field '" + field + "sheenColorFactor[" + std::to_string(k) + "]': " + ExactText(x) +
+                  " is outside [0, 1]");
+            }
+            colour = std::max(colour, x);
+          }
+        }
+        const double rough = number(ext, "sheenRoughnessFactor", field + "sheenRoughnessFactor", 0.0) + 0.0;
+        if (!(rough >= 0 && rough <= 1)) {
+          Bad(where + ": field '" + field + "sheenRoughnessFactor': " + ExactText(rough) + " is outside [0, 1]");
+        }
+        for (const char* key : {"sheenColorTexture", "sheenRoughnessTexture"}) {
+          const auto tex = ext.find(key);
+          if (tex == ext.end()) continue;
+          const auto index = tex->is_object() ? tex->find("index") : tex->end();
+          if (!tex->is_object() || index == tex->end() || !index->is_number_unsigned()) {
+            Bad(where + ": field '" + field + key + "': expected an object with an integer 'index' >= 0");
+          }
+        }
+        if (colour > 0 && !ModelBuilt(ModelKind::kCharlie)) {
+          mat.unsupported.push_back({name_ext,
+                                     "needs the charlie sheen E table over sheen roughness, and this build leaves "
+                                     "the charlie model out (BRDFBAKE_MODELS)"});
+        } else if (colour > 0) {
+          mat.sheen = true;
+          mat.sheen_roughness_max = rough;
+          mat.sheen_roughness_min = ext.contains("sheenRoughnessTexture") ? 0.0 : rough;
+        }
       } else if (name_ext == "KHR_materials_clearcoat") {
         // A GGX layer (IOR 1.5) at its own roughness; a roughness texture
         // modulates the factor over [0, factor].
@@ -562,7 +616,7 @@ Scene LoadGltf(const std::string& path) {
         mat.clearcoat_roughness_max = rough_cc;
         mat.clearcoat_roughness_min = ext.contains("clearcoatRoughnessTexture") ? 0.0 : rough_cc;
       } else {
-        mat.unsupported.push_back({name_ext, "an extension brdfbake does not know"});
+        mat.unsupported.push_back({name_ext, "an extension brdfbake does not know: not baked"});
       }
     }
     s.materials.push_back(mat);
@@ -611,10 +665,41 @@ const char* ExtensionOf(Container c) {
   return ".exr";
 }
 
-// The preset's table of a kind, or nullptr.
-const PresetTable* EngineTable(const Preset& preset, TableKind kind) {
+// The group of a scene's sheen layers: the Charlie NDF with the
+// conty-kulla visibility (glTF's KHR_materials_sheen, as the Khronos sample
+// renderer's V_Sheen shades it).
+constexpr const char* kSheenGroup = "charlie";
+// The smallest NoV at which the sheen's E is evaluated (IsoBase).
+constexpr double kSheenMinNoV = 1e-4;
+
+// The model of the engine table a group is written through: the engine's
+// GGX table serves every microfacet group (renamed for the others), its
+// sheen table (if it ships one) the sheen group.
+ModelKind EngineModel(ModelKind group_model) {
+  return group_model == ModelKind::kCharlie ? ModelKind::kCharlie : ModelKind::kGgx;
+}
+ModelKind EngineModel(const std::string& group) {
+  return group == kSheenGroup ? ModelKind::kCharlie : ModelKind::kGgx;
+}
+
+// The preset's table of a kind for the engine's model: GGX, or the Charlie
+// sheen with the conty-kulla visibility; nullptr if it has none.
+const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx) {
   for (const PresetTable& pt : preset.tables) {
-    if (pt.spec.table == kind) return &pt;
+    if (pt.spec.table != kind || pt.spec.model.kind != model) continue;
+    if (model == ModelKind::kCharlie && pt.spec.model.visibility != SheenVisibility::kContyKulla) continue;
+    return &pt;
+  }
+  return nullptr;
+}
+
+// The preset's table whose layout carries the Charlie sheen E in a channel
+// of its own (Filament's and Godot's cloth, MaterialX's sheen), or nullptr.
+const PresetTable* SheenChannelTable(const Preset& preset) {
+  for (const PresetTable& pt : preset.tables) {
+    for (const BakeSpec& w : pt.with) {
+      if (w.model.kind == ModelKind::kCharlie) return &pt;
+    }
   }
   return nullptr;
 }
@@ -641,13 +726,52 @@ std::vector<TableKind> SceneKinds(const Scene& scene) {
   return kinds;
 }
 
+bool HasSheen(const Scene& scene) {
+  return std::any_of(scene.materials.begin(), scene.materials.end(), [](const SceneMaterial& m) { return m.sheen; });
+}
+
+// Whether the engine's own table carries the sheen: a channel of a table
+// the scene bakes holds the Charlie E over every roughness.
+bool SheenInEngineChannel(const Scene& scene) {
+  if (scene.engine.preset.empty()) return false;
+  const PresetTable* pt = SheenChannelTable(FindPreset(scene.engine.preset));
+  if (!pt) return false;
+  const std::vector<TableKind> kinds = SceneKinds(scene);
+  return std::find(kinds.begin(), kinds.end(), pt->spec.table) != kinds.end();
+}
+
+// The sheen group's table kinds: E and E_avg among the scene's tables (the
+// conty-kulla E is what glTF's sheen scales the base layer by, E_avg what
+// energy-compensation schemes use; the sheen has no Fresnel factor, so no
+// dfg). Under a preset they are the engine's own sheen tables, or
+// brdfbake's own files where it has none; none when a channel of the
+// engine's table carries the sheen.
+std::vector<TableKind> SheenKinds(const Scene& scene) {
+  std::vector<TableKind> kinds;
+  if (!HasSheen(scene) || SheenInEngineChannel(scene)) return kinds;
+  for (TableKind k : scene.engine.tables) {
+    if (k == TableKind::kE || k == TableKind::kEavg) kinds.push_back(k);
+  }
+  return kinds;
+}
+
 // One table slot of a plan: its kind and material group; `generic` when
-// the engine has no layout for it (the ggx-aniso tables under a preset).
+// the engine has no layout for it (the ggx-aniso tables under a preset,
+// and the sheen tables of an engine without a sheen table).
 struct Slot {
   TableKind kind;
   std::string group;
   bool generic = false;
 };
+
+// The slot of a planned table of `group`.
+Slot SlotOf(const Scene& scene, TableKind kind, const std::string& group, bool anisotropic) {
+  bool generic = anisotropic;
+  if (group == kSheenGroup && !scene.engine.preset.empty()) {
+    generic = !EngineTable(FindPreset(scene.engine.preset), kind, ModelKind::kCharlie);
+  }
+  return {kind, group, generic};
+}
 
 // The file name of a slot without a preset: E_ggx.exr.
 std::string TableFile(const Scene& scene, const Slot& slot) {
@@ -672,10 +796,11 @@ Preset ScenePreset(const Scene& scene, const std::vector<Slot>& slots, const std
   for (size_t i = 0; i < slots.size(); ++i) {
     const Slot& slot = slots[i];
     PresetTable t;
-    const PresetTable* et = slot.generic ? nullptr : EngineTable(engine, slot.kind);
+    const ModelKind model = EngineModel(slot.group);
+    const PresetTable* et = slot.generic ? nullptr : EngineTable(engine, slot.kind, model);
     if (et) {
       t = *et;
-      if (slot.group != "ggx") {
+      if (slot.group != (model == ModelKind::kCharlie ? kSheenGroup : "ggx")) {
         if (!t.file.empty()) {
           const std::filesystem::path f(t.file);
           t.file = f.stem().string() + "_" + slot.group + f.extension().string();
@@ -835,27 +960,41 @@ class Planner {
     if (!scene.engine.preset.empty()) preset_ = &FindPreset(scene.engine.preset);
   }
 
+  // The engine's table of `kind` for a group of `model` (nullptr without
+  // a preset, or when the engine has none: brdfbake's own file).
+  const PresetTable* Engine(TableKind kind, ModelKind model) const {
+    return preset_ ? EngineTable(*preset_, kind, EngineModel(model)) : nullptr;
+  }
+
   // The spec of an isotropic table of `kind` for the group `model`,
-  // roughness [rmin, rmax] (before its size is chosen).
+  // roughness [rmin, rmax] (before its size is chosen). A table without
+  // the engine's layout under a preset is float, at texel centres, as the
+  // 4D anisotropic tables.
   BakeSpec IsoBase(TableKind kind, const SceneMaterial& model, double rmin, double rmax) const {
+    const PresetTable* et = Engine(kind, model.model);
     BakeSpec base;
-    if (preset_) base = EngineTable(*preset_, kind)->spec;  // the engine's axes, placement, warps, clamps
+    if (et) base = et->spec;  // the engine's axes, placement, warps, clamps
     base.table = kind;
     base.model.kind = model.model == ModelKind::kGgxAniso ? ModelKind::kGgx : model.model;
     base.model.gamma = model.model == ModelKind::kStudentT ? model.gamma : 2.0;
     base.masking = model.masking;
-    if (preset_) return base;
-    base.half = scene_.engine.pixel == PixelType::kHalf;
-    base.complement = scene_.engine.complement && kind != TableKind::kDfg;
-    base.mu.placement = base.roughness.placement = scene_.engine.placement;
+    if (et) return base;
+    base.half = !preset_ && scene_.engine.pixel == PixelType::kHalf;
+    base.complement = !preset_ && scene_.engine.complement && kind != TableKind::kDfg;
+    base.mu.placement = base.roughness.placement = preset_ ? Placement::kCenters : scene_.engine.placement;
     base.roughness.min = rmin;
     base.roughness.max = rmax;
+    // The Charlie sheen's E (conty-kulla) keeps growing below NoV = 1e-4
+    // (at r = 0.7: 0.71 at 1e-4, 1.23 at 1e-6, 2.9 at 1e-8), a layer no
+    // table resolves: its texels and its probe take NoV at least 1e-4,
+    // where engines clamp NoV, and the file's mu axis says so (clamp_min).
+    if (base.model.kind == ModelKind::kCharlie && kind != TableKind::kEavg) base.mu.clamp_min = kSheenMinNoV;
     return base;
   }
 
-  LayoutOf IsoLayout(TableKind kind) const {
-    if (preset_) {
-      const ImageLayout l = EngineTable(*preset_, kind)->layout;
+  LayoutOf IsoLayout(TableKind kind, ModelKind model) const {
+    if (const PresetTable* et = Engine(kind, model)) {
+      const ImageLayout l = et->layout;
       return [l](const Table&) { return l; };
     }
     return GenericLayout();
@@ -869,8 +1008,9 @@ class Planner {
     };
   }
 
-  bool IsoSizeFixed(TableKind kind) const {
-    return preset_ && EngineFixesSize(*preset_, *EngineTable(*preset_, kind));
+  bool IsoSizeFixed(TableKind kind, ModelKind model) const {
+    const PresetTable* et = Engine(kind, model);
+    return et && EngineFixesSize(*preset_, *et);
   }
 
   // The ladder of an isotropic table: sizes 2, 4, ... up to the limit per
@@ -881,12 +1021,15 @@ class Planner {
   PlannedTable PlanIso(const BakeSpec& base, double rmin, double rmax, double collapse, const std::string& label,
                        bool with_hint) const {
     const TableKind kind = base.table;
+    const ModelKind model = base.model.kind;
+    const bool sheen = model == ModelKind::kCharlie;
+    const bool engine = Engine(kind, model) != nullptr;  // the engine's layout and axes
     const double target = scene_.engine.error_target;
-    const bool one_r = !preset_ && base.roughness.min == base.roughness.max;
-    const bool fixed = IsoSizeFixed(kind);
+    const bool one_r = !engine && base.roughness.min == base.roughness.max;
+    const bool fixed = IsoSizeFixed(kind, model);
     std::vector<Warp> warps = {Warp::kLinear, Warp::kSquare};
     if (kind == TableKind::kEavg) warps = {Warp::kLinear};
-    if (preset_) warps = {base.mu.warp};
+    if (engine) warps = {base.mu.warp};
     auto make = [&](const Rung& rung) {
       BakeSpec spec = base;
       if (fixed) return spec;
@@ -897,27 +1040,28 @@ class Planner {
       return spec;
     };
     ProbeOptions probe;
-    if (preset_) {
+    if (engine) {
       probe.roughness_min = rmin;
       probe.roughness_max = rmax;
     }
     const std::vector<Rung> rungs =
         fixed ? std::vector<Rung>{{base.mu.size, base.mu.warp}} : Rungs(Doublings(2, scene_.engine.max_lut_size), warps);
     const bool single = kind == TableKind::kEavg && one_r;  // one value: nothing to refine
-    PlannedTable p = Climb(single ? std::vector<Rung>{rungs.front()} : rungs, make, IsoLayout(kind), probe, collapse,
-                           target, label, progress_);
+    PlannedTable p = Climb(single ? std::vector<Rung>{rungs.front()} : rungs, make, IsoLayout(kind, model), probe,
+                           collapse, target, label, progress_);
     p.size_fixed = fixed;
     // A roughness axis across the mirror cut (alpha = 1e-4, r = 0.01: E
     // jumps to 1 below it) is never resolved by interpolation, whatever the
-    // size; a range that starts at the cut is.
+    // size; a range that starts at the cut is. The Charlie sheen has no
+    // such cut: its lobe narrows smoothly towards the grazing ring.
     const double cut = std::sqrt(kMinAlpha<double>);
-    const bool crosses = kind != TableKind::kSelNorm && rmin < rmax && rmin < cut && rmax > cut;
+    const bool crosses = kind != TableKind::kSelNorm && !sheen && rmin < rmax && rmin < cut && rmax > cut;
     std::string prefix;
     if (!p.meets_target && with_hint && collapse >= target) {
       p.hint = "the collapse alone (" + Num(collapse) + ") is above the target: no table size meets it";
       return p;
     }
-    if (!p.meets_target && with_hint && !single && crosses && preset_) {
+    if (!p.meets_target && with_hint && !single && crosses && engine) {
       p.hint = "the materials' roughness crosses the mirror cut (r = 0.01, where E jumps to 1), which no size resolves";
       return p;
     }
@@ -929,9 +1073,12 @@ class Planner {
     }
     if (!p.meets_target && with_hint && !single) {
       // The smallest size (and warp) beyond the limit that would meet the
-      // target, up to 4 times the limit and at most 1024 per axis.
+      // target, up to 4 times the limit and at most 1024 per axis (the
+      // Charlie sheen over a roughness range, slower to bake: twice the
+      // limit, at most 256).
       const int from = crosses ? 2 : fixed ? 2 : 2 * scene_.engine.max_lut_size;
-      const int to = std::min(1024, 4 * std::max(scene_.engine.max_lut_size, fixed ? base.mu.size : 0));
+      const int reach = std::max(scene_.engine.max_lut_size, fixed ? base.mu.size : 0);
+      const int to = sheen && !one_r ? std::min(256, 2 * reach) : std::min(1024, 4 * reach);
       auto beyond = [&](const Rung& rung) {
         BakeSpec spec = hint_base;
         spec.mu.size = rung.n;
@@ -944,8 +1091,8 @@ class Planner {
       for (const Rung& r : Rungs(Doublings(from, to), warps)) {
         if (crosses || !fixed || r.n != base.mu.size) more.push_back(r);
       }
-      const PlannedTable h = Climb(more, beyond, IsoLayout(kind), probe, collapse, target, label + " (beyond the limit)",
-                                   progress_);
+      const PlannedTable h = Climb(more, beyond, IsoLayout(kind, model), probe, collapse, target,
+                                   label + " (beyond the limit)", progress_);
       if (h.meets_target) {
         p.hint = prefix + SizeText(h.table) + (kind == TableKind::kEavg ? "" : std::string(", mu warp ") + WarpName(h.spec.mu.warp)) +
                  " would meet it (lookup error " + Num(h.total_error) + ")";
@@ -1023,6 +1170,63 @@ struct Member {
 };
 
 std::string Range(double lo, double hi) { return lo == hi ? Num(lo) : "[" + Num(lo) + ", " + Num(hi) + "]"; }
+
+// What an engine does with a sheen layer, where brdfbake knows it
+// (docs/engines.md): empty for the others.
+std::string EngineSheen(const std::string& preset) {
+  if (preset == "filament") {
+    return "Filament's lit model shades sheen (sheenColor, sheenRoughness) with the Charlie NDF and the neubelt "
+           "visibility and reads its E from the cloth channel (B) of dfg.inc, for the sheen's image-based light and "
+           "for the base layer's scaling 1 - max(sheenColor) E";
+  }
+  if (preset == "godot") {
+    return "Godot's DFG carries the Charlie E with the neubelt visibility (its cloth term) in the B channel";
+  }
+  if (preset == "materialx") {
+    return "MaterialX's sheen_bsdf (mx_imageworks_sheen_brdf) reads the sheen albedo, the Charlie E with the "
+           "neubelt visibility clamped at 1, from the B channel of its albedo table and scales the layer beneath by "
+           "1 - albedo";
+  }
+  if (preset == "enterprise-pbr") return "Enterprise PBR's pbrlut.hpp declares a Sheen_E table, which its preset does not bake";
+  return "";
+}
+
+// How a scene's sheen layers are served: by a channel of the engine's own
+// table, by the engine's sheen tables, or by brdfbake's charlie tables.
+std::string SheenDecision(const Scene& scene, const std::vector<TableKind>& kinds, bool in_channel) {
+  const std::string& preset = scene.engine.preset;
+  const std::string engine = EngineSheen(preset);
+  if (in_channel) {
+    return "engine preset '" + preset + "' serves the sheen from a channel of its own table, over every roughness" +
+           (engine.empty() ? "" : " (" + engine + ")") +
+           ": no sheen table of its own; that is the engine's visibility, not glTF's conty-kulla one";
+  }
+  std::string tables;
+  for (TableKind k : kinds) {
+    tables += std::string(tables.empty() ? "" : " and ") +
+              (k == TableKind::kE ? "the charlie E over (mu, sheen roughness), by which glTF scales the base layer "
+                                    "(1 - max(sheenColor) E, looked up at the view and at the light)"
+                                  : "the charlie E_avg over sheen roughness, for energy-compensation schemes");
+  }
+  std::string s = "the Charlie NDF with the conty-kulla visibility, as glTF's KHR_materials_sheen and the Khronos "
+                  "sample renderer (V_Sheen) shade it; its Fresnel factor is 1 (sheenColor tints it), so no dfg";
+  if (kinds.empty()) return s + "; the engine samples no E or E_avg table, so no sheen table is baked";
+  s += ": " + tables;
+  if (!preset.empty()) {
+    std::vector<TableKind> own;
+    for (TableKind k : kinds) {
+      if (EngineTable(FindPreset(preset), k, ModelKind::kCharlie)) own.push_back(k);
+    }
+    if (own.size() == kinds.size()) {
+      s += ", in engine preset '" + preset + "''s own sheen layout";
+    } else {
+      s += "; engine preset '" + preset + "' has no " + (own.empty() ? "sheen table" : "sheen E_avg table") +
+           (engine.empty() ? "" : " (" + engine + ")") + ": " + (own.empty() ? "they go" : "E_avg goes") +
+           " out as brdfbake's own EXR files, for a sheen lobe in its shaders";
+    }
+  }
+  return s;
+}
 
 }  // namespace
 
@@ -1120,11 +1324,13 @@ std::vector<Slot> PossibleSlots(const Scene& scene) {
     if (m.model == ModelKind::kGgxAniso) groups[IsoKey(m.masking)] = false;
     if (m.clearcoat > 0) groups["ggx"] = false;
   }
+  const std::vector<TableKind> sheen_kinds = SheenKinds(scene);
+  if (!sheen_kinds.empty()) groups[kSheenGroup] = false;
   std::vector<Slot> slots;
   for (const auto& [group, aniso] : groups) {
-    for (TableKind k : kinds) {
+    for (TableKind k : group == kSheenGroup ? sheen_kinds : kinds) {
       if (aniso && k == TableKind::kDfg) continue;
-      slots.push_back({k, group, aniso});
+      slots.push_back(SlotOf(scene, k, group, aniso));
     }
   }
   return slots;
@@ -1142,11 +1348,15 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
   const std::vector<TableKind> kinds = SceneKinds(scene);
   const double target = scene.engine.error_target;
   auto wants = [&](TableKind k) { return std::find(kinds.begin(), kinds.end(), k) != kinds.end(); };
+  const std::vector<TableKind> sheen_kinds = SheenKinds(scene);
   if (planner.preset()) {
     for (TableKind k : scene.engine.tables) {
       if (!wants(k)) {
+        const bool sheen_k = std::find(sheen_kinds.begin(), sheen_kinds.end(), k) != sheen_kinds.end();
         plan.notes.push_back(std::string(TableName(k)) + " tables: engine preset '" + scene.engine.preset +
-                             "' samples none (only its own tables are baked)");
+                             "' samples none (only its own tables are baked" +
+                             (sheen_k ? std::string("; the sheen layers' charlie ") + TableName(k) + " aside" : "") +
+                             ")");
       }
     }
   }
@@ -1154,10 +1364,19 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
   std::map<std::string, std::map<TableKind, std::vector<Member>>> iso;
   std::map<std::string, SceneMaterial> model_of;
   std::map<std::string, std::vector<const SceneMaterial*>> aniso;
+  std::vector<const SceneMaterial*> sheen;
   for (const SceneMaterial& m : scene.materials) {
+    if (m.sheen) {
+      sheen.push_back(&m);
+      SceneMaterial charlie;
+      charlie.model = ModelKind::kCharlie;  // the conty-kulla visibility
+      model_of.emplace(kSheenGroup, charlie);
+      for (TableKind k : sheen_kinds) {
+        iso[kSheenGroup][k].push_back({m.name + " (sheen)", m.sheen_roughness_min, m.sheen_roughness_max, 0, "sheen"});
+      }
+    }
     for (const auto& u : m.unsupported) {
-      plan.notes.push_back("material '" + Printable(m.name) + "' (" + u.first + "): needs " + u.second +
-                           ", which brdfbake does not bake yet");
+      plan.notes.push_back("material '" + Printable(m.name) + "' (" + u.first + "): " + u.second);
     }
     if (m.clearcoat > 0) {
       SceneMaterial cc;
@@ -1180,6 +1399,27 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     }
     model_of.emplace(GroupKey(m), m);
     for (TableKind k : kinds) iso[GroupKey(m)][k].push_back({m.name, m.roughness_min, m.roughness_max, 0, ""});
+  }
+  // Sheen layers: the charlie tables over their roughness, or the engine's
+  // channel.
+  double smin = 1, smax = 0;
+  size_t sheen_decision = 0;
+  if (!sheen.empty()) {
+    std::string names;
+    for (const SceneMaterial* m : sheen) {
+      smin = std::min(smin, m->sheen_roughness_min);
+      smax = std::max(smax, m->sheen_roughness_max);
+      names += (names.empty() ? "'" : ", '") + Printable(m->name) + "'";
+    }
+    const std::string who = "the sheen layer" + std::string(sheen.size() > 1 ? "s" : "") + " of " + names +
+                            " (sheen roughness " + Range(smin, smax) + ")";
+    const bool in_channel = SheenInEngineChannel(scene);
+    sheen_decision = plan.decisions.size();
+    plan.decisions.push_back(who + ": " + SheenDecision(scene, sheen_kinds, in_channel));
+    if (sheen_kinds.empty() && !in_channel) {
+      plan.notes.push_back(who + ": the charlie E over (mu, sheen roughness) that glTF's sheen scales the base layer "
+                                 "by: the engine samples no E or E_avg table (its 'tables')");
+    }
   }
   // Anisotropic groups: the 4D tables over their box, or the isotropic
   // tables at the collapsed roughness, whichever meets the target smaller.
@@ -1304,7 +1544,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
   // name sorts them.
   for (const auto& [group, by_kind] : iso) {
     const SceneMaterial& model = model_of.at(group);
-    for (TableKind kind : kinds) {
+    for (TableKind kind : group == kSheenGroup ? sheen_kinds : kinds) {
       const auto it = by_kind.find(kind);
       if (it == by_kind.end()) continue;
       const std::vector<Member>& ms = it->second;
@@ -1326,10 +1566,21 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       p.materials = names;
       p.group = group;
       p.file = TableFile(scene, {kind, group});
-      p.why = "used by " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") + " with model " + group +
-              ", roughness " + Range(rmin, rmax) + extra;
+      const Slot slot = SlotOf(scene, kind, group, false);
+      if (group == kSheenGroup) {
+        p.why = "used by the sheen layer of " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") +
+                " (the Charlie NDF with the conty-kulla visibility, as glTF's KHR_materials_sheen), sheen roughness " +
+                Range(rmin, rmax) +
+                (kind == TableKind::kE ? "; the base layer under it is scaled by 1 - max(sheenColor) E(NoV, r), E "
+                                         "looked up at the view and at the light"
+                                       : "; E_avg, for energy-compensation schemes");
+        if (slot.generic) p.why += "; engine preset '" + scene.engine.preset + "' has no sheen table: brdfbake's own";
+      } else {
+        p.why = "used by " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") + " with model " +
+                group + ", roughness " + Range(rmin, rmax) + extra;
+      }
       if (p.size_fixed) p.why += "; size fixed by engine preset '" + scene.engine.preset + "'";
-      if (planner.preset()) {
+      if (planner.preset() && !slot.generic) {
         p.why += "; axes as the engine's shader samples them, the lookup error measured over the materials' roughness";
       }
       plan.tables.push_back(std::move(p));
@@ -1343,7 +1594,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     std::vector<Slot> slots;
     std::vector<const PlannedTable*> planned;
     for (const PlannedTable& p : plan.tables) {
-      slots.push_back({p.spec.table, p.group, p.spec.Anisotropic()});
+      slots.push_back(SlotOf(scene, p.spec.table, p.group, p.spec.Anisotropic()));
       planned.push_back(&p);
     }
     const Preset sp = ScenePreset(scene, slots, planned);
@@ -1355,6 +1606,38 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
           if (f.table == int(i) && !f.lookup) plan.tables[i].file = std::filesystem::path(f.path).filename().string();
         }
       }
+    }
+  }
+  // The engine's sheen channel: its lookup error over the sheen roughness,
+  // the channel's table (the Charlie E with the engine's visibility)
+  // baked over the axes of the first planned table that carries it, and
+  // probed as the planned tables are (before the engine's pixel rounding
+  // and any clamp of its layout).
+  if (!sheen.empty() && SheenInEngineChannel(scene)) {
+    const PresetTable& carrier = *SheenChannelTable(*planner.preset());
+    for (const PlannedTable& p : plan.tables) {
+      if (p.spec.table != carrier.spec.table || SlotOf(scene, p.spec.table, p.group, p.spec.Anisotropic()).generic) {
+        continue;
+      }
+      for (const BakeSpec& w : carrier.with) {
+        if (w.model.kind != ModelKind::kCharlie) continue;
+        BakeSpec channel = w;
+        channel.mu = p.table.spec.mu;
+        channel.roughness = p.table.spec.roughness;
+        channel.threads = p.table.spec.threads;
+        ProbeOptions probe;
+        probe.roughness_min = smin;
+        probe.roughness_max = smax;
+        const Table ct = Bake(channel);
+        const double error = LookupError(ct, probe).max_abs_error + ct.integration_error;
+        if (progress) progress("sheen channel of " + p.file + " " + SizeText(ct) + ": lookup error " + Num(error));
+        plan.decisions[sheen_decision] +=
+            "; in " + p.file + " (" + SizeText(ct) + ") the channel's bilinear lookup error over the sheen roughness is " +
+            Num(error) + (error <= target ? ", within" : ", ABOVE") + " the target " + Num(target) +
+            " (before the engine's pixel rounding)";
+        break;
+      }
+      break;
     }
   }
   return plan;
@@ -1382,8 +1665,12 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
   for (size_t i = 0; i < plan.tables.size(); ++i) {
     const PlannedTable& p = plan.tables[i];
     const Table& t = p.table;
-    os << "table " << i + 1 << ": " << p.file << " (" << TableName(p.spec.table) << ", " << MaskingName(p.spec.masking)
-       << "), " << p.why << "\n";
+    // The sheen has a visibility term, not a masking variant.
+    const std::string shape = p.spec.model.kind == ModelKind::kCharlie
+                                  ? std::string(SheenVisibilityName(p.spec.model.visibility)) + " visibility"
+                                  : MaskingName(p.spec.masking);
+    os << "table " << i + 1 << ": " << p.file << " (" << TableName(p.spec.table) << ", " << shape << "), " << p.why
+       << "\n";
     os << "  materials:";
     for (const std::string& m : p.materials) os << " " << Printable(m);
     os << "\n  axes:";
@@ -1408,7 +1695,7 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
   std::vector<Slot> slots;
   std::vector<const PlannedTable*> planned;
   for (const PlannedTable& p : plan.tables) {
-    slots.push_back({p.spec.table, p.group, p.spec.Anisotropic()});
+    slots.push_back(SlotOf(scene, p.spec.table, p.group, p.spec.Anisotropic()));
     planned.push_back(&p);
   }
   const std::vector<std::string> files = FilesOf(scene, slots, dir);
@@ -1482,7 +1769,6 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
     nlohmann::json entry = {{"file", own[i]},
                             {"table", TableName(p.spec.table)},
                             {"model", nlohmann::json::parse(p.table.model_json)},
-                            {"masking", MaskingName(p.spec.masking)},
                             {"materials", p.materials},
                             {"why", p.why},
                             {"axes", axes},
@@ -1492,6 +1778,8 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
                             {"lookup_error", p.total_error},
                             {"meets_target", p.meets_target},
                             {"also", extra[i]}};
+    // The sheen's visibility is in its model; it has no masking variant.
+    if (p.spec.model.kind != ModelKind::kCharlie) entry["masking"] = MaskingName(p.spec.masking);
     if (p.collapse_error > 0) entry["collapse_error"] = p.collapse_error;
     if (p.size_fixed) entry["size_fixed_by_engine"] = true;
     if (!p.hint.empty()) entry["to_meet_the_target"] = p.hint;

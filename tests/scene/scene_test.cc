@@ -83,31 +83,46 @@ TEST(SceneTest, GltfExampleReadsMaterialsAndExtensions) {
   EXPECT_EQ(s.materials[2].roughness_max, 0.7);
   EXPECT_EQ(s.materials[3].model, ModelKind::kGgxAniso);
   EXPECT_EQ(s.materials[3].anisotropy, 0.6);
-  ASSERT_EQ(s.materials[4].unsupported.size(), 1u);
-  EXPECT_EQ(s.materials[4].unsupported[0].first, "KHR_materials_sheen");
+  // KHR_materials_sheen: a sheen layer at its own roughness.
+  EXPECT_TRUE(s.materials[4].sheen);
+  EXPECT_EQ(s.materials[4].sheen_roughness_min, 0.5);
+  EXPECT_EQ(s.materials[4].sheen_roughness_max, 0.5);
+  EXPECT_TRUE(s.materials[4].unsupported.empty());
   // The plan, at a reduced size so that it stays small: isotropic GGX
   // tables over [0, 0.9] for the four isotropic materials; the anisotropic
-  // aluminium gets the tables the planner chose for it, and says why.
+  // aluminium gets the tables the planner chose for it, and says why; the
+  // velvet's sheen the charlie tables at its sheen roughness.
   Scene small = s;
   small.engine.max_lut_size = 16;
   small.engine.tables = {TableKind::kE, TableKind::kEavg};
   const ScenePlan plan = PlanScene(small);
   bool aluminium_served = false;
+  int sheen_tables = 0;
   for (const PlannedTable& p : plan.tables) {
     if (p.spec.model.kind == ModelKind::kGgx) {
       EXPECT_EQ(p.spec.roughness.min, 0.0);
       EXPECT_EQ(p.spec.roughness.max, 0.9);
     }
+    if (p.spec.model.kind == ModelKind::kCharlie) {
+      ++sheen_tables;
+      EXPECT_EQ(p.spec.roughness.min, 0.5);
+      EXPECT_EQ(p.spec.roughness.max, 0.5);
+      EXPECT_EQ(p.materials, std::vector<std::string>{"velvet (sheen)"});
+    }
     for (const std::string& m : p.materials) aluminium_served |= m.rfind("brushed_aluminium", 0) == 0;
   }
   EXPECT_TRUE(aluminium_served);
-  ASSERT_EQ(plan.decisions.size(), 1u);
-  EXPECT_NE(plan.decisions[0].find("brushed_aluminium"), std::string::npos) << plan.decisions[0];
-  EXPECT_NE(plan.decisions[0].find("collapsed roughness"), std::string::npos) << plan.decisions[0];
+  EXPECT_EQ(sheen_tables, 2);  // E and E_avg
+  ASSERT_EQ(plan.decisions.size(), 2u);
+  std::string decisions;
+  for (const std::string& d : plan.decisions) decisions += d + "\n";
+  EXPECT_NE(decisions.find("brushed_aluminium"), std::string::npos) << decisions;
+  EXPECT_NE(decisions.find("collapsed roughness"), std::string::npos) << decisions;
+  EXPECT_NE(decisions.find("the sheen layer of 'velvet'"), std::string::npos) << decisions;
   std::string notes;
   for (const std::string& n : plan.notes) notes += n + "\n";
   EXPECT_EQ(notes.find("brushed_aluminium"), std::string::npos) << notes;
-  EXPECT_NE(notes.find("KHR_materials_sheen"), std::string::npos) << notes;
+  EXPECT_EQ(notes.find("KHR_materials_sheen"), std::string::npos) << notes;
   EXPECT_EQ(notes.find("gold"), std::string::npos) << "KHR_materials_ior is covered by dfg: " << notes;
 }
 
@@ -511,6 +526,9 @@ TEST(SceneTest, FuzzedScenesNeverCrash) {
       ASSERT_FALSE(s.materials.empty());
       for (const SceneMaterial& m : s.materials) {
         ASSERT_TRUE(m.roughness_min >= 0 && m.roughness_min <= m.roughness_max && m.roughness_max <= 1) << path;
+        ASSERT_TRUE(m.sheen_roughness_min >= 0 && m.sheen_roughness_min <= m.sheen_roughness_max &&
+                    m.sheen_roughness_max <= 1)
+            << path;
         ASSERT_FALSE(m.name.empty());
       }
       ++ok;
