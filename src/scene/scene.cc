@@ -1304,6 +1304,9 @@ void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
     if (c == Container::kHeader && e.header) {
       Bad("--format header: the scene writes a header beside each table already (header = true)");
     }
+    // A scene's tables are float, half or unorm16: no png (unorm8 or
+    // unorm16 codes of values that may exceed 1).
+    if (c == Container::kPng) Bad("--format png: a scene's tables are written as exr, header, js, ktx2, dds or inc");
   }
   if (!e.preset.empty() && SceneKinds(*scene).empty()) {
     std::string kinds;

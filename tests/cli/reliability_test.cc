@@ -119,7 +119,7 @@ TEST(OutputFileTest, AnotherUsersFileInAStickyDirectoryIsRefused) {
 TEST(OutputFileTest, ExtensionMustMatch) {
   EXPECT_NO_THROW(CheckOutputExtension("a/b.exr", ".exr", "bake"));
   EXPECT_NO_THROW(CheckOutputExtension("B.EXR", ".exr", "bake"));
-  for (const char* bad : {"dfg.h", "dfg.ktx2", "dfg.dds", "dfg.png", "dfg", "/dev/full"}) {
+  for (const char* bad : {"dfg.h", "dfg.ktx2", "dfg.dds", "dfg.gif", "dfg", "/dev/full"}) {
     EXPECT_THROW(CheckOutputExtension(bad, ".exr", "bake"), std::invalid_argument) << bad;
   }
 }
@@ -487,8 +487,8 @@ TEST(CliReliabilityTest, ControlCharactersInArgumentsAreEscaped) {
       {"bake", "--table", "E", "--model", "g\ngx", "-o", o},
       {"bake", "--table", "E", "--warp", "lin\near", "-o", o},
       {"bake", "--table", "E", "--size", "8\nx8", "-o", o},
-      {"bake", "--table", "E", "-o", dir + "/a\nb.exr.png"},
-      {"bake", "--table", "E", "-o", dir + "/no\ndir/x.png"},
+      {"bake", "--table", "E", "-o", dir + "/a\nb.exr.gif"},
+      {"bake", "--table", "E", "-o", dir + "/no\ndir/x.gif"},
       {"eval", "--quantity", "D\nG1"},
       {"eval", "--fresnel", "one\r\x1b[2J"},
       {"eval", "--no-such\nflag"},
@@ -555,7 +555,7 @@ TEST(CliReliabilityTest, AcceptedButIgnoredOptionsAreRejected) {
       {{"bake", "--table", "E", "--warp", "square,roughness=sqrt", "-o", o}, "twice"},
       {{"bake", "--table", "E", "--range", "mu=0:1,mu=0.5:1", "-o", o}, "twice"},
       {{"bake", "--table", "E", "--integrator", "qmc", "--tolerance", "1e-3", "-o", o}, "--tolerance"},
-      {{"bake", "--table", "dfg", "-o", dir + "/dfg.png"}, ".png"},
+      {{"bake", "--table", "dfg", "-o", dir + "/dfg.gif"}, ".gif"},
       {{"bake", "--table", "dfg", "-o", dir + "/dfg"}, "no extension"},
       {{"bake", "--table", "dfg", "--format", "ktx2", "-o", dir + "/dfg.dds"}, "does not name"},
       {{"bake", "--table", "dfg", "--pixel", "unorm16", "-o", dir + "/dfg.exr"}, "unorm16"},

@@ -323,6 +323,7 @@ TEST(ScenePresetTest, OverridesAndEnginesAreChecked) {
   ExpectOverrideRejected(s, {{"--error-target", "nan"}}, "--error-target: 'nan' is outside");
   ExpectOverrideRejected(s, {{"--preset", "ue4"}}, "did you mean 'unreal'");
   ExpectOverrideRejected(s, {{"--format", "header"}}, "header = true");
+  ExpectOverrideRejected(s, {{"--format", "gif"}}, "gif");
   ExpectOverrideRejected(s, {{"--format", "png"}}, "png");
   ExpectOverrideRejected(s, {{"--shader", "glsl,glsl"}}, "given twice");
   ExpectOverrideRejected(s, {{"--preset", "bevy"}, {"--format", "js"}}, "bevy loads its dfg table as");
