@@ -135,6 +135,30 @@ TEST(SheenAlbedoTest, CharlieAgreesWithIndependentIntegration) {
   }
 }
 
+// Over a grid of texels (edges, 24 x 24, as a table places them), the rule
+// at the table's tolerance against itself converged (1e-11): the claim
+// bounds the difference everywhere, both visibilities. (Features of J
+// between the first mesh's cuts, such as the arc ceasing to be the whole
+// circle, once hid from both Gauss-Kronrod rules of a piece.)
+TEST(SheenAlbedoTest, CharlieClaimsBoundTheErrorOverAGrid) {
+  for (SheenVisibility vis : {SheenVisibility::kNeubelt, SheenVisibility::kContyKulla}) {
+    double worst = 0;
+    for (int j = 0; j < 24; ++j) {
+      const double r = j / 23.0;
+      const CharlieSheen<double> s(r * r, vis);
+      for (int i = 0; i < 24; ++i) {
+        const double mu = std::max(i / 23.0, 1e-7);
+        const RuleResult a = SimdCharlieAlbedo(r * r, vis, mu, 1e-7, 32);
+        const RuleResult b = CharlieAlbedo(s, mu, 1e-11, 4096);
+        const double d = std::abs(a.value - b.value);
+        worst = std::max(worst, d / (a.error + b.error));
+        EXPECT_LE(d, a.error + b.error) << SheenVisibilityName(vis) << " r " << r << " mu " << mu;
+      }
+    }
+    std::printf("charlie %s grid: max |E(1e-7) - E(1e-11)| / claims %.3g\n", SheenVisibilityName(vis), worst);
+  }
+}
+
 // The Disney lobe: E in closed azimuth (exact Gauss-Legendre) against the
 // product integral over (x, phi) of the BRDF itself, and E_avg against the
 // integral of that.

@@ -182,16 +182,37 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // view to sqrt(mu / theta_max): within about mu of theta_max the arc's
   // end moves at the rate 1 / cos(theta_h) (its cos(phi_max) holds mu /
   // (2 cos(theta_h))).
-  std::vector<GkPiece> pieces;
+  // The mesh is also cut where the arc stops being the whole circle: NoL
+  // at phi_h = pi is cos(2 theta_h + theta_o), zero at theta_full = pi/4 -
+  // theta_o/2, and J changes form there (its arc's ends appear).
   const double finest = std::min(std::sqrt(std::min(0.25, std::tan(theta_max) / (2 * q * theta_max))),
                                  std::sqrt(mu / theta_max));
-  double edge = 0.5;
-  pieces.push_back(piece(edge, 1.0));
-  while (edge > 4 * finest && pieces.size() < 24) {
-    pieces.push_back(piece(0.25 * edge, edge));
+  std::vector<double> cuts = {1.0, 0.5};
+  for (double edge = 0.5; edge > 4 * finest && cuts.size() < 24;) {
     edge *= 0.25;
+    cuts.push_back(edge);
   }
-  pieces.push_back(piece(0.0, edge));
+  cuts.push_back(0.0);
+  const double theta_o = std::acos(mu);
+  std::vector<double> theta_cuts = {0.25 * kPi<double> - 0.5 * theta_o};
+  if (ck) {
+    // And where the arc's NoL range first reaches 1 (theta_h = theta_o /
+    // 2: wi at the normal, where Lambda holds (1 - NoL)^p) or passes 1/2
+    // (Lambda's change of branch): NoL spans cos(2 theta_h + theta_o) to
+    // cos(2 theta_h - theta_o).
+    const double third = kPi<double> / 3;
+    for (double t : {0.5 * theta_o, 0.5 * (theta_o + third), 0.5 * (theta_o - third), 0.5 * (third - theta_o)}) {
+      theta_cuts.push_back(t);
+    }
+  }
+  for (double t : theta_cuts) {
+    if (t > 0 && t < theta_max) cuts.push_back(std::sqrt(1 - t / theta_max));
+  }
+  std::sort(cuts.begin(), cuts.end());
+  std::vector<GkPiece> pieces;
+  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
+    if (cuts[k + 1] > cuts[k]) pieces.push_back(piece(cuts[k], cuts[k + 1]));
+  }
   auto totals = [&](double* rule, double* inner) {
     *rule = *inner = 0;
     for (const GkPiece& p : pieces) {
