@@ -28,7 +28,9 @@
 //   G1, G2: absolute 4e-6;
 //   BRDF:   relative 4e-6 + 3e-7 |q log(s^2)| + 2e-7 q, plus (conty-kulla)
 //           3e-7 (|L_i| + |L_o| + 20) for charlie; relative 2e-6 for disney.
-// The baker's double lanes take D at cos^2 from the rule (CharlieDCos2).
+// The baker's double lanes (lanes/sheen_lanes.cc) use the Lambda kernel;
+// CharlieDCos2 is D in double lanes at cos^2, the form of the reference's
+// DCos2, checked to 1e-13 on every target.
 // Where the float exponential underflows (q log1p(-c^2) < -87.3), D and the
 // BRDF are 0 after the batch functions' subnormal flush.
 
@@ -59,15 +61,15 @@ struct CharlieConsts {
   bool neubelt;
   CharlieConsts(D d, double alpha, SheenVisibility visibility) {
     const double al = ClampSheenAlpha(alpha);
-    const double t = (1 - al) * (1 - al);
+    const CharlieLFit<double> fit(al);
     k = hn::Set(d, static_cast<T>((2 + 1 / al) / kTwoPi<double>));
     q = hn::Set(d, static_cast<T>(0.5 / al));
-    a = hn::Set(d, static_cast<T>(21.5473 + t * (25.3245 - 21.5473)));
-    b = hn::Set(d, static_cast<T>(3.82987 + t * (3.32435 - 3.82987)));
-    p = hn::Set(d, static_cast<T>(0.19823 + t * (0.16801 - 0.19823)));
-    dd = hn::Set(d, static_cast<T>(-1.97760 + t * (-1.27393 - -1.97760)));
-    e = hn::Set(d, static_cast<T>(-4.32054 + t * (-4.85967 - -4.32054)));
-    two_l_half = hn::Set(d, static_cast<T>(2 * CharlieL(al, 0.5)));
+    a = hn::Set(d, static_cast<T>(fit.a));
+    b = hn::Set(d, static_cast<T>(fit.b));
+    p = hn::Set(d, static_cast<T>(fit.p));
+    dd = hn::Set(d, static_cast<T>(fit.d));
+    e = hn::Set(d, static_cast<T>(fit.e));
+    two_l_half = hn::Set(d, static_cast<T>(2 * fit(0.5)));
     neubelt = visibility == SheenVisibility::kNeubelt;
   }
 };

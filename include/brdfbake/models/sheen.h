@@ -58,24 +58,34 @@ T ClampSheenAlpha(T alpha) {
   return std::clamp(alpha, kMinSheenAlpha<T>, T(1));
 }
 
-// The fitted L(x) of the conty-kulla Lambda at width alpha
-// ([EstevezKulla17] Table 1; t = (1 - alpha)^2 weighs the alpha = 0 fit).
+// The coefficients of the fitted L(x) = a / (1 + b x^p) + d x + e of the
+// conty-kulla Lambda at width alpha ([EstevezKulla17] Table 1; t = (1 -
+// alpha)^2 weighs the alpha = 0 fit). The one place the fit is written:
+// the scalar model and the kernels (kernels/sheen-inl.h) take it here.
+template <typename T>
+struct CharlieLFit {
+  T a, b, p, d, e;
+  explicit CharlieLFit(T alpha) {
+    const T t = (T(1) - alpha) * (T(1) - alpha);
+    a = T(21.5473) + t * (T(25.3245) - T(21.5473));
+    b = T(3.82987) + t * (T(3.32435) - T(3.82987));
+    p = T(0.19823) + t * (T(0.16801) - T(0.19823));
+    d = T(-1.97760) + t * (T(-1.27393) - T(-1.97760));
+    e = T(-4.32054) + t * (T(-4.85967) - T(-4.32054));
+  }
+  T operator()(T x) const { return a / (T(1) + b * std::pow(x, p)) + d * x + e; }
+};
+
+// L(x) at width alpha.
 template <typename T>
 T CharlieL(T alpha, T x) {
-  const T t = (T(1) - alpha) * (T(1) - alpha);
-  const T a = T(21.5473) + t * (T(25.3245) - T(21.5473));
-  const T b = T(3.82987) + t * (T(3.32435) - T(3.82987));
-  const T p = T(0.19823) + t * (T(0.16801) - T(0.19823));
-  const T d = T(-1.97760) + t * (T(-1.27393) - T(-1.97760));
-  const T e = T(-4.32054) + t * (T(-4.85967) - T(-4.32054));
-  return a / (T(1) + b * std::pow(x, p)) + d * x + e;
+  return CharlieLFit<T>(alpha)(x);
 }
 
 // The power p of x in L(x) at width alpha.
 template <typename T>
 T CharlieLPower(T alpha) {
-  const T t = (T(1) - alpha) * (T(1) - alpha);
-  return T(0.19823) + t * (T(0.16801) - T(0.19823));
+  return CharlieLFit<T>(alpha).p;
 }
 
 template <typename T>
