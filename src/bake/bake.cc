@@ -437,13 +437,22 @@ std::string ModelJson(const BakeSpec& spec) {
   j["alpha"] = "roughness^2";
   if (spec.model.kind == ModelKind::kCharlie) {
     j["visibility"] = SheenVisibilityName(spec.model.visibility);
-    j["definition"] =
-        spec.model.visibility == SheenVisibility::kNeubelt
-            ? "Charlie sheen of [EstevezKulla17], f = D(h) / (4 (NoL + NoV - NoL NoV)) "
-              "([Neubelt13]), D = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi), F = 1"
-            : "Charlie sheen of [EstevezKulla17], f = D(h) G2 / (4 NoL NoV), G2 = 1 / (1 + "
-              "Lambda(NoV) + Lambda(NoL)) with the paper's fitted Lambda, D = (2 + 1/alpha) "
-              "sin(theta_h)^(1/alpha) / (2 pi), F = 1";
+    const SheenVisibility v = spec.model.visibility;
+    const bool clamp = SheenClampsVisibility(v);
+    std::string def = "Charlie sheen of [EstevezKulla17], f = D(h) V, D = (2 + 1/alpha) "
+                      "sin(theta_h)^(1/alpha) / (2 pi), F = 1, V = ";
+    if (!SheenHasLambda(v)) {
+      def += clamp ? "min(1, 1 / (4 (NoL + NoV - NoL NoV))) ([Neubelt13], capped as "
+                     "[KhronosSampleRenderer]'s V_Ashikhmin)"
+                   : "1 / (4 (NoL + NoV - NoL NoV)) ([Neubelt13])";
+    } else {
+      def += std::string(clamp ? "min(1, G2 / (4 NoL NoV))" : "G2 / (4 NoL NoV)") +
+             ", G2 = 1 / (1 + Lambda(NoV) + Lambda(NoL)) with " +
+             (v == SheenVisibility::kEnterprisePbr ? "[EnterprisePbr]'s refined Lambda fit"
+                                                   : "the paper's fitted Lambda") +
+             (clamp ? " (capped as [KhronosSampleRenderer]'s V_Sheen)" : "");
+    }
+    j["definition"] = def;
     return j.dump();
   }
   if (spec.model.kind == ModelKind::kStudentT && spec.HasGammaAxis()) {

@@ -166,10 +166,10 @@ void CheckQuantity(const BatchModel& model, Quantity q, bool pair) {
     Bad(std::string("EvalBatch: model ") + ModelName(model.kind) + " has no quantity " +
         QuantityName(q));
   }
-  if (model.kind == ModelKind::kCharlie && model.visibility == SheenVisibility::kNeubelt &&
+  if (model.kind == ModelKind::kCharlie && !SheenHasLambda(model.visibility) &&
       (q == Quantity::kLambda || q == Quantity::kG1 || q == Quantity::kG2)) {
-    Bad(std::string("EvalBatch: charlie with the neubelt visibility has no ") + QuantityName(q) +
-        " (it has no masking term)");
+    Bad(std::string("EvalBatch: charlie with the ") + SheenVisibilityName(model.visibility) +
+        " visibility has no " + QuantityName(q) + " (it has no masking term)");
   }
   if (pair != IsPairQuantity(q)) {
     Bad(std::string("EvalBatch: ") + QuantityName(q) + " takes " +

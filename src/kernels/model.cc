@@ -6,6 +6,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -155,9 +157,9 @@ class CharlieModel : public Model {
 
  private:
   void NeedsMasking(const char* what) const {
-    if (p_.visibility == SheenVisibility::kNeubelt) {
-      Bad(std::string("charlie with the neubelt visibility has no ") + what +
-          " (it has no masking term); use the conty-kulla visibility");
+    if (!SheenHasLambda(p_.visibility)) {
+      Bad(std::string("charlie with the ") + SheenVisibilityName(p_.visibility) + " visibility has no " +
+          what + " (it has no masking term); use the conty-kulla visibility");
     }
   }
   ModelParams p_;
@@ -291,11 +293,15 @@ ModelKind ParseModelKind(const std::string& name) {
 }
 
 SheenVisibility ParseSheenVisibility(const std::string& name) {
-  for (SheenVisibility v : {SheenVisibility::kNeubelt, SheenVisibility::kContyKulla}) {
+  std::vector<std::string> names;
+  for (SheenVisibility v : kSheenVisibilities) {
     if (name == SheenVisibilityName(v)) return v;
+    names.push_back(SheenVisibilityName(v));
   }
-  Bad("unknown sheen visibility '" + name + "' (expected neubelt or conty-kulla)" +
-      DidYouMean(name, {"neubelt", "conty-kulla"}, {{"ashikhmin", "neubelt"}, {"kulla", "conty-kulla"}}));
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  Bad("unknown sheen visibility '" + name + "' (expected " + list + ")" +
+      DidYouMean(name, names, {{"ashikhmin", "neubelt"}, {"kulla", "conty-kulla"}, {"enterprise", "enterprise-pbr"}}));
 }
 
 bool ModelBuilt(ModelKind kind) {

@@ -13,7 +13,8 @@
 //   Lambda(c) = exp(L(c)) (c < 1/2), exp(2 L(1/2) - L(1 - c)) (c >= 1/2),
 //     L(x) = a / (1 + b exp(p log x)) + d x + e;
 //   V = 1 / (4 (NoL + NoV - NoL NoV)) (neubelt) or G2 / (4 NoL NoV),
-//     G2 = 1 / (1 + Lambda(NoV) + Lambda(NoL)) (conty-kulla);
+//     G2 = 1 / (1 + Lambda(NoV) + Lambda(NoL)) (conty-kulla, enterprise-pbr,
+//     each with its fit of L), min(V, 1) for the clamped variants;
 //   Disney: pi f = (1 + g (1 - NoL)^5) (1 + g (1 - NoV)^5),
 //     g = (r - 1/2) + r L.V.
 //
@@ -58,10 +59,11 @@ template <class D>
 struct CharlieConsts {
   using T = hn::TFromD<D>;
   hn::Vec<D> k, q, a, b, p, dd, e, two_l_half;
-  bool neubelt;
+  bool neubelt;  // V has no Lambda
+  bool clamp;    // V capped at 1
   CharlieConsts(D d, double alpha, SheenVisibility visibility) {
     const double al = ClampSheenAlpha(alpha);
-    const CharlieLFit<double> fit(al);
+    const CharlieLFit<double> fit(al, visibility);
     k = hn::Set(d, static_cast<T>((2 + 1 / al) / kTwoPi<double>));
     q = hn::Set(d, static_cast<T>(0.5 / al));
     a = hn::Set(d, static_cast<T>(fit.a));
@@ -70,7 +72,8 @@ struct CharlieConsts {
     dd = hn::Set(d, static_cast<T>(fit.d));
     e = hn::Set(d, static_cast<T>(fit.e));
     two_l_half = hn::Set(d, static_cast<T>(2 * fit(0.5)));
-    neubelt = visibility == SheenVisibility::kNeubelt;
+    neubelt = !SheenHasLambda(visibility);
+    clamp = SheenClampsVisibility(visibility);
   }
 };
 
@@ -151,15 +154,18 @@ template <class D, class V>
 HWY_INLINE V CharlieVisibility(D d, const CharlieConsts<D>& c, V nol, V nov) {
   using T = hn::TFromD<D>;
   const V one = hn::Set(d, T(1)), four = hn::Set(d, T(4));
+  V v;
   if (c.neubelt) {
-    return hn::Div(one, hn::Mul(four, hn::NegMulAdd(nol, nov, hn::Add(nol, nov))));
+    v = hn::Div(one, hn::Mul(four, hn::NegMulAdd(nol, nov, hn::Add(nol, nov))));
+  } else {
+    const V lam = hn::Add(hn::Exp(d, CharlieLogLambda(d, c, nol)),
+                          hn::Exp(d, CharlieLogLambda(d, c, nov)));
+    v = hn::Div(one, hn::Mul(hn::Mul(hn::Mul(four, nol), nov), hn::Add(one, lam)));
   }
-  const V lam = hn::Add(hn::Exp(d, CharlieLogLambda(d, c, nol)),
-                        hn::Exp(d, CharlieLogLambda(d, c, nov)));
-  return hn::Div(one, hn::Mul(hn::Mul(hn::Mul(four, nol), nov), hn::Add(one, lam)));
+  return c.clamp ? hn::Min(v, one) : v;
 }
 
-// G2(wi, wo) of the conty-kulla visibility.
+// G2(wi, wo) of the visibilities with a Lambda.
 template <class D, class V>
 HWY_INLINE V CharlieG2(D d, const CharlieConsts<D>& c, V iz, V oz) {
   using T = hn::TFromD<D>;

@@ -70,6 +70,7 @@ struct SimdCharlieNodes {
       const auto up = hn::Gt(nol, zero);
       const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
       V f;
+      // (c.clamp: V <= 1, so g <= 4 NoL y.)
       if (c.neubelt) {
         // V NoL 4 y = NoL y / (NoL + mu - NoL mu).
         f = hn::Div(hn::Mul(nol, y), hn::Add(hn::NegMulAdd(nl, muv, nl), muv));
@@ -79,6 +80,7 @@ struct SimdCharlieNodes {
         const V lam = hn::Exp(d, CharlieLogLambda(d, c, nl));
         f = hn::Div(y, hn::Mul(muv, hn::Add(one_lambda_mu, lam)));
       }
+      if (c.clamp) f = hn::Min(f, hn::Mul(hn::Mul(hn::Set(d, 4.0), nl), y));
       hn::Store(hn::IfThenElseZero(up, hn::Mul(f, jac)), d, out + i);
     }
     for (int i = 0; i < 15; ++i) g[i] = out[i];
@@ -90,7 +92,7 @@ RuleResult CharlieTexel(double alpha, SheenVisibility visibility, double mu, dou
   const CharlieSheen<double> sheen(alpha, visibility);
   const double m = std::clamp(mu, 1e-7, 1.0);
   const SimdCharlieNodes nodes{CharlieConsts<DF64>(DF64(), alpha, visibility), m,
-                               visibility == SheenVisibility::kContyKulla ? sheen.LambdaCos(m) : 0.0};
+                               SheenHasLambda(visibility) ? sheen.LambdaCos(m) : 0.0};
   return CharlieAlbedoWith(sheen, mu, tol, max_pieces, nodes);
 }
 

@@ -683,11 +683,12 @@ ModelKind EngineModel(const std::string& group) {
 }
 
 // The preset's table of a kind for the engine's model: GGX, or the Charlie
-// sheen with the conty-kulla visibility; nullptr if it has none.
+// sheen with a masking visibility (conty-kulla, or the engine's variant of
+// it); nullptr if it has none.
 const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx) {
   for (const PresetTable& pt : preset.tables) {
     if (pt.spec.table != kind || pt.spec.model.kind != model) continue;
-    if (model == ModelKind::kCharlie && pt.spec.model.visibility != SheenVisibility::kContyKulla) continue;
+    if (model == ModelKind::kCharlie && !SheenHasLambda(pt.spec.model.visibility)) continue;
     return &pt;
   }
   return nullptr;

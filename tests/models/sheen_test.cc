@@ -81,6 +81,43 @@ TEST(SheenTest, VisibilityTerms) {
   EXPECT_EQ(n.Visibility(0.0, 0.5), 0.0);
 }
 
+// The capped variants are min(V, 1) of their uncapped twins; the
+// enterprise-pbr Lambda is [EnterprisePbr]'s refined fit, continuous at
+// 1/2 and growing towards grazing like the paper's.
+TEST(SheenTest, VisibilityVariants) {
+  for (double alpha : {1e-4, 0.05, 0.3, 1.0}) {
+    const CharlieSheen<double> n(alpha, SheenVisibility::kNeubelt), ck(alpha, SheenVisibility::kContyKulla);
+    const CharlieSheen<double> nc(alpha, SheenVisibility::kNeubeltClamped);
+    const CharlieSheen<double> ckc(alpha, SheenVisibility::kContyKullaClamped);
+    const CharlieSheen<double> ent(alpha, SheenVisibility::kEnterprisePbr);
+    for (double l : {1e-4, 0.01, 0.3, 0.6, 1.0}) {
+      for (double v : {1e-3, 0.05, 0.5, 1.0}) {
+        EXPECT_EQ(nc.Visibility(l, v), std::min(1.0, n.Visibility(l, v)));
+        EXPECT_EQ(ckc.Visibility(l, v), std::min(1.0, ck.Visibility(l, v)));
+        EXPECT_NEAR(ent.Visibility(l, v), 1 / ((1 + ent.LambdaCos(l) + ent.LambdaCos(v)) * 4 * l * v),
+                    1e-15 * ent.Visibility(l, v));
+      }
+    }
+    EXPECT_EQ(ckc.Visibility(0.01, 0.01), 1.0);  // capped: V(0.01, 0.01) > 1 uncapped
+    const double h = 1e-7;
+    const double lo = ent.LambdaCos(0.5 - h), mid = ent.LambdaCos(0.5), hi = ent.LambdaCos(0.5 + h);
+    EXPECT_NEAR(lo, mid, 1e-5 * mid);
+    EXPECT_NEAR(hi, mid, 1e-5 * mid);
+    EXPECT_GT(ent.LambdaCos(1e-3), ent.LambdaCos(0.2));
+  }
+  // The weight w(alpha) = -1.59612 / (1 + 0.20375 alpha^-0.55825) + 1.32805
+  // of the second row: about 0 at alpha = 0 ... at alpha = 1, 1.32805 -
+  // 1.59612 / 1.20375.
+  const double w1 = -1.59612 / (1 + 0.20375) + 1.32805;
+  const CharlieLFit<double> f1(1.0, SheenVisibility::kEnterprisePbr);
+  EXPECT_NEAR(f1.a, 11.9095 + w1 * (13.7000 - 11.9095), 1e-12);
+  EXPECT_NEAR(f1.p, 0.33467 + w1 * (0.28670 - 0.33467), 1e-12);
+  const CharlieLFit<double> f0(1e-12, SheenVisibility::kEnterprisePbr);
+  EXPECT_NEAR(f0.e, -1.76591 + (-1.59612 / (1 + 0.20375 * std::pow(1e-12, -0.55825)) + 1.32805) * (-1.22466 + 1.76591),
+              1e-12);
+  for (SheenVisibility v : kSheenVisibilities) EXPECT_EQ(ParseSheenVisibility(SheenVisibilityName(v)), v);
+}
+
 // SampleNdf draws normals with density D(m) m.z.
 TEST(SheenTest, SampleNdfChiSquare) {
   const double alphas[] = {0.05, 0.3, 1.0};

@@ -82,6 +82,36 @@ void Grade(double from, double to, double finest, std::vector<double>* cuts) {
 // (the kink where h reaches the normal), and in phi towards 0 and pi,
 // where D peaks and where it switches off over a width that shrinks with
 // x + mu.
+// The light cosine below which a capped V is 1 at NoV = mu, found from
+// the model's V alone: scanned on a fine grid (which also checks that
+// V - 1 changes sign at most once), then bisected; -1 if V never
+// reaches 1 or is not capped.
+double CapCosine(const CharlieSheen<double>& s, double mu) {
+  if (!SheenClampsVisibility(s.visibility())) return -1;
+  const CharlieSheen<double> open(s.alpha(), SheenHasLambda(s.visibility()) ? SheenVisibility::kContyKulla
+                                                                            : SheenVisibility::kNeubelt);
+  int changes = 0;
+  double lo = -1;
+  bool above = open.Visibility(1e-9, mu) >= 1;
+  for (int i = 1; i <= 20000; ++i) {
+    const double x = i / 20000.0;
+    const bool a = open.Visibility(x, mu) >= 1;
+    if (a != above) {
+      ++changes;
+      lo = (i - 1) / 20000.0;
+    }
+    above = a;
+  }
+  EXPECT_LE(changes, 1) << "alpha " << s.alpha() << " mu " << mu;
+  if (changes == 0) return -1;
+  double hi = lo + 1 / 20000.0;
+  for (int i = 0; i < 80; ++i) {
+    const double m = 0.5 * (lo + hi);
+    (open.Visibility(m, mu) >= 1 ? lo : hi) = m;
+  }
+  return lo;
+}
+
 double ReferenceE(const CharlieSheen<double>& s, double mu, int n) {
   const double so = std::sqrt((1 - mu) * (1 + mu));
   const Vec3<double> wo{so, 0, mu};
@@ -102,6 +132,12 @@ double ReferenceE(const CharlieSheen<double>& s, double mu, int n) {
   Grade(std::min(1.0, 4 * mu), 0.0, 1e-11, &cuts);
   Grade(0.0, mu, 1e-10 * mu, &cuts);
   if (mu < 1) Grade(1.0, mu, 1e-10 * mu, &cuts);
+  // And at the light cosine where a capped V reaches 1 (a kink in x).
+  const double cap = CapCosine(s, mu);
+  if (cap > 0) {
+    Grade(0.0, cap, 1e-9 * cap, &cuts);
+    if (cap < 1) Grade(1.0, cap, 1e-9 * cap, &cuts);
+  }
   return ProductRule(inner, cuts, 0.0, 1.0, n);
 }
 
@@ -113,7 +149,7 @@ const Case kCases[] = {{1.0, 1.0},  {1.0, 0.5},   {1.0, 0.01},  {0.6, 0.3},  {0.
                        {0.01, 0.5}, {0.01, 1e-3}, {0.3, 1e-7}, {1.0, 1e-7}};
 
 TEST(SheenAlbedoTest, CharlieAgreesWithIndependentIntegration) {
-  for (SheenVisibility vis : {SheenVisibility::kNeubelt, SheenVisibility::kContyKulla}) {
+  for (SheenVisibility vis : kSheenVisibilities) {
     double worst = 0;
     for (const Case& c : kCases) {
       const CharlieSheen<double> s(c.r * c.r, vis);
@@ -141,7 +177,7 @@ TEST(SheenAlbedoTest, CharlieAgreesWithIndependentIntegration) {
 // between the first mesh's cuts, such as the arc ceasing to be the whole
 // circle, once hid from both Gauss-Kronrod rules of a piece.)
 TEST(SheenAlbedoTest, CharlieClaimsBoundTheErrorOverAGrid) {
-  for (SheenVisibility vis : {SheenVisibility::kNeubelt, SheenVisibility::kContyKulla}) {
+  for (SheenVisibility vis : kSheenVisibilities) {
     double worst = 0;
     for (int j = 0; j < 24; ++j) {
       const double r = j / 23.0;

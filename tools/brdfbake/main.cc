@@ -200,7 +200,8 @@ struct ModelOptions {
                     "ggx | beckmann | std | ellipsoid | sel | charlie (sheen) | disney-diffuse, or "
                     "ggx-aniso (E, E_avg only)")
         ->capture_default_str();
-    app->add_option("--visibility", visibility, "charlie: neubelt | conty-kulla")
+    app->add_option("--visibility", visibility,
+                    "charlie: neubelt | conty-kulla | neubelt-clamped | conty-kulla-clamped | enterprise-pbr")
         ->capture_default_str();
     app->add_option("--alpha", alpha, "NDF width alpha (both axes), in (0, 1e4]; default 0.25")
         ->check(kNumber);
@@ -416,7 +417,8 @@ struct BakeOptions {
                     "charlie (sheen, --visibility) | disney-diffuse (E, E_avg)")
         ->capture_default_str();
     app->add_option("--visibility", visibility,
-                    "charlie: neubelt (1 / (4 (NoL + NoV - NoL NoV))) | conty-kulla (the fitted Lambda)")
+                    "charlie: neubelt (1 / (4 (NoL + NoV - NoL NoV))) | conty-kulla (the fitted Lambda) | "
+                    "neubelt-clamped, conty-kulla-clamped (V capped at 1) | enterprise-pbr (the refined fit)")
         ->capture_default_str();
     app->add_option("--gamma", gamma,
                     "std: tail parameter in [1.500001, inf]; without it, a third --size entry bakes "

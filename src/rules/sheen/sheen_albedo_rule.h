@@ -27,12 +27,33 @@ struct CharlieArcTerms {
 };
 
 // g = V NoL 4 (wo.h) at one point of the arc, for wo.h = y and NoL = nol
-// (nol >= 0).
+// (nol >= 0); a V capped at 1 caps g at 4 NoL y.
 inline double CharlieArcIntegrand(const CharlieSheen<double>& sheen, double mu, double y,
                                   double nol) {
   if (!(nol > 0)) return 0;
-  if (sheen.visibility() == SheenVisibility::kNeubelt) return nol * y / (nol * (1 - mu) + mu);
-  return y * sheen.G2Cos(std::min(nol, 1.0), mu) / mu;
+  const SheenVisibility v = sheen.visibility();
+  const double g = SheenHasLambda(v) ? y * sheen.G2Cos(std::min(nol, 1.0), mu) / mu
+                                     : nol * y / (nol * (1 - mu) + mu);
+  return SheenClampsVisibility(v) ? std::min(g, 4 * std::min(nol, 1.0) * y) : g;
+}
+
+// The NoL below which a capped V is 1 at NoV = mu (V(NoL, mu) >= 1 there,
+// and V decreases with NoL), or -1 where V < 1 for every NoL (and for the
+// visibilities without a cap). neubelt: 4 (NoL + mu - NoL mu) = 1 in
+// closed form; conty-kulla: 4 mu NoL (1 + Lambda(mu) + Lambda(NoL)) = 1 by
+// bisection (tests/rules/sheen_albedo_test.cc checks that it is the only
+// root); 1 where V >= 1 for every NoL (the cap holds throughout).
+inline double CharlieClampNoL(const CharlieSheen<double>& sheen, double mu) {
+  const SheenVisibility v = sheen.visibility();
+  if (!SheenClampsVisibility(v)) return -1;
+  if (!SheenHasLambda(v)) return mu < 0.25 ? (0.25 - mu) / (1 - mu) : -1;
+  if (sheen.Visibility(1.0, mu) >= 1) return 1;
+  double lo = 0, hi = 1;  // V(lo) >= 1 > V(hi)
+  for (int i = 0; i < 64 && hi - lo > 1e-16; ++i) {
+    const double m = 0.5 * (lo + hi);
+    (sheen.Visibility(m, mu) >= 1 ? lo : hi) = m;
+  }
+  return 0.5 * (lo + hi);
 }
 
 // The double reference's g at 15 azimuths, and at 15 values of z =
@@ -63,8 +84,10 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   const double mu = std::clamp(mu_in, 1e-7, 1.0);
   const double s_mu = std::sqrt((1 - mu) * (1 + mu));
   const double q = 0.5 / sheen.alpha();
-  const bool ck = sheen.visibility() == SheenVisibility::kContyKulla;
-  const double power = CharlieLPower(sheen.alpha());
+  const bool ck = SheenHasLambda(sheen.visibility());
+  const double power = CharlieLPower(sheen.alpha(), sheen.visibility());
+  // A capped V kinks the integrand at NoL = nol_cap.
+  const double nol_cap = CharlieClampNoL(sheen, mu);
   // NoL is largest at phi_h = 0, cos(2 theta_h - theta_o): positive below
   // theta_max = pi/4 + theta_o/2.
   const double theta_max = 0.25 * kPi<double> + 0.5 * std::acos(mu);
@@ -110,6 +133,18 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       }
     } else {
       plain_cuts.push_back(phi_max);
+    }
+    // The cap's kink, where the arc's NoL range (from nol0 down to 0 at
+    // the arc's end, or to its value at phi_h = pi) holds nol_cap.
+    const double nol_low = arc_end ? 0.0 : t.two_c * (t.p - t.r) - mu;
+    if (nol_cap > nol_low && nol_cap < nol0) {
+      if (ck && arc_end && nol_cap < nol_split) {
+        z_cuts.push_back(std::pow(nol_cap, power));
+      } else {
+        plain_cuts.push_back(phi_at(nol_cap));
+      }
+      std::sort(plain_cuts.begin(), plain_cuts.end());
+      std::sort(z_cuts.begin(), z_cuts.end());
     }
     auto make = [&](bool in_z, double a, double b) {
       return KronrodPieceBatch(a, b, 2.0, [&](const double* x, double* v, double* e) {
@@ -204,6 +239,12 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     for (double t : {0.5 * theta_o, 0.5 * (theta_o + third), 0.5 * (theta_o - third), 0.5 * (third - theta_o)}) {
       theta_cuts.push_back(t);
     }
+  }
+  if (nol_cap > 0 && nol_cap < 1) {
+    // And where the arc's NoL range first reaches the cap's NoL, passes it
+    // at its far end, or leaves it.
+    const double a = std::acos(nol_cap);
+    for (double t : {0.5 * (theta_o - a), 0.5 * (theta_o + a), 0.5 * (a - theta_o)}) theta_cuts.push_back(t);
   }
   for (double t : theta_cuts) {
     if (t > 0 && t < theta_max) cuts.push_back(std::sqrt(1 - t / theta_max));
