@@ -198,6 +198,10 @@ struct EavgEstimate {
   double value = 0, error = 0;
 };
 EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index = 0);
+// 2 int_0^1 dfg.bias(mu) mu dmu at one roughness by the same rule (the
+// quadrature): with E_avg, the hemispherical average of f F for Schlick's
+// F is F0 E_avg + (1 - F0) bias_avg.
+EavgEstimate IntegrateBiasAvg(const BakeSpec& spec, double roughness);
 
 // ggx-aniso: E at (roughness, anisotropy, mu, phi_o) and E_avg at
 // (roughness, anisotropy), as the tables bake them (the quadrature).

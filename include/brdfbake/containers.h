@@ -81,6 +81,10 @@ struct Image {
   bool transposed = false;  // x = roughness
   bool flip_rows = false;
   double max_abs_error = 0;  // the table's integration error plus this image's rounding
+  // An image formed from a table rather than holding it (a preset's
+  // Enterprise PBR Base_E over F0): its brdfbake.table and brdfbake.fresnel
+  // (empty: the table's own, "one").
+  std::string table_name, fresnel;
 };
 
 // Throws std::invalid_argument if a channel's source is not in the table.

@@ -38,6 +38,18 @@ struct PresetTable {
   // 1]): another model's E over the same axes, such as the Charlie sheen
   // in Filament's third channel. Their axes are the table's own.
   std::vector<BakeSpec> with;
+  // A table formed from GGX's over a third axis, F0 (`f0`, slices; rows
+  // for E_avg): Enterprise PBR's Base_E and Base_E_avg ([EnterprisePbr]
+  // "Energy Conservation"), the albedo of GGX with Schlick's Fresnel (F90 =
+  // 1) and [KullaConty17]'s multiple-scattering lobe weighted by F_ms:
+  //   Base_E(mu) = F0 scale + bias + F_ms (1 - E(mu)),
+  //   Base_E_avg = F0 E_avg + (1 - F0) bias_avg + F_ms (1 - E_avg),
+  //   F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = (20 F0 + 1) / 21,
+  // each at most `layout.channels[0].max`. spec is the dfg (Base_E) or E_avg
+  // (Base_E_avg) table they are formed from.
+  enum class Over { kNone, kSchlickMsE, kSchlickMsEavg };
+  Over over = Over::kNone;
+  Axis f0{"f0", 16, 0.0, 1.0, Warp::kLinear, Placement::kCenters};
 };
 
 struct Preset {

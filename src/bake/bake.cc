@@ -962,6 +962,23 @@ static int StdEavgGrading(const BakeSpec& spec) {
   return g < 1.6 ? 4 : g < 1.75 ? 3 : g < 2 ? 2 : 0;
 }
 
+EavgEstimate IntegrateBiasAvg(const BakeSpec& spec, double roughness) {
+  BakeSpec s = spec;
+  s.table = TableKind::kDfg;
+  ValidateBakeSpec(s);  // a model with a dfg table
+  if (s.integrator != IntegratorKind::kQuadrature) Bad("the dfg bias average is integrated by the quadrature");
+  const double alpha = AlphaFromRoughness(roughness);
+  return AdaptiveEavg(
+      [&](double mu) {
+        const TexelEstimate v = Texel(s, alpha, mu, 0);
+        TexelEstimate b;
+        b.e = v.bias;
+        b.err_e = v.err_bias;
+        return b;
+      },
+      s.tolerance, StdEavgGrading(s));
+}
+
 EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
   const double alpha = AlphaFromRoughness(roughness);
   if (spec.model.kind == ModelKind::kDisneyDiffuse) {

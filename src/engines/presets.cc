@@ -7,12 +7,16 @@
 // GGX with height-correlated masking. The facts and their sources are in
 // docs/engines.md.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "base/error.h"
+#include "base/pixel.h"
 #include "base/text.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/presets.h"
@@ -215,14 +219,57 @@ std::vector<Preset> MakePresets() {
     p.push_back(m);
   }
   {
+    // The Khronos glTF sample renderer ([KhronosSampleRenderer]): three
+    // 1024x1024 PNGs, x = NoV, y = r (perceptual, alpha = r^2), both at
+    // texel centres, row 0 (the PNG's top row) the smooth end, sampled at
+    // (NoV, r) with no flip. lut_ggx.png RGB8: R = scale, G = bias (the
+    // renderer reads .rg; B = E here, 0 in the shipped file).
+    // lut_charlie.png RGB8: the sheen IBL term the renderer reads from .b,
+    // the Charlie E with V_Ashikhmin capped at 1 (neubelt-clamped), in R =
+    // G = B (the shipped R and G are 0). lut_sheen_E.png RGB16, R = G = B:
+    // the albedo of the renderer's sheen BRDF, D_Charlie with V_Sheen capped
+    // at 1 (conty-kulla-clamped), which it reads from .r to scale the layers
+    // below the sheen. All three at most 1, as an 8- or 16-bit PNG holds.
+    // Each is integrated to a tolerance well below its pixels' rounding
+    // (1e-5 for 8 bits, whose step is 3.9e-3; 1e-6 for 16 bits, 1.5e-5).
+    Preset k{"khronos",
+             "the Khronos glTF sample renderer's lut_ggx.png (R = scale, G = bias), lut_charlie.png (B = "
+             "sheen IBL term, V_Ashikhmin) and lut_sheen_E.png (sheen albedo, V_Sheen): 1024x1024, "
+             "x = NoV, y = roughness (top row smooth), centres, 8-, 8- and 16-bit PNG",
+             {},
+             ""};
+    k.tables.push_back(Entry(Spec(TableKind::kDfg, 1024, 1024, Placement::kCenters),
+                        Layout({{"R", Source::kScale}, {"G", Source::kBias}, {"B", Source::kE}}, PixelType::kUnorm8),
+                        Container::kPng, "lut_ggx.png", "lut_ggx"));
+    k.tables.back().layout.channels[2].max = 1;
+    k.tables.back().spec.tolerance = 1e-5;
+    for (const auto& [file, vis, pixel] :
+         {std::tuple{"lut_charlie", SheenVisibility::kNeubeltClamped, PixelType::kUnorm8},
+          std::tuple{"lut_sheen_E", SheenVisibility::kContyKullaClamped, PixelType::kUnorm16}}) {
+      BakeSpec s = Spec(TableKind::kE, 1024, 1024, Placement::kCenters);
+      s.model.kind = ModelKind::kCharlie;
+      s.model.visibility = vis;
+      s.tolerance = pixel == PixelType::kUnorm8 ? 1e-5 : 1e-6;
+      ImageLayout::Out e{"", Source::kE};
+      e.max = 1;
+      std::vector<ImageLayout::Out> rgb(3, e);
+      rgb[0].name = "R";
+      rgb[1].name = "G";
+      rgb[2].name = "B";
+      k.tables.push_back(Entry(s, Layout(rgb, pixel), Container::kPng, std::string(file) + ".png", file));
+    }
+    p.push_back(k);
+  }
+  {
     // Enterprise PBR: GGX_E[roughness][cos_theta] 32x32 and GGX_E_avg 32,
     // as res/pbrlut.hpp (extern declarations, definitions under
     // PBRLUT_IMPLEMENTATION) and as EXR. Its source does not state the
     // placement; its shipped E_avg's last entry, 0.4228, is GGX's at the
     // last texel centre (r = 0.984; 0.409 at r = 1), so centres.
     Preset e{"enterprise-pbr",
-             "Enterprise PBR's pbrlut.hpp (GGX_E[roughness][cos_theta] 32x32, GGX_E_avg 32; not "
-             "Base_E or Sheen_E), centres, float, and EXR files",
+             "Enterprise PBR's pbrlut.hpp: GGX_E[roughness][cos_theta] 32x32, GGX_E_avg 32, "
+             "Base_E[f0][roughness][cos_theta] 16^3 and Base_E_avg[f0][roughness] (Schlick + multiple "
+             "scattering), Sheen_E and Sheen_ash_E [alpha][cos_theta] 16x16; centres, float, and EXR files",
              {},
              "pbrlut.hpp",
              EngineForm::kEnterprisePbrHeader};
@@ -232,6 +279,32 @@ std::vector<Preset> MakePresets() {
     e.tables.push_back(Entry(Spec(TableKind::kEavg, 32, 32, Placement::kCenters),
                         Layout({{"E_avg", Source::kEavg}}, PixelType::kFloat), Container::kExr,
                         "GGX_E_avg.exr", "GGX_E_avg"));
+    // Sheen_E[alpha][cos_theta] 16x16: the Charlie E with its refined
+    // Lambda fit (enterprise-pbr); Sheen_ash_E: with the neubelt ("Ashikhmin")
+    // visibility, capped at 1 as the shipped table is. The rows hold alpha
+    // = r^2 at the centres (the sqrt warp of r).
+    // Base_E[f0][roughness][cos_theta] 16^3 and Base_E_avg[f0][roughness],
+    // all at centres, at most 1 (PresetTable::Over).
+    ImageLayout::Out capped{"E", Source::kE};
+    capped.max = 1;
+    e.tables.push_back(Entry(Spec(TableKind::kDfg, 16, 16, Placement::kCenters), Layout({capped}, PixelType::kFloat),
+                             Container::kExr, "Base_E.exr", "Base_E"));
+    e.tables.back().over = PresetTable::Over::kSchlickMsE;
+    capped.name = "E_avg";
+    capped.source = Source::kEavg;
+    e.tables.push_back(Entry(Spec(TableKind::kEavg, 16, 16, Placement::kCenters), Layout({capped}, PixelType::kFloat),
+                             Container::kExr, "Base_E_avg.exr", "Base_E_avg"));
+    e.tables.back().over = PresetTable::Over::kSchlickMsEavg;
+    for (const auto& [sym, vis, cap] : {std::tuple{"Sheen_E", SheenVisibility::kEnterprisePbr, kInfinity},
+                                        std::tuple{"Sheen_ash_E", SheenVisibility::kNeubelt, 1.0}}) {
+      BakeSpec s = Spec(TableKind::kE, 16, 16, Placement::kCenters);
+      s.model.kind = ModelKind::kCharlie;
+      s.model.visibility = vis;
+      s.roughness.warp = Warp::kSqrt;
+      ImageLayout::Out o{"E", Source::kE};
+      o.max = cap;
+      e.tables.push_back(Entry(s, Layout({o}, PixelType::kFloat), Container::kExr, std::string(sym) + ".exr", sym));
+    }
     p.push_back(e);
   }
   return p;
@@ -301,8 +374,9 @@ std::string ThreeDfgModule(const Table& t, const Image& im, const std::string& p
 // Enterprise PBR's res/pbrlut.hpp: `extern` declarations of each table and
 // its size, and their definitions when PBRLUT_IMPLEMENTATION is defined (in
 // one translation unit). A 2D table is [rows][columns] (GGX_E[roughness]
-// [cos_theta]) with NAME_size = {columns, rows}; a 1D one NAME[n] with
-// NAME_size = n.
+// [cos_theta]) with NAME_size = {columns, rows}, a 3D one [slices][rows]
+// [columns] (Base_E[f0][roughness][cos_theta]) with NAME_size = {columns,
+// rows, slices}; a 1D one NAME[n] with NAME_size = n.
 std::string EnterprisePbrHeader(const Preset& preset, const std::vector<Table>& tables,
                                 const std::vector<Image>& images) {
   std::string decl, defs, notes;
@@ -321,14 +395,23 @@ std::string EnterprisePbrHeader(const Preset& preset, const std::vector<Table>& 
       continue;
     }
     const std::string y = im.axes[1].name;
-    const std::string w = std::to_string(im.width), h = std::to_string(im.height);
-    const std::string dims = "[" + h + "/*" + y + "*/][" + w + "/*" + x + "*/]";
-    decl += "extern int " + sym + "_size[2];\nextern float " + sym + dims + ";\n";
-    defs += "int " + sym + "_size[2] = { " + w + ", " + h + " };\nfloat " + sym + dims + " = {\n";
-    for (int r = 0; r < im.height; ++r) {
-      defs += "{";
-      for (int c = 0; c < im.width; ++c) defs += (c ? "," : "") + FloatLiteral(im.values[size_t(r) * im.width + c]);
-      defs += "},\n";
+    const bool three = im.axes.size() == 3;
+    const int rows = three ? im.axes[1].size : im.height, slices = three ? im.axes[2].size : 1;
+    const std::string w = std::to_string(im.width), h = std::to_string(rows), n = std::to_string(slices);
+    std::string dims = "[" + h + "/*" + y + "*/][" + w + "/*" + x + "*/]";
+    if (three) dims = "[" + n + "/*" + im.axes[2].name + "*/]" + dims;
+    decl += "extern int " + sym + "_size[" + (three ? "3" : "2") + "];\nextern float " + sym + dims + ";\n";
+    defs += "int " + sym + "_size[" + (three ? "3" : "2") + "] = { " + w + ", " + h + (three ? ", " + n : "") +
+            " };\nfloat " + sym + dims + " = {\n";
+    for (int s = 0; s < slices; ++s) {
+      if (three) defs += "{\n";
+      for (int r = 0; r < rows; ++r) {
+        defs += "{";
+        const size_t row = size_t(s) * rows + r;
+        for (int c = 0; c < im.width; ++c) defs += (c ? "," : "") + FloatLiteral(im.values[row * im.width + c]);
+        defs += "},\n";
+      }
+      if (three) defs += "},\n";
     }
     defs += "};\n\n";
   }
@@ -393,8 +476,79 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
   return files;
 }
 
+namespace {
+
+// PresetTable::Over: Base_E (x = mu, y = roughness, slices over F0) from the
+// dfg table, or Base_E_avg (x = roughness, y = F0) from the E_avg table,
+// with E_avg (and bias_avg) integrated per roughness at the table's
+// tolerance. The claim: the errors of scale, bias and E_avg carried
+// through the formula (F_ms's slope in E_avg is F_avg^2 (1 - F_avg) / (1 -
+// F_avg (1 - E_avg))^2), plus the rounding to float.
+Image ArrangeOverF0(const PresetTable& pt, const Table& table) {
+  const bool eavg = pt.over == PresetTable::Over::kSchlickMsEavg;
+  const Axis& r_axis = table.axes[eavg ? 0 : 1];
+  const int n_r = r_axis.size, n_mu = eavg ? 1 : table.axes[0].size, n_f0 = pt.f0.size;
+  BakeSpec e_spec = table.spec;
+  e_spec.table = TableKind::kE;
+  std::vector<EavgEstimate> e_avg(n_r), bias_avg(n_r);
+  for (int j = 0; j < n_r; ++j) {
+    const double r = std::max(r_axis.Value(j), r_axis.clamp_min);
+    e_avg[j] = IntegrateEavg(e_spec, r);
+    if (eavg) bias_avg[j] = IntegrateBiasAvg(e_spec, r);
+  }
+  const ImageLayout::Out& out = pt.layout.channels.at(0);
+  Image im;
+  im.width = eavg ? n_r : n_mu;
+  im.height = eavg ? n_f0 : n_r * n_f0;
+  im.channels = 1;
+  im.pixel = pt.layout.pixel;
+  im.axes = eavg ? std::vector<Axis>{r_axis, pt.f0} : std::vector<Axis>{table.axes[0], r_axis, pt.f0};
+  im.channel_names = {out.name};
+  im.table_name = eavg ? "Base_E_avg" : "Base_E";
+  im.fresnel = "schlick over the f0 axis (F90 = 1), with the multiple-scattering lobe of [KullaConty17] "
+               "weighted by F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)), F_avg = (20 f0 + 1) / 21";
+  im.channel_sources = {std::string(eavg ? "f0 E_avg + (1 - f0) bias_avg + F_ms (1 - E_avg)"
+                                         : "f0 dfg.scale + dfg.bias + F_ms (1 - E)") +
+                        (std::isfinite(out.max) ? ", at most " + NumG9(out.max) : "")};
+  im.values.resize(size_t(im.width) * im.height);
+  if (im.pixel != PixelType::kFloat) im.bits16.resize(im.values.size());
+  double claim = 0, rounding = 0;
+  for (int k = 0; k < n_f0; ++k) {
+    const double f0 = pt.f0.Value(k);
+    const double f_avg = (20 * f0 + 1) / 21;
+    for (int j = 0; j < n_r; ++j) {
+      const double ea = e_avg[j].value, den = 1 - f_avg * (1 - ea);
+      const double f_ms = f_avg * f_avg * ea / den;
+      const double slope = f_avg * f_avg * (1 - f_avg) / (den * den);
+      for (int i = 0; i < n_mu; ++i) {
+        double v, err;
+        if (eavg) {
+          v = f0 * ea + (1 - f0) * bias_avg[j].value + f_ms * (1 - ea);
+          err = (f0 + f_ms + slope * (1 - ea)) * e_avg[j].error + (1 - f0) * bias_avg[j].error;
+        } else {
+          const double a = table.channels[0].values[size_t(j) * table.width + i];
+          const double b = table.channels[1].values[size_t(j) * table.width + i];
+          v = f0 * a + b + f_ms * (1 - a - b);
+          err = (f0 + 1 + 2 * f_ms) * table.integration_error + slope * (1 - a - b) * e_avg[j].error;
+        }
+        const double stored = std::min(v, out.max);
+        const size_t dst = eavg ? size_t(k) * n_r + j : (size_t(k) * n_r + j) * n_mu + i;
+        im.values[dst] = RoundToPixel(stored, im.pixel);
+        if (im.pixel != PixelType::kFloat) im.bits16[dst] = PixelCode(im.values[dst], im.pixel);
+        claim = std::max(claim, err);
+        rounding = std::max(rounding, std::abs(im.values[dst] - stored));
+      }
+    }
+  }
+  im.max_abs_error = claim + rounding;
+  return im;
+}
+
+}  // namespace
+
 Image ArrangePresetTable(const PresetTable& pt, const Table& table, int threads, double tolerance,
                          const ProgressFn& progress) {
+  if (pt.over != PresetTable::Over::kNone) return ArrangeOverF0(pt, table);
   std::vector<Table> with;
   with.reserve(pt.with.size());
   for (BakeSpec s : pt.with) {

@@ -541,7 +541,7 @@ Image ArrangeTables(const Table& t, const std::vector<const Table*>& others, con
       const size_t dst = (size_t(y) * im.width + x) * im.channels;
       for (int c = 0; c < im.channels; ++c) {
         const ImageLayout::Out& o = layout.channels[c];
-        raw[c] = o.table == 0 && o.scale == 1 && o.offset == 0
+        raw[c] = o.table == 0 && o.scale == 1 && o.offset == 0 && !(o.max < kInfinity)
                      ? reader.At(o.source, src)
                      : std::min(o.scale * readers[o.table].At(o.source, src) + o.offset, o.max);
         im.values[dst + c] = RoundToPixel(raw[c], im.pixel);
@@ -574,7 +574,7 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
     order.push_back(im.channel_names[c]);
     info.push_back({{"index", c}, {"name", im.channel_names[c]}, {"meaning", im.channel_sources[c]}});
   }
-  const bool one_d = t.spec.table == TableKind::kEavg;
+  const bool one_d = im.height == 1;
   std::string layout = "x (columns) = " + im.axes[0].name;
   if (!one_d) {
     layout += ", y (rows) = " + im.axes[1].name + (im.flip_rows ? ", row 0 = the LAST " : ", row 0 = the first ") +
@@ -589,10 +589,10 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
   std::snprintf(err, sizeof(err), "%.3e", im.max_abs_error * (1 + 1e-3));
   std::vector<std::pair<std::string, std::string>> kv = {
       {"brdfbake.version", BRDFBAKE_VERSION},
-      {"brdfbake.table", TableName(t.spec.table)},
+      {"brdfbake.table", im.table_name.empty() ? std::string(TableName(t.spec.table)) : im.table_name},
       {"brdfbake.model", t.model_json},
       {"brdfbake.masking", MaskingName(t.spec.masking)},
-      {"brdfbake.fresnel", "one"},
+      {"brdfbake.fresnel", im.fresnel.empty() ? std::string("one") : im.fresnel},
       {"brdfbake.axes", axes.dump()},
       {"brdfbake.layout", layout},
       {"brdfbake.channels", channels.dump()},

@@ -191,8 +191,15 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
     return c < 0 ? std::string() : std::string("s.") + xyzw[c];
   };
   const bool eavg = t.spec.table == TableKind::kEavg;
+  // An image formed from the table (Image::table_name: Base_E over F0) has
+  // one channel, over the image's own axes.
+  const bool formed = !im.table_name.empty();
+  const bool dfg = t.spec.table == TableKind::kDfg && !formed;
   std::string result, type;
-  if (t.spec.table == TableKind::kDfg) {
+  if (formed) {
+    type = syn.f1();
+    result = "s.x";
+  } else if (dfg) {
     type = syn.f2();
     std::string scale = get("dfg.scale"), bias = get("dfg.bias"), e = get("E");
     if (scale.empty()) scale = "(" + e + " - " + bias + ")";
@@ -206,12 +213,13 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   }
   // The parameters, in the table's own axis order.
   std::string params;
-  for (const Axis& a : t.axes) {
+  for (const Axis& a : formed ? im.axes : t.axes) {
     const std::string p = ParameterName(a);
     params += ", " + (glsl || hlsl ? "float " + p : p + ": f32");
   }
   std::ostringstream os;
-  os << "// " << name << ": the brdfbake " << TableName(t.spec.table) << " table of " << t.spec.model.name()
+  os << "// " << name << ": the brdfbake " << (formed ? im.table_name : std::string(TableName(t.spec.table)))
+     << " table of " << t.spec.model.name()
      << " (" << im.width << "x" << im.height << ", " << MaskingName(t.spec.masking)
      << ") sampled with its exact texel mapping; bilinear filtering, clamp-to-edge.\n";
   os << "// x = " << (n_axes >= 1 ? axes[0].name : "-");
@@ -219,7 +227,7 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   for (int k = 2; k < n_axes; ++k) os << ", slices over " << axes[k].name;
   os << (im.flip_rows ? ", rows flipped" : "") << "; channels:";
   for (size_t c = 0; c < im.channel_sources.size(); ++c) os << " " << xyzw[c] << " = " << im.channel_sources[c];
-  os << (t.spec.table == TableKind::kDfg ? "; returns (scale, bias): F = F0 scale + F90 bias\n" : "\n");
+  os << (dfg ? "; returns (scale, bias): F = F0 scale + F90 bias\n" : "\n");
   if (glsl) {
     os << type << " " << name << "(sampler2D lut" << params << ") {\n";
   } else if (hlsl) {

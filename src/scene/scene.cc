@@ -687,7 +687,7 @@ ModelKind EngineModel(const std::string& group) {
 // it); nullptr if it has none.
 const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx) {
   for (const PresetTable& pt : preset.tables) {
-    if (pt.spec.table != kind || pt.spec.model.kind != model) continue;
+    if (pt.spec.table != kind || pt.spec.model.kind != model || pt.over != PresetTable::Over::kNone) continue;
     if (model == ModelKind::kCharlie && !SheenHasLambda(pt.spec.model.visibility)) continue;
     return &pt;
   }

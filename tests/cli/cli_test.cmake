@@ -246,7 +246,8 @@ endforeach()
 foreach(f preset_filament/dfg.inc preset_unreal/PreIntegratedGF.dds preset_hdrp/preintegrated_fgd.exr
           preset_godot/dfg_lut.exr preset_bevy/dfg.ktx2 preset_three/DFGLUTData.js preset_cycles/ggx_tables.h
           preset_materialx/albedo_table.exr preset_enterprise-pbr/pbrlut.hpp preset_enterprise-pbr/GGX_E.exr
-          preset_enterprise-pbr/GGX_E_avg.exr preset_three/DFGLUTData.glsl)
+          preset_enterprise-pbr/GGX_E_avg.exr preset_enterprise-pbr/Base_E.exr preset_enterprise-pbr/Base_E_avg.exr
+          preset_enterprise-pbr/Sheen_E.exr preset_enterprise-pbr/Sheen_ash_E.exr preset_three/DFGLUTData.glsl)
   if(NOT EXISTS "${out_dir}/${f}")
     message(FATAL_ERROR "preset output missing: ${f}")
   endif()

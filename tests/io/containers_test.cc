@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <Imath/half.h>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -205,6 +206,161 @@ TEST(PresetTest, CyclesAndEnterprisePbr) {
   const Baked p = BakePreset(TableOf("enterprise-pbr", 0));
   CheckLayout(p.image, 32, 32, [](int x, int y) { return std::pair{Centre(x, 32), Centre(y, 32)}; },
               [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.e}; }, 1e-7, "enterprise-pbr E");
+}
+
+// A preset table at another size (the same axes, placement and layout).
+PresetTable Resized(PresetTable pt, int n) {
+  pt.spec.mu.size = pt.spec.roughness.size = n;
+  return pt;
+}
+
+// The Charlie E of a visibility at (NoV, r).
+double SheenE(SheenVisibility v, double nov, double r) {
+  BakeSpec s;
+  s.model.kind = ModelKind::kCharlie;
+  s.model.visibility = v;
+  return IntegrateTexel(s, r, nov).e;
+}
+
+// The khronos preset: three 1024x1024 PNGs (x = NoV, y = r, centres, row 0
+// the smooth end). The same tables at 32x32 are checked texel by texel
+// against each definition, written as the preset writes them, and read
+// back by OpenImageIO.
+TEST(PresetTest, Khronos) {
+  SKIP_UNLESS_BUILT("khronos");
+  const Preset& k = FindPreset("khronos");
+  ASSERT_EQ(k.tables.size(), 3u);
+  const char* files[] = {"lut_ggx.png", "lut_charlie.png", "lut_sheen_E.png"};
+  const PixelType pixels[] = {PixelType::kUnorm8, PixelType::kUnorm8, PixelType::kUnorm16};
+  for (int t = 0; t < 3; ++t) {
+    const PresetTable& pt = k.tables[t];
+    EXPECT_EQ(pt.file, files[t]);
+    EXPECT_EQ(pt.container, Container::kPng);
+    EXPECT_EQ(pt.layout.pixel, pixels[t]);
+    EXPECT_EQ(pt.spec.mu.size, 1024);
+    EXPECT_EQ(pt.spec.roughness.size, 1024);
+    EXPECT_EQ(pt.layout.channels.size(), 3u);
+    EXPECT_FALSE(pt.layout.flip_rows);
+    EXPECT_FALSE(pt.layout.roughness_on_x);
+  }
+  EXPECT_EQ(k.tables[1].spec.model.visibility, SheenVisibility::kNeubeltClamped);     // V_Ashikhmin
+  EXPECT_EQ(k.tables[2].spec.model.visibility, SheenVisibility::kContyKullaClamped);  // V_Sheen
+  const int n = 32;
+  Preset small = k;
+  for (PresetTable& pt : small.tables) pt = Resized(pt, n);
+  std::vector<Table> tables;
+  std::vector<Image> images;
+  for (const PresetTable& pt : small.tables) {
+    const Baked b = BakePreset(pt);
+    tables.push_back(b.table);
+    images.push_back(b.image);
+  }
+  // lut_ggx: R = scale, G = bias, B = E.
+  CheckLayout(images[0], n, n, [&](int x, int y) { return std::pair{Centre(x, n), Centre(y, n)}; },
+              [](const TexelEstimate& v, const Lobes&) { return std::vector<double>{v.scale, v.bias, v.e}; }, 0,
+              "khronos lut_ggx", 0.5 / 255 + 2e-5);
+  // The sheen tables: R = G = B = the capped-V Charlie E, at most 1.
+  double cap_effect = 0;
+  for (int t = 1; t <= 2; ++t) {
+    const double step = t == 1 ? 1 / 255.0 : 1 / 65535.0;
+    const SheenVisibility v = small.tables[t].spec.model.visibility;
+    const SheenVisibility open = t == 1 ? SheenVisibility::kNeubelt : SheenVisibility::kContyKulla;
+    for (int y = 0; y < n; y += 3) {
+      for (int x = 0; x < n; x += 3) {
+        const double nov = Centre(x, n), r = Centre(y, n);
+        const double want = std::min(1.0, SheenE(v, nov, r));
+        cap_effect = std::max(cap_effect, std::abs(std::min(1.0, SheenE(open, nov, r)) - want));
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(Value(images[t], x, y, c), want, 0.5 * step + 2 * small.tables[t].spec.tolerance + 1e-7)
+              << files[t] << " (" << x << ", " << y << ") channel " << c;
+        }
+      }
+    }
+  }
+  // The cap of V changes the tables by far more than a pixel step.
+  EXPECT_GT(cap_effect, 0.05);
+  // Written as the preset writes them and read back by OpenImageIO: the
+  // pixel codes the image holds, top row first.
+  if (std::system("command -v oiiotool >/dev/null 2>&1") != 0) GTEST_SKIP() << "no oiiotool";
+  const std::string dir = Scratch("khronos");
+  PresetRun run;
+  run.dir = dir;
+  WritePresetFiles(small, run, tables, images);
+  for (int t = 0; t < 3; ++t) {
+    const std::string path = dir + "/" + files[t];
+    ASSERT_EQ(std::system(("oiiotool --dumpdata " + path + " > " + dir + "/dump.txt 2>&1").c_str()), 0);
+    const std::string dump = Slurp(dir + "/dump.txt");
+    EXPECT_NE(dump.find(t == 2 ? "uint16 png" : "uint8 png"), std::string::npos) << dump.substr(0, 200);
+    for (const auto& [x, y] : {std::pair{0, 0}, {n - 1, 0}, {3, n - 1}, {n / 2, n / 3}}) {
+      const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
+      const size_t at = dump.find(key);
+      ASSERT_NE(at, std::string::npos) << key;
+      std::stringstream ss(dump.substr(at + key.size(), 80));
+      for (int c = 0; c < 3; ++c) {
+        int code = -1;
+        ss >> code;
+        ASSERT_EQ(code, images[t].bits16[(size_t(y) * n + x) * 3 + c]) << path << " " << key << " channel " << c;
+      }
+    }
+  }
+}
+
+// Enterprise PBR's pbrlut.hpp tables beyond GGX_E and GGX_E_avg: Base_E
+// and Base_E_avg (GGX with Schlick's Fresnel and the multiple-scattering
+// lobe, over F0), Sheen_E (its refined Lambda fit) and Sheen_ash_E
+// (neubelt, at most 1), each against its definition evaluated here.
+TEST(PresetTest, EnterprisePbrEveryTable) {
+  SKIP_UNLESS_BUILT("enterprise-pbr");
+  const Preset& p = FindPreset("enterprise-pbr");
+  std::vector<std::string> symbols;
+  for (const PresetTable& pt : p.tables) symbols.push_back(pt.symbol);
+  EXPECT_EQ(symbols, (std::vector<std::string>{"GGX_E", "GGX_E_avg", "Base_E", "Base_E_avg", "Sheen_E", "Sheen_ash_E"}));
+  auto f_ms = [](double f0, double e_avg) {
+    const double f_avg = (20 * f0 + 1) / 21;
+    return f_avg * f_avg * e_avg / (1 - f_avg * (1 - e_avg));
+  };
+  const Baked base = BakePreset(p.tables[2]);
+  ASSERT_EQ(base.image.width, 16);
+  ASSERT_EQ(base.image.height, 256);
+  ASSERT_EQ(base.image.axes.size(), 3u);
+  EXPECT_EQ(base.image.axes[2].name, "f0");
+  for (int kf : {0, 6, 15}) {
+    const double f0 = Centre(kf, 16);
+    for (int j : {0, 7, 15}) {
+      const double r = Centre(j, 16), ea = IntegrateEavg(BakeSpec(), r).value;
+      for (int i : {0, 9, 15}) {
+        const TexelEstimate v = Exact(Centre(i, 16), r);
+        const double want = std::min(1.0, f0 * v.scale + v.bias + f_ms(f0, ea) * (1 - v.e));
+        EXPECT_NEAR(base.image.values[(size_t(kf) * 16 + j) * 16 + i], want, 1e-6) << kf << " " << j << " " << i;
+      }
+    }
+  }
+  // Base_E_avg = 2 int Base_E mu dmu (unclamped), by Boost's adaptive
+  // Gauss-Kronrod over the definition.
+  const Baked avg = BakePreset(p.tables[3]);
+  ASSERT_EQ(avg.image.width, 16);
+  ASSERT_EQ(avg.image.height, 16);
+  for (const auto& [kf, j] : {std::pair{0, 5}, {9, 10}, {15, 15}}) {
+    const double f0 = Centre(kf, 16), r = Centre(j, 16), fm = f_ms(f0, IntegrateEavg(BakeSpec(), r).value);
+    const double want = 2 * boost::math::quadrature::gauss_kronrod<double, 31>::integrate(
+                                [&](double mu) {
+                                  const TexelEstimate v = Exact(std::max(mu, 1e-9), r);
+                                  return (f0 * v.scale + v.bias + fm * (1 - v.e)) * mu;
+                                },
+                                0.0, 1.0, 8, 1e-10);
+    EXPECT_NEAR(avg.image.values[size_t(kf) * 16 + j], std::min(1.0, want), 2e-6) << kf << " " << j;
+  }
+  // Sheen_E and Sheen_ash_E: rows at alpha = (j + 0.5) / 16.
+  const Baked sheen = BakePreset(p.tables[4]), ash = BakePreset(p.tables[5]);
+  for (int j : {0, 5, 15}) {
+    const double r = std::sqrt(Centre(j, 16));
+    for (int i : {0, 4, 15}) {
+      const double nov = Centre(i, 16);
+      EXPECT_NEAR(sheen.image.values[size_t(j) * 16 + i], SheenE(SheenVisibility::kEnterprisePbr, nov, r), 1e-6);
+      EXPECT_NEAR(ash.image.values[size_t(j) * 16 + i], std::min(1.0, SheenE(SheenVisibility::kNeubelt, nov, r)),
+                  1e-6);
+    }
+  }
 }
 
 // ------------------------------------------------------------ containers
@@ -679,6 +835,13 @@ TEST(EngineTablesTest, KhronosLutsAgainstOurs) {
   const KhronosStats sheen_raw = CompareKhronos(
       "khronos_lut_sheen_E_64.json", 0, [&](double nov, double r) { return IntegrateTexel(ck, r, nov).e; },
       identity, resolved);
+  BakeSpec ck_capped = ck;
+  ck_capped.model.visibility = SheenVisibility::kContyKullaClamped;
+  const KhronosStats sheen_capped = CompareKhronos(
+      "khronos_lut_sheen_E_64.json", 0, [&](double nov, double r) { return IntegrateTexel(ck_capped, r, nov).e; },
+      srgb, resolved);
+  std::printf("Khronos lut_sheen_E.png, sRGB-decoded, against the capped-V (V_Sheen) E: max %.3g RMS %.3g\n",
+              sheen_capped.max, sheen_capped.rms);
   BakeSpec neubelt = ck;
   neubelt.model.visibility = SheenVisibility::kNeubelt;
   const auto neubelt_e = [&](double nov, double r) { return std::min(1.0, IntegrateTexel(neubelt, r, nov).e); };
@@ -701,6 +864,73 @@ TEST(EngineTablesTest, KhronosLutsAgainstOurs) {
   EXPECT_LT(sheen.max, 6e-3);
   EXPECT_GT(sheen_raw.max, 0.05);
   EXPECT_GT(sheen.flipped_max, 0.05);
+}
+
+// Enterprise PBR's shipped tables (res/pbrlut.hpp, decoded into
+// tests/data), Monte Carlo bakes with about 1e-3 of noise, against the
+// preset's: Sheen_E, Sheen_ash_E [alpha][cos_theta] 16x16, Base_E
+// [f0][roughness][cos_theta] 16^3 and Base_E_avg [f0][roughness], all at
+// centres. A wrong definition or layout shows as hundredths: Sheen_E with
+// the conty-kulla fit, Base_E with its roughness rows reversed.
+std::vector<double> Flat(const nlohmann::json& j) {
+  std::vector<double> v;
+  if (j.is_array()) {
+    for (const auto& e : j) {
+      const std::vector<double> s = Flat(e);
+      v.insert(v.end(), s.begin(), s.end());
+    }
+  } else {
+    v.push_back(j.get<double>());
+  }
+  return v;
+}
+
+Diff CompareFlat(const std::vector<double>& ours, const std::vector<double>& shipped) {
+  Diff d;
+  double sum2 = 0;
+  EXPECT_EQ(ours.size(), shipped.size());
+  for (size_t i = 0; i < std::min(ours.size(), shipped.size()); ++i) {
+    d.max = std::max(d.max, std::abs(ours[i] - shipped[i]));
+    sum2 += (ours[i] - shipped[i]) * (ours[i] - shipped[i]);
+  }
+  d.rms = std::sqrt(sum2 / std::max<size_t>(1, ours.size()));
+  return d;
+}
+
+TEST(EngineTablesTest, EnterprisePbrShippedTables) {
+  SKIP_UNLESS_BUILT("enterprise-pbr");
+  const Preset& p = FindPreset("enterprise-pbr");
+  const auto sheen_json = nlohmann::json::parse(Slurp(std::string(BRDFBAKE_TEST_DATA) + "/enterprise_pbr_sheen.json"));
+  const auto base_json = nlohmann::json::parse(Slurp(std::string(BRDFBAKE_TEST_DATA) + "/enterprise_pbr_base.json"));
+  const Diff sheen = CompareFlat(BakePreset(p.tables[4]).image.values, Flat(sheen_json["Sheen_E_HEAD_3ee9131"]["data"]));
+  const Diff ash = CompareFlat(BakePreset(p.tables[5]).image.values, Flat(sheen_json["Sheen_ash_E_HEAD"]["data"]));
+  const Image base = BakePreset(p.tables[2]).image;
+  const Diff base_e = CompareFlat(base.values, Flat(base_json["Base_E_HEAD"]["data"]));
+  const Diff base_avg = CompareFlat(BakePreset(p.tables[3]).image.values, Flat(base_json["Base_E_avg_HEAD"]["data"]));
+  PresetTable ck = p.tables[4];
+  ck.spec.model.visibility = SheenVisibility::kContyKulla;
+  const Diff sheen_ck = CompareFlat(BakePreset(ck).image.values, Flat(sheen_json["Sheen_E_HEAD_3ee9131"]["data"]));
+  std::vector<double> reversed(base.values.size());
+  for (int s = 0; s < 16; ++s) {
+    for (int j = 0; j < 16; ++j) {
+      for (int i = 0; i < 16; ++i) reversed[(s * 16 + j) * 16 + i] = base.values[(s * 16 + 15 - j) * 16 + i];
+    }
+  }
+  const Diff base_reversed = CompareFlat(reversed, Flat(base_json["Base_E_HEAD"]["data"]));
+  std::printf("Enterprise PBR against ours: Sheen_E max %.3g RMS %.3g (conty-kulla fit: RMS %.3g), Sheen_ash_E "
+              "max %.3g RMS %.3g, Base_E max %.3g RMS %.3g (rows reversed: RMS %.3g), Base_E_avg max %.3g RMS %.3g\n",
+              sheen.max, sheen.rms, sheen_ck.rms, ash.max, ash.rms, base_e.max, base_e.rms, base_reversed.rms,
+              base_avg.max, base_avg.rms);
+  EXPECT_LT(sheen.rms, 3e-3);
+  EXPECT_LT(sheen.max, 1.5e-2);
+  EXPECT_LT(ash.rms, 3e-3);
+  EXPECT_LT(ash.max, 1.5e-2);
+  EXPECT_LT(base_e.rms, 3e-3);
+  EXPECT_LT(base_e.max, 2e-2);
+  EXPECT_LT(base_avg.rms, 1e-3);
+  EXPECT_LT(base_avg.max, 3e-3);
+  EXPECT_GT(sheen_ck.rms, 0.02);
+  EXPECT_GT(base_reversed.rms, 0.02);
 }
 
 // Filament's shipped dfg.inc (64x64, a v1.19 build; tests/data): row k

@@ -157,6 +157,7 @@ TEST(EngineFileTest, ThreeImportsItsDfgModule) {
 
 TEST(EngineFileTest, EnterprisePbrHeaderServesItsApi) {
   if (!Have("c++")) GTEST_SKIP() << "no C++ compiler";
+  if (!PresetBuilt(FindPreset("enterprise-pbr"))) GTEST_SKIP() << "enterprise-pbr needs charlie";
   const std::string dir = Scratch("enterprise");
   const BakedPreset b = WritePreset("enterprise-pbr", dir);
   // One translation unit defines the arrays; another reads them through
@@ -171,14 +172,19 @@ TEST(EngineFileTest, EnterprisePbrHeaderServesItsApi) {
             "int main() {\n"
             "  Upload(GGX_E_size[0], GGX_E_size[1], &GGX_E[0][0]);\n"
             "  Upload(GGX_E_avg_size, 1, GGX_E_avg);\n"
-            "  std::printf(\"%.9g\\n\", double(GGX_E[31][0]));  // [roughness][cos_theta]\n}\n");
+            "  std::printf(\"%.9g\\n\", double(GGX_E[31][0]));  // [roughness][cos_theta]\n"
+            "  std::printf(\"%d %d %d\\n\", Base_E_size[0], Base_E_size[1], Base_E_size[2]);\n"
+            "  std::printf(\"%.9g\\n\", double(Base_E[15][3][7]));  // [f0][roughness][cos_theta]\n"
+            "  std::printf(\"%d %d\\n\", Base_E_avg_size[0], Base_E_avg_size[1]);\n"
+            "  std::printf(\"%.9g\\n\", double(Base_E_avg[5][9]));  // [f0][roughness]\n"
+            "  std::printf(\"%.9g %.9g\\n\", double(Sheen_E[2][3]), double(Sheen_ash_E[0][0]));  // [alpha][cos]\n}\n");
   int status = 0;
   Shell("c++ -std=c++17 -Wall -Wextra -Werror -o " + dir + "/use " + dir + "/impl.cc " + dir + "/use.cc", dir,
       &status);
   ASSERT_EQ(status, 0) << Slurp(dir + "/err.txt");
   const std::vector<double> v = Numbers(Shell(dir + "/use", dir, &status));
   ASSERT_EQ(status, 0);
-  ASSERT_EQ(v.size(), 2 + 1024 + 2 + 32 + 1u);
+  ASSERT_EQ(v.size(), 2 + 1024 + 2 + 32 + 1 + 3 + 1 + 2 + 1 + 2u);
   EXPECT_EQ(v[0], 32);
   EXPECT_EQ(v[1], 32);
   for (size_t i = 0; i < 1024; ++i) ASSERT_EQ(float(v[2 + i]), float(b.images[0].values[i])) << i;
@@ -187,6 +193,16 @@ TEST(EngineFileTest, EnterprisePbrHeaderServesItsApi) {
   for (size_t i = 0; i < 32; ++i) ASSERT_EQ(float(v[1028 + i]), float(b.images[1].values[i])) << i;
   // GGX_E[31][0]: the roughest row, the most grazing column.
   EXPECT_EQ(float(v[1060]), float(b.images[0].values[31 * 32]));
+  EXPECT_EQ(v[1061], 16);
+  EXPECT_EQ(v[1062], 16);
+  EXPECT_EQ(v[1063], 16);
+  EXPECT_EQ(float(v[1064]), float(b.images[2].values[(15 * 16 + 3) * 16 + 7]));
+  EXPECT_EQ(v[1065], 16);
+  EXPECT_EQ(v[1066], 16);
+  EXPECT_EQ(float(v[1067]), float(b.images[3].values[5 * 16 + 9]));
+  EXPECT_EQ(float(v[1068]), float(b.images[4].values[2 * 16 + 3]));
+  EXPECT_EQ(float(v[1069]), float(b.images[5].values[0]));
+  EXPECT_EQ(float(v[1069]), 1.0f);  // capped, as the shipped table
 }
 
 uint32_t U32(const std::string& s, size_t at) {

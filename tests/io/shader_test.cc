@@ -770,6 +770,7 @@ TEST(DocsTest, EngineSnippetsCompile) {
       PresetRun run;
       run.dir = dir;
       const Preset& e = FindPreset("enterprise-pbr");
+      if (!PresetBuilt(e)) continue;  // its sheen tables need charlie
       std::vector<Table> tables;
       std::vector<Image> images;
       for (const PresetTable& pt : e.tables) {
