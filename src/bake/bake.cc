@@ -175,9 +175,6 @@ void ValidateBakeSpec(const BakeSpec& spec) {
         " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse "
         "channels are its E)");
   }
-  if (sheen && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: " + std::string(spec.model.name()) + " tables are baked with the quadrature only");
-  }
   if (sheen && spec.complement && spec.table == TableKind::kDfg) Bad("--complement: no dfg here");
   const bool ellipsoid = m == ModelKind::kEllipsoid;
   if (ellipsoid && spec.table == TableKind::kDfg) {
@@ -362,9 +359,42 @@ TexelEstimate TexelFor(const Ndf& ndf, double mu, const BakeSpec& spec, uint64_t
   return {};
 }
 
-// E of the sheen and diffuse lobes (rules/sheen/sheen_albedo.h), in lanes
-// or by the double reference.
-TexelEstimate SheenTexel(const BakeSpec& spec, double alpha, double mu) {
+// E of the sheen and diffuse lobes: the quadrature (rules/sheen/
+// sheen_albedo.h, in lanes or by the double reference), or a sampling
+// integrator over their own samplers (sampling_integrators.h, in double
+// scalar code), the engine setting's error measured against the
+// quadrature.
+TexelEstimate SheenQuadrature(const BakeSpec& spec, double alpha, double mu);
+
+TexelEstimate SheenTexel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
+  if (spec.integrator == IntegratorKind::kQuadrature) return SheenQuadrature(spec, alpha, mu);
+  const Vec3<double> wo = SamplingView(mu);
+  const int n = spec.EffectiveSamples();
+  auto run = [&](const auto& sum) {
+    if (spec.integrator != IntegratorKind::kEngine) {
+      return QmcTexelWith(n, texel_seed, spec.integrator == IntegratorKind::kMc, sum);
+    }
+    TexelEstimate v;
+    v.e = EngineRuleWith(n, sum).e;
+    v.err_e = std::numeric_limits<double>::infinity();
+    if (spec.estimate_error) {
+      BakeSpec ref = spec;
+      ref.integrator = IntegratorKind::kQuadrature;
+      ref.tolerance = 1e-10;
+      ref.samples = 0;
+      const TexelEstimate q = SheenQuadrature(ref, alpha, mu);
+      v.err_e = std::abs(v.e - q.e) + q.err_e;
+    }
+    return v;
+  };
+  TexelEstimate v = spec.model.kind == ModelKind::kDisneyDiffuse
+                        ? run(DisneySum(DisneyDiffuse<double>(std::sqrt(alpha)), wo))
+                        : run(CharlieSum(CharlieSheen<double>(alpha, spec.model.visibility), wo));
+  v.scale = v.bias = v.err_scale = v.err_bias = 0;
+  return v;
+}
+
+TexelEstimate SheenQuadrature(const BakeSpec& spec, double alpha, double mu) {
   RuleResult r;
   if (spec.model.kind == ModelKind::kDisneyDiffuse) {
     const double rough = std::sqrt(alpha);
@@ -383,7 +413,7 @@ TexelEstimate SheenTexel(const BakeSpec& spec, double alpha, double mu) {
 
 TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
   const ModelKind m = spec.model.kind;
-  if (m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse) return SheenTexel(spec, alpha, mu);
+  if (m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse) return SheenTexel(spec, alpha, mu, texel_seed);
   if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   if (m == ModelKind::kGgx) return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
 #if BRDFBAKE_WITH_BECKMANN
@@ -598,6 +628,13 @@ std::string IntegratorJson(const BakeSpec& spec) {
       j["sampling"] = "NDF importance sampling of the half vector";
       j["error_estimate"] = "difference from the converged quadrature (tolerance 1e-10) plus its error";
       break;
+  }
+  if (spec.integrator != IntegratorKind::kQuadrature && spec.model.kind == ModelKind::kCharlie) {
+    j["sampling"] = std::string("the Charlie NDF's half vector (pdf D(h) h.z / (4 wo.h)), ") +
+                    (spec.integrator == IntegratorKind::kEngine ? "as the Khronos renderer's generator"
+                                                                  : "double scalar code");
+  } else if (spec.integrator != IntegratorKind::kQuadrature && spec.model.kind == ModelKind::kDisneyDiffuse) {
+    j["sampling"] = "the cosine (pdf wi.z / pi), as HDRP's generator; double scalar code";
   }
   if (spec.table == TableKind::kEavg && spec.model.kind == ModelKind::kEllipsoid) {
     j["E_avg"] = "(1/pi) int E(wo) cos(theta_o) dwo = int_0^1 4 s^3 A(s) ds, s = sqrt(mu), by "
@@ -981,7 +1018,7 @@ EavgEstimate IntegrateBiasAvg(const BakeSpec& spec, double roughness) {
 
 EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
   const double alpha = AlphaFromRoughness(roughness);
-  if (spec.model.kind == ModelKind::kDisneyDiffuse) {
+  if (spec.model.kind == ModelKind::kDisneyDiffuse && spec.integrator == IntegratorKind::kQuadrature) {
     const RuleResult r = spec.simd ? SimdDisneyEavg(roughness) : DisneyEavg(roughness);
     return {r.value, r.error};
   }

@@ -19,7 +19,9 @@
 #include "brdfbake/estimate.h"
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/models/disney_diffuse.h"
 #include "brdfbake/models/ggx.h"
+#include "brdfbake/models/sheen.h"
 #include "brdfbake/models/std_ndf.h"
 #include "quadrature/gauss_legendre.h"
 #include "sampling/texel_integrand.h"
@@ -166,6 +168,40 @@ QuadratureResult EngineRule(const Ndf& ndf, double mu, Masking masking, int samp
     *acc = e;
     *acc_fc = fc;
   });
+}
+
+// The sums of the lobes without a Fresnel factor (acc_fc = 0), for
+// QmcTexelWith and EngineRuleWith. The Charlie sheen draws its half vector
+// from its NDF (CharlieSheen::SampleNdf, pdf(wi) = D(h) h.z / (4 wo.h)):
+// the weight f wi.z / pdf is 4 V wi.z (wo.h) / h.z. The Disney lobe draws
+// the light by the cosine (pdf wi.z / pi): the weight is pi f.
+inline auto CharlieSum(const CharlieSheen<double>& sheen, const Vec3<double>& wo) {
+  return [sheen, wo](const double* u1, const double* u2, int n, double* acc, double* acc_fc) {
+    double e = 0;
+    for (int i = 0; i < n; ++i) {
+      const Vec3<double> h = sheen.SampleNdf(u1[i], u2[i]);
+      const Vec3<double> wi = Reflect(wo, h);
+      const double wo_h = Dot(wo, h);
+      if (!(wi.z > 0) || !(wo_h > 0) || !(h.z > 0)) continue;
+      e += 4 * sheen.Visibility(std::min(wi.z, 1.0), std::min(wo.z, 1.0)) * wi.z * wo_h / h.z;
+    }
+    *acc = e;
+    *acc_fc = 0;
+  };
+}
+
+inline auto DisneySum(const DisneyDiffuse<double>& f, const Vec3<double>& wo) {
+  return [f, wo](const double* u1, const double* u2, int n, double* acc, double* acc_fc) {
+    double e = 0;
+    for (int i = 0; i < n; ++i) {
+      const double s = std::sqrt(u2[i]), phi = 2 * kPi<double> * u1[i];
+      const Vec3<double> wi{s * std::cos(phi), s * std::sin(phi), std::sqrt(std::max(0.0, 1 - u2[i]))};
+      if (!(wi.z > 0)) continue;
+      e += kPi<double> * f.Brdf(wi, wo);
+    }
+    *acc = e;
+    *acc_fc = 0;
+  };
 }
 
 }  // namespace brdfbake
