@@ -38,6 +38,12 @@ struct PresetTable {
   // 1]): another model's E over the same axes, such as the Charlie sheen
   // in Filament's third channel. Their axes are the table's own.
   std::vector<BakeSpec> with;
+  // Whether the engine's code fixes the table's size, so that a scene may
+  // not choose another: a header array (Cycles, Enterprise PBR), an .inc
+  // body (Filament's DFG_LUT_SIZE) or edges placement (HDRP's remap by the
+  // texture's resolution). Otherwise the engine samples at normalized
+  // coordinates over texel centres and reads the size from the file.
+  bool size_fixed = false;
   // A table formed from GGX's over a third axis, F0 (`f0`, slices; rows
   // for E_avg): Enterprise PBR's Base_E and Base_E_avg ([EnterprisePbr]
   // "Energy Conservation"), the albedo of GGX with Schlick's Fresnel (F90 =

@@ -307,6 +307,14 @@ std::vector<Preset> MakePresets() {
     }
     p.push_back(e);
   }
+  // The sizes the engines' code fixes (PresetTable::size_fixed).
+  for (Preset& preset : p) {
+    for (PresetTable& pt : preset.tables) {
+      pt.size_fixed = !preset.header_file.empty() || pt.container == Container::kHeader ||
+                      pt.container == Container::kInc || pt.spec.mu.placement != Placement::kCenters ||
+                      pt.spec.roughness.placement != Placement::kCenters;
+    }
+  }
   return p;
 }
 

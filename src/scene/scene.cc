@@ -705,16 +705,6 @@ const PresetTable* SheenChannelTable(const Preset& preset) {
   return nullptr;
 }
 
-// The engine samples its table at normalized coordinates over texel
-// centres and reads its size from the file (an image, or the module's
-// texture): the scene may choose the size. A header array (Cycles,
-// Enterprise PBR), an .inc body (Filament: DFG_LUT_SIZE) or edges placement
-// (HDRP's remap by the texture's resolution) fixes it.
-bool EngineFixesSize(const Preset& preset, const PresetTable& pt) {
-  return !preset.header_file.empty() || pt.container == Container::kHeader || pt.container == Container::kInc ||
-         pt.spec.mu.placement != Placement::kCenters || pt.spec.roughness.placement != Placement::kCenters;
-}
-
 // The table kinds a scene bakes: the engine's, and under a preset only
 // those its engine samples.
 std::vector<TableKind> SceneKinds(const Scene& scene) {
@@ -1011,7 +1001,7 @@ class Planner {
 
   bool IsoSizeFixed(TableKind kind, ModelKind model) const {
     const PresetTable* et = Engine(kind, model);
-    return et && EngineFixesSize(*preset_, *et);
+    return et && et->size_fixed;
   }
 
   // The ladder of an isotropic table: sizes 2, 4, ... up to the limit per
@@ -1120,22 +1110,28 @@ class Planner {
     return base;
   }
 
+  // A rung of the ggx-aniso ladder: E with n mu entries and n / 2 on the
+  // other axes the box spans, E_avg n per spanned axis.
+  static BakeSpec AnisoRung(const BakeSpec& base, const Rung& rung) {
+    const bool eavg = base.table == TableKind::kEavg;
+    const bool span_r = base.roughness.size > 1, span_s = base.anisotropy.size > 1;
+    BakeSpec spec = base;
+    const int half = std::max(2, rung.n / 2);
+    if (!eavg) {
+      spec.mu.size = rung.n;
+      spec.mu.warp = rung.warp;
+      spec.phi.size = half;
+    }
+    spec.roughness.size = span_r ? (eavg ? rung.n : half) : 1;
+    spec.anisotropy.size = span_s ? (eavg ? rung.n : half) : 1;
+    return spec;
+  }
+
   PlannedTable PlanAniso(const BakeSpec& base, const std::string& label, int64_t stop_texels) const {
     const double target = scene_.engine.error_target;
     const bool eavg = base.table == TableKind::kEavg;
     const bool span_r = base.roughness.size > 1, span_s = base.anisotropy.size > 1;
-    auto make = [&](const Rung& rung) {
-      BakeSpec spec = base;
-      const int half = std::max(2, rung.n / 2);
-      if (!eavg) {
-        spec.mu.size = rung.n;
-        spec.mu.warp = rung.warp;
-        spec.phi.size = half;
-      }
-      spec.roughness.size = span_r ? (eavg ? rung.n : half) : 1;
-      spec.anisotropy.size = span_s ? (eavg ? rung.n : half) : 1;
-      return spec;
-    };
+    auto make = [&](const Rung& rung) { return AnisoRung(base, rung); };
     // E_avg(r, s) costs a hemispherical integral per entry: at most 8 per
     // axis; E at most 2^16 texels.
     std::vector<Rung> rungs;
@@ -1147,10 +1143,40 @@ class Planner {
         if (SpecTexels(make(r)) <= (int64_t(1) << 16)) rungs.push_back(r);
       }
     }
+    return Climb(rungs, make, GenericLayout(), AnisoProbe(eavg), 0.0, target, label, progress_, stop_texels);
+  }
+
+  static ProbeOptions AnisoProbe(bool eavg) {
     ProbeOptions probe;
     probe.probes = eavg ? 4 : 8;
     probe.minor_probes = 4;
-    return Climb(rungs, make, GenericLayout(), probe, 0.0, target, label, progress_, stop_texels);
+    return probe;
+  }
+
+  // For a 4D table that misses the target within the size limit: the
+  // smallest one beyond the limit that would meet it (E: up to 4 times
+  // the limit per mu and 2^18 texels; E_avg: up to 16 per axis), as
+  // PlanIso's hint says it for the isotropic tables.
+  std::string AnisoHint(const BakeSpec& base, const std::string& label) const {
+    const bool eavg = base.table == TableKind::kEavg;
+    const int limit = scene_.engine.max_lut_size;
+    std::vector<Rung> rungs;
+    if (eavg) {
+      if (base.roughness.size <= 1 && base.anisotropy.size <= 1) return "";
+      rungs = Rungs(Doublings(2 * std::min(8, limit), 16), {Warp::kLinear});
+    } else {
+      for (const Rung& r : Rungs(Doublings(2 * limit, 4 * limit), {Warp::kLinear, Warp::kSquare})) {
+        if (SpecTexels(AnisoRung(base, r)) <= (int64_t(1) << 18)) rungs.push_back(r);
+      }
+    }
+    const std::string reach = eavg ? "16 per axis" : "2^18 texels";
+    if (rungs.empty()) return "no larger table within " + reach;
+    const PlannedTable h = Climb(rungs, [&](const Rung& r) { return AnisoRung(base, r); }, GenericLayout(),
+                                 AnisoProbe(eavg), 0.0, scene_.engine.error_target, label + " (beyond the limit)",
+                                 progress_);
+    if (!h.meets_target) return "no size up to " + reach + " meets it";
+    return SizeText(h.table) + (eavg ? "" : std::string(", mu warp ") + WarpName(h.spec.mu.warp)) +
+           " would meet it (lookup error " + Num(h.total_error) + ")";
   }
 
   const Preset* preset() const { return preset_; }
@@ -1540,6 +1566,10 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
         a.why = "used by " + std::to_string(members.size()) + " anisotropic material" + (members.size() > 1 ? "s" : "") +
                 ", roughness " + Range(box.rmin, box.rmax) + ", anisotropy " + Range(box.smin, box.smax);
         if (planner.preset()) a.why += "; engine preset '" + scene.engine.preset + "' has no layout for it: brdfbake's own";
+        if (!a.meets_target) {
+          a.hint = planner.AnisoHint(planner.AnisoBase(a.spec.table, masking, box),
+                                     std::string(TableName(a.spec.table)) + " " + group);
+        }
         aniso_tables.push_back(std::move(a));
       }
     }

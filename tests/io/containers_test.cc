@@ -305,6 +305,15 @@ TEST(PresetTest, Khronos) {
   }
 }
 
+// Which engines fix their tables' size in code (a scene may not choose
+// another): header arrays, Filament's .inc, HDRP's edges remap.
+TEST(PresetTest, SizeFixedByTheEngine) {
+  for (const Preset& p : Presets()) {
+    const bool fixed = p.name == "filament" || p.name == "cycles" || p.name == "enterprise-pbr" || p.name == "hdrp";
+    for (const PresetTable& pt : p.tables) EXPECT_EQ(pt.size_fixed, fixed) << p.name << " " << pt.symbol;
+  }
+}
+
 // Enterprise PBR's pbrlut.hpp tables beyond GGX_E and GGX_E_avg: Base_E
 // and Base_E_avg (GGX with Schlick's Fresnel and the multiple-scattering
 // lobe, over F0), Sheen_E (its refined Lambda fit) and Sheen_ash_E

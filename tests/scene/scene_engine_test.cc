@@ -121,6 +121,22 @@ TEST(SceneAnisoTest, AnisotropicOnlySceneBakesWhatItNeeds) {
   EXPECT_EQ(m["decisions"].size(), 1u);
 }
 
+// The same material under a size limit too small for the target: the 4D
+// tables miss it (so do the isotropic ones, by the collapse alone), and
+// the plan says which larger 4D table would meet it.
+TEST(SceneAnisoTest, Missed4dTargetSaysWhatWouldMeetIt) {
+  const std::string dir = test::Scratch("scene_aniso_hint");
+  const Scene s = Toml(dir,
+                       "[engine]\nmax_lut_size = 4\nerror_target = 2e-2\npixel = \"float\"\n"
+                       "[[material]]\nname = \"a\"\nmodel = \"ggx-aniso\"\nroughness = 0.5\nanisotropy = 0.8\n");
+  const ScenePlan plan = PlanScene(s);
+  const PlannedTable* e = Find(plan, "E_ggx-aniso.exr");
+  ASSERT_NE(e, nullptr) << PlanText(s, plan);
+  EXPECT_FALSE(e->meets_target) << e->total_error;
+  EXPECT_NE(e->hint.find("would meet it"), std::string::npos) << e->hint;
+  EXPECT_NE(PlanText(s, plan).find("to meet the target: "), std::string::npos);
+}
+
 // A weak anisotropy: the isotropic tables at the collapsed roughness meet
 // the target and are smaller than the 4D ones.
 TEST(SceneAnisoTest, WeakAnisotropyIsLookedUpAtTheCollapsedRoughness) {
