@@ -666,8 +666,8 @@ const char* ExtensionOf(Container c) {
 }
 
 // The group of a scene's sheen layers: the Charlie NDF with the
-// conty-kulla visibility (glTF's KHR_materials_sheen, as the Khronos sample
-// renderer's V_Sheen shades it).
+// conty-kulla visibility (glTF's KHR_materials_sheen), or under a preset
+// the visibility of the engine's own sheen table.
 constexpr const char* kSheenGroup = "charlie";
 // The smallest NoV at which the sheen's E is evaluated (IsoBase).
 constexpr double kSheenMinNoV = 1e-4;
@@ -970,6 +970,13 @@ class Planner {
     base.model.gamma = model.model == ModelKind::kStudentT ? model.gamma : 2.0;
     base.masking = model.masking;
     if (et) return base;
+    // A sheen table the engine does not ship (E_avg) takes the visibility
+    // of the sheen E it does ship, so that the two agree.
+    if (base.model.kind == ModelKind::kCharlie && preset_) {
+      if (const PresetTable* e = EngineTable(*preset_, TableKind::kE, ModelKind::kCharlie)) {
+        base.model.visibility = e->spec.model.visibility;
+      }
+    }
     base.half = !preset_ && scene_.engine.pixel == PixelType::kHalf;
     base.complement = !preset_ && scene_.engine.complement && kind != TableKind::kDfg;
     base.mu.placement = base.roughness.placement = preset_ ? Placement::kCenters : scene_.engine.placement;
@@ -1214,7 +1221,14 @@ std::string EngineSheen(const std::string& preset) {
            "neubelt visibility clamped at 1, from the B channel of its albedo table and scales the layer beneath by "
            "1 - albedo";
   }
-  if (preset == "enterprise-pbr") return "Enterprise PBR's pbrlut.hpp declares a Sheen_E table, which its preset does not bake";
+  if (preset == "enterprise-pbr") {
+    return "Enterprise PBR's pbrlut.hpp ships Sheen_E, the Charlie E with its refined Lambda fit (the "
+           "enterprise-pbr visibility)";
+  }
+  if (preset == "khronos") {
+    return "the Khronos renderer's lut_sheen_E.png holds the Charlie E with its V_Sheen capped at 1 (the "
+           "conty-kulla-clamped visibility)";
+  }
   return "";
 }
 
@@ -1235,14 +1249,21 @@ std::string SheenDecision(const Scene& scene, const std::vector<TableKind>& kind
                                     "(1 - max(sheenColor) E, looked up at the view and at the light)"
                                   : "the charlie E_avg over sheen roughness, for energy-compensation schemes");
   }
-  std::string s = "the Charlie NDF with the conty-kulla visibility, as glTF's KHR_materials_sheen and the Khronos "
-                  "sample renderer (V_Sheen) shade it; its Fresnel factor is 1 (sheenColor tints it), so no dfg";
+  std::string s = "the Charlie NDF with the conty-kulla visibility, as glTF's KHR_materials_sheen defines it (the "
+                  "Khronos sample renderer caps its V_Sheen at 1); its Fresnel factor is 1 (sheenColor tints it), so "
+                  "no dfg";
   if (kinds.empty()) return s + "; the engine samples no E or E_avg table, so no sheen table is baked";
   s += ": " + tables;
   if (!preset.empty()) {
     std::vector<TableKind> own;
     for (TableKind k : kinds) {
       if (EngineTable(FindPreset(preset), k, ModelKind::kCharlie)) own.push_back(k);
+    }
+    const PresetTable* own_e = EngineTable(FindPreset(preset), TableKind::kE, ModelKind::kCharlie);
+    if (own_e && own_e->spec.model.visibility != SheenVisibility::kContyKulla) {
+      s += "; engine preset '" + preset + "' shades it with the " +
+           SheenVisibilityName(own_e->spec.model.visibility) + " visibility" + (engine.empty() ? "" : " (" + engine + ")") +
+           ", and every sheen table here takes it";
     }
     if (own.size() == kinds.size()) {
       s += ", in engine preset '" + preset + "''s own sheen layout";
@@ -1603,12 +1624,18 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       const Slot slot = SlotOf(scene, kind, group, false);
       if (group == kSheenGroup) {
         p.why = "used by the sheen layer of " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") +
-                " (the Charlie NDF with the conty-kulla visibility, as glTF's KHR_materials_sheen), sheen roughness " +
+                " (the Charlie NDF with the " + SheenVisibilityName(p.spec.model.visibility) + " visibility" +
+                (p.spec.model.visibility == SheenVisibility::kContyKulla ? ", as glTF's KHR_materials_sheen"
+                                                                         : ", the engine's") +
+                "), sheen roughness " +
                 Range(rmin, rmax) +
                 (kind == TableKind::kE ? "; the base layer under it is scaled by 1 - max(sheenColor) E(NoV, r), E "
                                          "looked up at the view and at the light"
                                        : "; E_avg, for energy-compensation schemes");
-        if (slot.generic) p.why += "; engine preset '" + scene.engine.preset + "' has no sheen table: brdfbake's own";
+        if (slot.generic) {
+          p.why += "; engine preset '" + scene.engine.preset + "' has no sheen " +
+                   (kind == TableKind::kE ? "table" : std::string(TableName(kind)) + " table") + ": brdfbake's own";
+        }
       } else {
         p.why = "used by " + std::to_string(ms.size()) + " material" + (ms.size() > 1 ? "s" : "") + " with model " +
                 group + ", roughness " + Range(rmin, rmax) + extra;
