@@ -153,7 +153,9 @@ TEST(DielectricTest, HeightCorrelatedBetaIsTheHeightIntegral) {
           [&](double u) { return std::pow(u, a) * std::pow(1 - u, b); }, 0.0, 1.0, 1e-14);
       EXPECT_NEAR(HeightCorrelatedBeta(a, b), q, 1e-12 * q) << a << " " << b;
       EXPECT_LE(HeightCorrelatedBeta(a, b), 1 / (1 + a + b) * (1 + 1e-12));
-      if (a == 0 || b == 0) EXPECT_NEAR(HeightCorrelatedBeta(a, b), 1 / (1 + a + b), 1e-13);
+      if (a == 0 || b == 0) {
+        EXPECT_NEAR(HeightCorrelatedBeta(a, b), 1 / (1 + a + b), 1e-13);
+      }
     }
   }
 }
