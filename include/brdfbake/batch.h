@@ -17,6 +17,7 @@
 
 #include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/fresnel.h"
 
 namespace brdfbake {
@@ -157,6 +158,30 @@ void SampleLightBatch(const BatchModel& model, DirArrays wo, const float* u1, co
                       LightSampleArrays wi, size_t n);
 void SampleLightBatch(const BatchModel& model, const BatchElements& elements, DirArrays wo,
                       const float* u1, const float* u2, LightSampleArrays wi, size_t n);
+
+// The rough dielectric BSDF of [Walter07] (models/dielectric.h,
+// RoughDielectric: index 1 above the surface, eta below; wi and wo anywhere
+// on the sphere) over GGX or Beckmann. Checked like BatchModel, before any
+// output is written (std::invalid_argument naming the field):
+//   ndf               ModelKind::kGgx or kBeckmann (kBeckmann needs the
+//                     beckmann family in the build, glass needs glass)
+//   alpha_x, alpha_y  (0, 1e4]; below 1e-4 evaluated at 1e-4
+//   eta               [0.01, 100]; eta = 1 (no interface) gives f = 0
+struct BatchDielectric {
+  ModelKind ndf = ModelKind::kGgx;
+  float alpha_x = 0.25f, alpha_y = 0.25f;
+  float eta = 1.5f;
+  Masking masking = Masking::kHeightCorrelated;
+  DielectricTransport transport = DielectricTransport::kRadiance;
+};
+enum class DielectricQuantity {
+  kBsdf,     // f(wi, wo): reflection on one side, refraction across
+  kBsdfCos,  // f(wi, wo) |wi.n|, the integrand of the albedo E(wo)
+};
+// out[j] = q(wi[j], wo[j]) for n pairs, in float lanes (the error bounds
+// are in src/kernels/dielectric-inl.h).
+void DielectricBsdfBatch(const BatchDielectric& model, DielectricQuantity q, DirArrays wi,
+                         DirArrays wo, float* out, size_t n);
 
 // FresnelDielectric(eta, cos_i[j]) for n cosines (clamped to [0, 1]);
 // eta = n_t / n_i in [0.01, 100].

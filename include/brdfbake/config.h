@@ -31,6 +31,11 @@
 #ifndef BRDFBAKE_WITH_DISNEY
 #define BRDFBAKE_WITH_DISNEY 1
 #endif
+// The rough dielectric BSDF (models/dielectric.h): its kernels and
+// DielectricBsdfBatch (batch.h). Its Beckmann variant needs beckmann.
+#ifndef BRDFBAKE_WITH_GLASS
+#define BRDFBAKE_WITH_GLASS 1
+#endif
 
 #if BRDFBAKE_WITH_STD && !BRDFBAKE_WITH_BECKMANN
 #error "the std family needs beckmann (BRDFBAKE_MODELS)"

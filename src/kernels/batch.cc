@@ -267,7 +267,39 @@ void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, 
   });
 }
 
+void CheckDielectric(const BatchDielectric& m) {
+  const char* entry = "DielectricBsdfBatch";
+#if !BRDFBAKE_WITH_GLASS
+  Bad(std::string(entry) + ": the glass family is not in this build (BRDFBAKE_MODELS)");
+#endif
+  if (m.ndf != ModelKind::kGgx && m.ndf != ModelKind::kBeckmann) {
+    Bad(std::string(entry) + ": ndf " + ModelName(m.ndf) + " is not ggx or beckmann");
+  }
+#if !BRDFBAKE_WITH_BECKMANN
+  if (m.ndf == ModelKind::kBeckmann) {
+    Bad(std::string(entry) + ": ndf beckmann is not in this build (BRDFBAKE_MODELS)");
+  }
+#endif
+  if (!(m.alpha_x > 0 && m.alpha_x <= 1e4f)) Outside(entry, "alpha_x", m.alpha_x, "(0, 1e4]");
+  if (!(m.alpha_y > 0 && m.alpha_y <= 1e4f)) Outside(entry, "alpha_y", m.alpha_y, "(0, 1e4]");
+  if (!Within(m.eta, kMinIndex, kMaxIndex)) Outside(entry, "eta", m.eta, "[0.01, 100]");
+}
+
 }  // namespace
+
+void DielectricBsdfBatch(const BatchDielectric& model, DielectricQuantity q, DirArrays wi,
+                         DirArrays wo, float* out, size_t n) {
+  CheckDielectric(model);
+#if BRDFBAKE_WITH_GLASS
+  if (n == 0) return;
+  const float* in[6] = {wi.x, wi.y, wi.z, wo.x, wo.y, wo.z};
+  // Beckmann's exponential passes through the subnormal range (see
+  // ModelDispatch::flush_subnormals).
+  MaybeFlushed(model.ndf == ModelKind::kBeckmann, [&] { GlassEvalBatch(model, q, in, out, n); });
+#else
+  (void)q, (void)wi, (void)wo, (void)out, (void)n;
+#endif
+}
 
 BatchModel BatchModelOf(const ModelParams& model, Masking masking, const Fresnel& fresnel) {
   BatchModel p;

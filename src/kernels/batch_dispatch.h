@@ -62,6 +62,9 @@ void CharlieEvalBatch(const BatchModel& p, Quantity q, const float* const* in, f
 void CharlieSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
                         size_t n);
 void DisneyEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
+// The rough dielectric (batch_glass.cc): `in` holds the 6 arrays of (wi, wo).
+void GlassEvalBatch(const BatchDielectric& p, DielectricQuantity q, const float* const* in,
+                    float* out, size_t n);
 
 // In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
 // Model##Eval (and Model##Sample) and defines the dispatchers above.

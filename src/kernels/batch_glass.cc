@@ -1,0 +1,67 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The rough dielectric BSDF's batch kernel (src/kernels/dielectric-inl.h)
+// behind batch.h (DielectricBsdfBatch), compiled once per Highway target by
+// foreach_target.h.
+
+#include "brdfbake/config.h"
+#include "kernels/batch_dispatch.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/kernels/batch_glass.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+#include "kernels/batch_rows-inl.h"
+#include "kernels/dielectric-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+using DF = hn::ScalableTag<float>;
+
+// One pass over the pairs with the NDF's part `ndf`; masking and the
+// cosine weight resolved once per call.
+template <class Ndf>
+void GlassRows(const DielectricConsts<DF>& k, const Ndf& ndf, bool separable, bool cos_weighted,
+               const float* const* in, float* out, size_t n) {
+  PairRows(
+      [&](auto d, auto ix, auto iy, auto iz, auto ox, auto oy, auto oz) {
+        return DielectricBsdf(d, k, ndf, separable, cos_weighted, ix, iy, iz, ox, oy, oz);
+      },
+      in, out, n);
+}
+
+void GlassEval(const BatchDielectric& p, DielectricQuantity q, const float* const* in, float* out,
+               size_t n) {
+  const DF d;
+  const DielectricConsts<DF> k(d, p.eta, p.transport);
+  const bool separable = p.masking == Masking::kSeparable;
+  const bool cos_weighted = q == DielectricQuantity::kBsdfCos;
+#if BRDFBAKE_WITH_BECKMANN
+  if (p.ndf == ModelKind::kBeckmann) {
+    const BeckmannConsts<DF> c(d, p.alpha_x, p.alpha_y, 1.0f);
+    return GlassRows(k, BeckmannDielectricNdf<DF>{c}, separable, cos_weighted, in, out, n);
+  }
+#endif
+  const GgxConsts<DF> c(d, p.alpha_x, p.alpha_y, 1.0f);
+  GlassRows(k, GgxDielectricNdf<DF>{c}, separable, cos_weighted, in, out, n);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+HWY_EXPORT(GlassEval);
+void GlassEvalBatch(const BatchDielectric& p, DielectricQuantity q, const float* const* in,
+                    float* out, size_t n) {
+  HWY_DYNAMIC_DISPATCH(GlassEval)(p, q, in, out, n);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE
