@@ -204,15 +204,22 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     auto make = [&](Var var, double a, double b) {
       return nodes.Piece(var, t, var == Var::kLog ? eps : power, a, b);
     };
+    // The pieces, in slots left uninitialised (an array of GkPiece, whose
+    // members start at 0, was zeroed whole at every node).
+    struct Slot {
+      double a, b, value, err;
+      Var var;
+    };
     constexpr int kMaxArcPieces = 96;
-    GkPiece pieces[kMaxArcPieces];
-    Var vars[kMaxArcPieces];
+    Slot pieces[kMaxArcPieces];
     int n = 0;
+    auto put = [&](int k, Var var, double a, double b) {
+      const GkPiece p = make(var, a, b);
+      pieces[k] = Slot{p.a, p.b, p.value, p.err, var};
+    };
     auto add = [&](const double* cuts, int m, Var var) {
       for (int k = 0; k + 1 < m; ++k) {
-        if (!(cuts[k + 1] > cuts[k])) continue;
-        vars[n] = var;
-        pieces[n++] = make(var, cuts[k], cuts[k + 1]);
+        if (cuts[k + 1] > cuts[k]) put(n++, var, cuts[k], cuts[k + 1]);
       }
     };
     add(phi_cuts, n_phi, Var::kPhi);
@@ -234,11 +241,10 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       for (int k = 1; k < n; ++k) {
         if (pieces[k].err > pieces[w].err) w = k;
       }
-      const GkPiece p = pieces[w];
+      const Slot p = pieces[w];
       const double m = 0.5 * (p.a + p.b);
-      pieces[w] = make(vars[w], p.a, m);
-      vars[n] = vars[w];
-      pieces[n++] = make(vars[w], m, p.b);
+      put(w, p.var, p.a, m);
+      put(n++, p.var, m, p.b);
     }
     *err = e;
     return v;
