@@ -38,6 +38,49 @@ struct SimdCharlieNodes {
   double mu;
   double lambda_mu;  // conty-kulla: Lambda(mu)
 
+  // ScalarCharlieNodes::Outer in lanes: Highway's Sin, Cos, Acos and
+  // Log1p, D by CharlieDCos2.
+  void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double in[16];
+    NodesTo16(sv, in);
+    const V one = hn::Set(d, 1.0), minus_one = hn::Set(d, -1.0), zero = hn::Zero(d);
+    const V mu = hn::Set(d, o.mu), s_mu = hn::Set(d, o.s_mu), theta_max = hn::Set(d, o.theta_max);
+    const V inv_eps = hn::Set(d, 1 / o.eps);
+    for (size_t i = 0; i < 16; i += N) {
+      const V x = hn::Load(d, in + i);
+      const V th = hn::Mul(theta_max, hn::NegMulAdd(x, x, one));
+      const V cv = hn::Cos(d, th), sv_th = hn::Sin(d, th);
+      const V w = hn::Mul(hn::Mul(CharlieDCos2(d, c, hn::Mul(cv, cv)), sv_th),
+                          hn::Mul(hn::Set(d, 2 * o.theta_max), x));
+      const V p = hn::Mul(mu, cv), r = hn::Mul(s_mu, sv_th), two_c = hn::Add(cv, cv);
+      const auto r_pos = hn::Gt(r, zero);
+      const V rs = hn::IfThenElse(r_pos, r, one);
+      // cos(phi) where NoL = nol; -1 (phi = pi) where r = 0.
+      auto cos_at = [&](V nol) {
+        const V v = hn::Div(hn::Sub(hn::Div(hn::Add(nol, mu), two_c), p), rs);
+        return hn::IfThenElse(r_pos, hn::Min(hn::Max(v, minus_one), one), minus_one);
+      };
+      const V cm = hn::IfThenElse(r_pos, hn::Div(hn::Sub(hn::Div(mu, two_c), p), rs), minus_one);
+      const V phi_max = hn::IfThenElse(
+          hn::Lt(cm, one), hn::Acos(d, hn::Min(hn::Max(cm, minus_one), one)), zero);
+      const V nol0 = hn::Sub(hn::Mul(two_c, hn::Add(p, r)), mu);
+      V split = hn::Mul(hn::Set(d, 0.5), nol0);
+      if (o.lambda) {
+        split = hn::IfThenElse(hn::Ge(nol0, hn::Set(d, 0.8)), hn::Set(d, 0.5),
+                               hn::Mul(hn::Set(d, 0.35), nol0));
+      }
+      hn::StoreU(cv, d, out->c + i);
+      hn::StoreU(sv_th, d, out->s + i);
+      hn::StoreU(w, d, out->w + i);
+      hn::StoreU(phi_max, d, out->phi_max + i);
+      hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
+      hn::StoreU(hn::Acos(d, cos_at(split)), d, out->phi_split + i);
+      hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
+    }
+  }
+
   GkPiece Piece(CharlieArcVar var, const CharlieArcTerms& t, double arg, double a, double b) const {
     switch (var) {
       case CharlieArcVar::kZ: return Sums<CharlieArcVar::kZ>(t, arg, a, b);

@@ -65,13 +65,33 @@ inline double ArcSine(const CharlieArcTerms& t, double nol) {
   return std::sqrt(std::max((nol0 - nol) * (nol - nol_pi), 0.0));
 }
 
+// The NoL from which an arc's end part (down to NoL = 0) takes its own
+// variable, for an arc whose largest NoL is nol0 (CharlieAlbedoWith).
+inline double CharlieSplitNoL(bool lambda, double nol0) {
+  return lambda ? (nol0 >= 0.8 ? 0.5 : 0.35 * nol0) : 0.5 * nol0;
+}
+
+// The outer nodes of one piece in s, theta_h = theta_max (1 - s^2), as a
+// node evaluator's Outer gives them: cos and sin of theta_h, the weight w
+// = D(theta_h) sin(theta_h) dtheta_h/ds, and the arc's azimuths: its end
+// phi_max (pi: the whole circle; 0: empty), where NoL is 1/2 and
+// CharlieSplitNoL, and tau's range log1p(split / eps) (neubelt).
+struct CharlieOuterSetup {
+  double theta_max, mu, s_mu, eps;
+  bool lambda;  // the visibility has a Lambda
+};
+struct CharlieOuterNodes {
+  double c[16], s[16], w[16], phi_max[16], phi_half[16], phi_split[16], tau_hi[16];
+};
+
 // The variable of an arc piece: the azimuth phi_h; z = NoL^power towards
 // the arc's end; tau = log1p(NoL / eps) there (CharlieAlbedoWith).
 enum class CharlieArcVar { kPhi, kZ, kLog };
 
 // The double reference's g at a node x of the variable `var` (arg: power
 // for kZ, eps for kLog), times dphi/dx, and its Gauss-Kronrod 15 piece
-// (times 2: J = 2 int g dphi). A node evaluator gives Piece.
+// (times 2: J = 2 int g dphi); and an outer piece's nodes. A node
+// evaluator gives Outer and Piece.
 struct ScalarCharlieNodes {
   const CharlieSheen<double>* sheen;
   double At(CharlieArcVar var, const CharlieArcTerms& t, double arg, double x) const {
@@ -85,6 +105,26 @@ struct ScalarCharlieNodes {
     const double nol = z ? std::pow(x, 1 / arg) : arg * std::expm1(x);
     const double jac = z ? nol / (x * arg * ArcSine(t, nol)) : (nol + arg) / ArcSine(t, nol);
     return CharlieArcIntegrand(*sheen, t.mu, (nol + t.mu) / t.two_c, nol) * jac;
+  }
+  void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
+    for (int i = 0; i < 15; ++i) {
+      const double th = o.theta_max * (1 - sv[i] * sv[i]);
+      const double c = std::cos(th), s = std::sin(th);
+      out->c[i] = c;
+      out->s[i] = s;
+      out->w[i] = sheen->DCos2(c * c) * s * 2 * o.theta_max * sv[i];
+      const CharlieArcTerms t{o.mu * c, o.s_mu * s, 2 * c, o.mu};
+      // NoL = 0 at cos(phi) = (mu / (2 c) - mu c) / (s_mu s).
+      const double cm = t.r > 0 ? (o.mu / t.two_c - t.p) / t.r : -1.0;
+      out->phi_max[i] = !(cm < 1) ? 0.0 : cm <= -1 ? kPi<double> : std::acos(cm);
+      const double split = CharlieSplitNoL(o.lambda, t.two_c * (t.p + t.r) - o.mu);
+      auto phi_at = [&](double nol) {
+        return std::acos(std::clamp(((nol + o.mu) / t.two_c - t.p) / t.r, -1.0, 1.0));
+      };
+      out->phi_half[i] = phi_at(0.5);
+      out->phi_split[i] = phi_at(split);
+      out->tau_hi[i] = std::log1p(split / o.eps);
+    }
   }
   GkPiece Piece(CharlieArcVar var, const CharlieArcTerms& t, double arg, double a, double b) const {
     return KronrodPieceBatch(a, b, 2.0, [&](const double* x, double* v, double* e) {
@@ -117,16 +157,17 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   const double theta_max = 0.25 * kPi<double> + 0.5 * std::acos(mu);
   // J(theta_h) = 2 int_0^phi_max g dphi with its error, to an absolute
   // tolerance `inner_tol`.
-  auto over_arc = [&](double c, double s, double inner_tol, double* err) {
+  // The neubelt tau's scale (below).
+  const double eps = ck ? 1.0 : std::min(mu / (1 - mu), 1e6);
+  const CharlieOuterSetup setup{theta_max, mu, s_mu, eps, ck};
+  auto over_arc = [&](const CharlieOuterNodes& o, int i, double inner_tol, double* err) {
+    const double c = o.c[i], s = o.s[i];
     CharlieArcTerms t{mu * c, s_mu * s, 2 * c, mu};
-    // NoL = 0 at cos(phi) = (mu / (2 c) - mu c) / (s_mu s).
-    const double den = t.r;
-    const double cm = den > 0 ? (mu / t.two_c - t.p) / den : -1.0;
-    if (!(cm < 1)) {
+    const double phi_max = o.phi_max[i];
+    if (!(phi_max > 0)) {
       *err = 0;
       return 0.0;
     }
-    const double phi_max = cm <= -1 ? kPi<double> : std::acos(cm);
     const bool arc_end = phi_max < kPi<double>;
     const double nol0 = t.two_c * (t.p + t.r) - mu;  // NoL at phi_h = 0, its largest
     auto phi_at = [&](double nol) {
@@ -158,11 +199,10 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     double phi_cuts[6], z_cuts[28], log_cuts[16];
     int n_phi = 0, n_z = 0, n_log = 0;
     phi_cuts[n_phi++] = 0.0;
-    const double nol_split = ck ? (nol0 >= 0.8 ? 0.5 : 0.35 * nol0) : 0.5 * nol0;
-    if (ck && 0.5 < nol0 && (!arc_end || 0.5 > nol_split)) phi_cuts[n_phi++] = phi_at(0.5);
-    double eps = 1;  // tau's scale
+    const double nol_split = CharlieSplitNoL(ck, nol0);
+    if (ck && 0.5 < nol0 && (!arc_end || 0.5 > nol_split)) phi_cuts[n_phi++] = o.phi_half[i];
     if (arc_end) {
-      phi_cuts[n_phi++] = phi_at(nol_split);
+      phi_cuts[n_phi++] = o.phi_split[i];
       if (ck) {
         double levels[24];
         int n_levels = 0;
@@ -174,8 +214,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
         z_cuts[n_z++] = 0.0;
         for (int k = n_levels - 1; k >= 0; --k) z_cuts[n_z++] = std::pow(levels[k], power);
       } else {
-        eps = std::min(mu / (1 - mu), 1e6);
-        const double hi = std::log1p(nol_split / eps);
+        const double hi = o.tau_hi[i];
         const int n = std::clamp(static_cast<int>(std::ceil(0.5 * hi)), 1, 12);
         for (int k = 0; k < n; ++k) log_cuts[n_log++] = hi * k / n;
         log_cuts[n_log++] = hi;
@@ -256,25 +295,26 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // makes each node's error at most a tenth of `tol` (the Kronrod weights
   // of a piece sum to its width, the widths to 1).
   auto piece = [&](double a, double b) {
-    return KronrodPiece(a, b, 1.0, [&](double sv, double* err) {
-      const double th = theta_max * (1 - sv * sv);
-      const double c = std::cos(th), s = std::sin(th);
-      const double w = sheen.DCos2(c * c) * s * 2 * theta_max * sv;
-      if (!(w > 0)) {
-        *err = 0;
-        return 0.0;
+    return KronrodPieceBatch(a, b, 1.0, [&](const double* sv, double* v, double* e) {
+      CharlieOuterNodes o;
+      nodes.Outer(setup, sv, &o);
+      for (int i = 0; i < 15; ++i) {
+        const double w = o.w[i];
+        v[i] = e[i] = 0;
+        if (!(w > 0)) continue;
+        // A node whose whole contribution w J is below 1e-3 tol by the
+        // bound j_bound counts as 0 with that bound as its error (12% to
+        // 16% of the nodes of a 64 x 64 table, far out on a narrow lobe's
+        // flank).
+        if (w * j_bound < 1e-3 * tol) {
+          e[i] = w * j_bound;
+          continue;
+        }
+        double err;
+        const double j = over_arc(o, i, 0.1 * tol / w, &err);
+        e[i] = w * err;
+        v[i] = w * j;
       }
-      // A node whose whole contribution w J is below 1e-3 tol by the bound
-      // j_bound counts as 0 with that bound as its error (12% to 16% of
-      // the nodes of a 64 x 64 table, far out on a narrow lobe's flank).
-      if (w * j_bound < 1e-3 * tol) {
-        *err = w * j_bound;
-        return 0.0;
-      }
-      double e;
-      const double j = over_arc(c, s, 0.1 * tol / w, &e);
-      *err = w * e;
-      return w * j;
     });
   };
   // Graded by 4 towards s = 0 down to the peak's width, and for a grazing
