@@ -292,8 +292,10 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // theta_max (1 - s^2): J vanishes as (theta_max - theta_h)^(3/2) at
   // theta_max, smooth in s, and a narrow lobe's peak there, over the width
   // tan(theta_max) / (2 q) in theta_h, is wider in s. The inner tolerance
-  // makes each node's error at most a tenth of `tol` (the Kronrod weights
-  // of a piece sum to its width, the widths to 1).
+  // keeps the arcs' errors carried through the Kronrod weights at most
+  // half of `tol` (the weights of a piece sum to its width, the widths to
+  // 1; half rather than a tenth: 6% fewer nodes over a 64 x 64
+  // conty-kulla table).
   auto piece = [&](double a, double b) {
     return KronrodPieceBatch(a, b, 1.0, [&](const double* sv, double* v, double* e) {
       CharlieOuterNodes o;
@@ -311,7 +313,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
           continue;
         }
         double err;
-        const double j = over_arc(o, i, 0.1 * tol / w, &err);
+        const double j = over_arc(o, i, 0.5 * tol / w, &err);
         e[i] = w * err;
         v[i] = w * j;
       }
