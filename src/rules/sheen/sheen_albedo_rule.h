@@ -182,7 +182,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     //    eps e^tau and dNoL = (NoL + eps) dtau. Pieces of at most 2 in tau
     //    (the singularities left are those of dphi/dNoL, past the range's
     //    ends). This replaced cuts in phi at NoL = nol0 / 2 4^-k down to
-    //    mu / 4, with 26% fewer nodes over a 64 x 64 table.
+    //    mu / 4, with 25% fewer nodes over a 64 x 64 table.
     //  - the Lambda visibilities: z = NoL^power, in which their Lambda (a
     //    function of NoL^power, power about 0.2, near NoL = 0) is smooth,
     //    from nol_split = 0.35 nol0, cut at NoL = nol_split / 4 and then
