@@ -547,14 +547,16 @@ std::string IntegratorJson(const BakeSpec& spec) {
         break;
       }
       if (spec.model.kind == ModelKind::kCharlie) {
-        describe("mu_i in [0, 1] and the azimuth phi between wi and wo in [0, pi]: E = int 2 mu_i "
-                 "V(mu_i, mu) int D(h) dphi dmu_i (both visibilities depend on the cosines only; "
+        describe("the half vector: E = int D(theta_h) sin(theta_h) J dtheta_h over [0, theta_max], "
+                 "J = 2 int V NoL 4 (wo.h) dphi_h over the arc of the light's azimuth where NoL > 0, "
+                 "found in closed form (both visibilities depend on the cosines only; "
                  "src/rules/sheen/sheen_albedo.h)",
-                 "Gauss-Kronrod 15 in mu_i on [0, mu] graded towards 0 and [mu, 1], each node's "
-                 "azimuthal integral by Gauss-Kronrod 15 on pieces bisected worst first; the mu_i "
-                 "pieces bisected worst first (nodes in double SIMD lanes)",
-                 "sum over the mu_i pieces of |K15 - G7|, plus the azimuthal rules' sums carried "
-                 "through the Kronrod weights");
+                 "Gauss-Kronrod 15 in s, theta_h = theta_max (1 - s^2), on pieces graded towards "
+                 "s = 0 and cut where J changes form; each node's J by Gauss-Kronrod 15 in phi_h, "
+                 "the arc's end in log1p(NoL / eps) (neubelt) or NoL^p (with a Lambda); the worst "
+                 "pieces bisected (nodes in double SIMD lanes)",
+                 "sum over the s pieces of |K15 - G7|, plus the arcs' sums of |K15 - G7| carried "
+                 "through the Kronrod weights and a bound on the nodes counted as 0");
         break;
       }
       if (spec.model.kind == ModelKind::kDisneyDiffuse) {

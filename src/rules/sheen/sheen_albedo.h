@@ -5,21 +5,17 @@
 // models/sheen.h) and of the Disney diffuse BRDF ([Burley12],
 // models/disney_diffuse.h), F = 1, for the baker.
 //
-// Charlie: both visibility terms depend on the cosines alone, so with wi at
-// cosine x and azimuth phi from wo,
-//   E(mu) = integral_0^1 2 x V(x, mu) I(x) dx,   I(x) = integral_0^pi D(h) dphi,
-//   cos^2(theta_h) = (x + mu)^2 / (2 (1 + wi.wo)),
-//   1 + wi.wo = (x + mu)^2 / (1 + x mu + s_x s_mu) + s_x s_mu (1 + cos phi)
-// (the second form has no cancellation where wi and wo both graze; s the
-// sines). The rule: Gauss-Kronrod 15 in x on [0, mu] and [mu, 1] (I has a
-// kink at x = mu, where h reaches the normal at phi = pi and D has its cusp
-// sin^(1/alpha)), the part below mu graded by 4 towards x = 0 down to the
-// width 1 / (q mu), q = 1 / (2 alpha), of the grazing peak of a narrow
-// lobe; each node's I by Gauss-Kronrod 15 on [0, pi/2], [pi/2, pi], its
-// worst piece bisected until the summed |K15 - G7| is a tenth of the texel
-// tolerance over 2 x V; then the worst x piece bisected until the outer
-// |K15 - G7| plus the inner errors carried through the Kronrod weights meet
-// the tolerance.
+// Charlie: both visibility terms depend on the cosines alone and D on
+// theta_h alone, so E is integrated over the half vector,
+//   E(mu) = integral D(theta_h) sin(theta_h) J(theta_h) dtheta_h,
+//   J = 2 integral_0^phi_max V NoL 4 (wo.h) dphi_h,
+// the light's azimuth phi_h on the arc where NoL > 0, found in closed
+// form: Gauss-Kronrod 15 over theta_h in s, theta_h = theta_max (1 -
+// s^2), on pieces graded towards the peak and cut where J changes form;
+// each node's J by Gauss-Kronrod 15 in phi_h, its end part in a variable
+// in which the visibility's change near NoL ~ mu is smooth
+// (sheen_albedo_rule.h, docs/integrators.md); the worst pieces bisected,
+// the inner errors carried through the Kronrod weights.
 //
 // Disney diffuse: E(mu) = 2 integral_0^1 x M(x, mu) dx with M the azimuthal
 // mean of pi f (DisneyDiffuse<T>::AzimuthMean), a polynomial of degree 8 in
