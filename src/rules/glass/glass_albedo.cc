@@ -1,0 +1,32 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+
+#include "rules/glass/glass_albedo.h"
+
+#include "rules/glass/glass_albedo_rule.h"
+
+namespace brdfbake {
+
+RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol,
+                       int max_pieces) {
+  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const Vec3<double> wo{frame.so, 0, frame.mu};
+  const double lambda_o = bsdf.Lambda(wo);
+  const ScalarGlassNodes nodes{&bsdf, &frame, 1 + lambda_o, lambda_o};
+  return GlassAlbedoWith(frame, tol, max_pieces, nodes);
+}
+
+RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
+                       int max_pieces) {
+  if (alpha == 0) {
+    RuleResult out;
+    out.value = 1;
+    out.pieces = 1;
+    return out;
+  }
+  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
+                                                     DielectricTransport::kImportance);
+  return GlassAlbedo(bsdf, mu, tol, max_pieces);
+}
+
+}  // namespace brdfbake
