@@ -208,6 +208,19 @@ TEST(PresetTest, CyclesAndEnterprisePbr) {
               [](const TexelEstimate& v, const Lobes& l) { return std::vector<double>{v.e}; }, 1e-7, "enterprise-pbr E");
 }
 
+// The first `n` numbers OpenImageIO's `oiiotool --dumpdata` prints for
+// pixel (x, y) (codes for integer pixels), or none if the dump has no
+// such pixel.
+std::vector<double> DumpedPixel(const std::string& dump, int x, int y, int n) {
+  const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
+  const size_t at = dump.find(key);
+  if (at == std::string::npos) return {};
+  std::stringstream ss(dump.substr(at + key.size(), 80));
+  std::vector<double> v(n);
+  for (double& e : v) ss >> e;
+  return v;
+}
+
 // A preset table at another size (the same axes, placement and layout).
 PresetTable Resized(PresetTable pt, int n) {
   pt.spec.mu.size = pt.spec.roughness.size = n;
@@ -292,14 +305,11 @@ TEST(PresetTest, Khronos) {
     const std::string dump = Slurp(dir + "/dump.txt");
     EXPECT_NE(dump.find(t == 2 ? "uint16 png" : "uint8 png"), std::string::npos) << dump.substr(0, 200);
     for (const auto& [x, y] : {std::pair{0, 0}, {n - 1, 0}, {3, n - 1}, {n / 2, n / 3}}) {
-      const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
-      const size_t at = dump.find(key);
-      ASSERT_NE(at, std::string::npos) << key;
-      std::stringstream ss(dump.substr(at + key.size(), 80));
+      const std::vector<double> codes = DumpedPixel(dump, x, y, 3);
+      ASSERT_EQ(codes.size(), 3u) << path << " pixel (" << x << ", " << y << ")";
       for (int c = 0; c < 3; ++c) {
-        int code = -1;
-        ss >> code;
-        ASSERT_EQ(code, images[t].bits16[(size_t(y) * n + x) * 3 + c]) << path << " " << key << " channel " << c;
+        ASSERT_EQ(int(codes[c]), images[t].bits16[(size_t(y) * n + x) * 3 + c])
+            << path << " pixel (" << x << ", " << y << ") channel " << c;
       }
     }
   }
@@ -657,15 +667,9 @@ TEST(ContainerTest, ExrReadsBackWithOpenImageIo) {
   const std::string dump = Slurp(dir + "/dump.txt");
   for (int y : {0, 17, 63}) {
     for (int x : {0, 40, 63}) {
-      const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
-      const size_t at = dump.find(key);
-      ASSERT_NE(at, std::string::npos) << key;
-      std::stringstream ss(dump.substr(at + key.size(), 80));
-      double v0, v1, v2;
-      ss >> v0 >> v1 >> v2;
-      EXPECT_NEAR(v0, Value(b.image, x, y, 0), 1e-6) << key;
-      EXPECT_NEAR(v1, Value(b.image, x, y, 1), 1e-6) << key;
-      EXPECT_NEAR(v2, Value(b.image, x, y, 2), 1e-6) << key;
+      const std::vector<double> v = DumpedPixel(dump, x, y, 3);
+      ASSERT_EQ(v.size(), 3u) << "pixel (" << x << ", " << y << ")";
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(v[c], Value(b.image, x, y, c), 1e-6) << "pixel (" << x << ", " << y << ")";
     }
   }
 }
@@ -693,14 +697,11 @@ TEST(ContainerTest, PngReadsBackWithOpenImageIo) {
     EXPECT_NE(dump.find(pixel == PixelType::kUnorm8 ? "uint8 png" : "uint16 png"), std::string::npos) << dump.substr(0, 200);
     for (int y = 0; y < im.height; ++y) {
       for (int x = 0; x < im.width; ++x) {
-        const std::string key = "Pixel (" + std::to_string(x) + ", " + std::to_string(y) + "):";
-        const size_t at = dump.find(key);
-        ASSERT_NE(at, std::string::npos) << key;
-        std::stringstream ss(dump.substr(at + key.size(), 80));
+        const std::vector<double> codes = DumpedPixel(dump, x, y, 3);
+        ASSERT_EQ(codes.size(), 3u) << path << " pixel (" << x << ", " << y << ")";
         for (int c = 0; c < 3; ++c) {
-          int code = -1;
-          ss >> code;
-          ASSERT_EQ(code, im.bits16[(size_t(y) * im.width + x) * 3 + c]) << path << " " << key << " channel " << c;
+          ASSERT_EQ(int(codes[c]), im.bits16[(size_t(y) * im.width + x) * 3 + c])
+              << path << " pixel (" << x << ", " << y << ") channel " << c;
         }
         const double max = pixel == PixelType::kUnorm8 ? 255 : 65535;
         EXPECT_NEAR(im.bits16[(size_t(y) * im.width + x) * 3] / max, Value(im, x, y, 0), 1e-15);
