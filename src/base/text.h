@@ -117,16 +117,19 @@ inline std::string NearestChoice(const std::string& given, const std::vector<std
   for (const auto& [alias, choice] : aliases) {
     if (g == key(alias)) return choice;
   }
+  // A prefix either way counts as one edit; among equals the fewer true
+  // edits win ("ggx-anis" is 'ggx-aniso', not 'ggx').
   std::string best;
-  size_t best_d = std::string::npos;
+  std::pair<size_t, size_t> best_d{std::string::npos, std::string::npos};
   for (const std::string& c : choices) {
     const std::string k = key(c);
     if (k.empty()) continue;
-    size_t d = distance(g, k);
+    const size_t edits = distance(g, k);
+    size_t d = edits;
     if (k.size() >= 3 && (g.rfind(k, 0) == 0 || k.rfind(g, 0) == 0) && g.size() >= 3) d = std::min<size_t>(d, 1);
-    if (d <= std::max<size_t>(1, k.size() / 4) && d < best_d) {
+    if (d <= std::max<size_t>(1, k.size() / 4) && std::make_pair(d, edits) < best_d) {
       best = c;
-      best_d = d;
+      best_d = {d, edits};
     }
   }
   return best;

@@ -403,6 +403,7 @@ expect_error_matching("did you mean 'unreal'" bake --preset ue4 -o "${out_dir}/b
 expect_error_matching("did you mean --table dfg" bake dfg -o "${out_dir}/bad_scene_out")
 expect_error_matching("did you mean 'bake'" bkae --table E)
 expect_error_matching("ggx-aniso.*did you mean 'ggx-aniso'" bake --model ggx_aniso --table E -o "${out_dir}/m.exr")
+expect_error_matching("did you mean 'ggx-aniso'" bake --model ggx-anis --table E -o "${out_dir}/m.exr")
 expect_error_matching("did you mean 'E_avg'" bake --table eavg -o "${out_dir}/m.exr")
 expect_error_matching("did you mean '--shader'" bake --table E --shaders glsl -o "${out_dir}/m.exr")
 # Format names and extensions in any case.
