@@ -35,9 +35,12 @@ namespace brdfbake {
 // the result is off there: at gamma 1.500001, alpha 0.25, mu 0.984375 by
 // 5.7e-6 of E (the baker's rules and a product Gauss-Legendre rule in
 // (theta_i, phi_i) agree to 1e-15). Use it there at mu = 1 only.
-template <class Ndf>
-inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double tol,
-                            double phi_o = 0.0) {
+// The same integral over the half vector of any integrand g(h, wo, wi, wo.h)
+// (0 outside the arc), E's being D G2 (wo.h) / wo.z; `extra_cuts` in
+// theta_h split the outer integral where g has a feature of its own.
+template <class G>
+inline double ReferenceHalfVectorIntegral(double mu, double tol, double phi_o, const G& g,
+                                          const std::vector<double>& extra_cuts = {}) {
   const double mu_o = std::max(mu, 1e-7);
   const Vec3<double> wo = FromMuPhi(mu_o, phi_o);
   const double so = std::sqrt(std::max(0.0, 1 - mu_o * mu_o));
@@ -59,7 +62,7 @@ inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double t
       const double wo_h = Dot(wo, h);
       const Vec3<double> wi = Reflect(wo, h);
       if (!(wo_h > 0) || !(wi.z > 0)) return 0.0;
-      return ndf.D(h) * G2(ndf, wi, wo, h, masking) * wo_h / wo.z;
+      return g(h, wo, wi, wo_h);
     };
     const double phi_max = c <= -1 ? kPi<double> : std::acos(c);
     // tanh-sinh: the integrand can have square-root behaviour at the arc's ends.
@@ -89,6 +92,9 @@ inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double t
     }
     prev = cur;
   }
+  for (double c : extra_cuts) {
+    if (c > 0 && c < kPi<double> / 2) cuts.push_back(c);
+  }
   cuts.push_back(kPi<double> / 2);
   std::sort(cuts.begin(), cuts.end());
   boost::math::quadrature::tanh_sinh<double> outer(12);
@@ -97,6 +103,15 @@ inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double t
     if (cuts[i + 1] > cuts[i]) total += outer.integrate(inner, cuts[i], cuts[i + 1], tol);
   }
   return total;
+}
+
+template <class Ndf>
+inline double ReferenceEFor(const Ndf& ndf, double mu, Masking masking, double tol,
+                            double phi_o = 0.0) {
+  return ReferenceHalfVectorIntegral(
+      mu, tol, phi_o, [&](const Vec3<double>& h, const Vec3<double>& wo, const Vec3<double>& wi, double wo_h) {
+        return ndf.D(h) * G2(ndf, wi, wo, h, masking) * wo_h / wo.z;
+      });
 }
 
 inline double ReferenceE(double alpha, double mu, Masking masking = Masking::kHeightCorrelated,
