@@ -64,16 +64,18 @@ TEST(GlassTableTest, FresnelZWarpIsLinearInZ) {
 TEST(GlassTableTest, SlicesAreTheRuleAtTheirEta) {
   for (bool inverse : {false, true}) {
     for (TableKind kind : {TableKind::kE, TableKind::kEavg}) {
-      BakeSpec s = GlassSpec(kind, 3, 3, 3);
+      // E_avg (some hundred E each) over roughness 0 (smooth) and 1.
+      const int n = kind == TableKind::kE ? 3 : 2;
+      BakeSpec s = GlassSpec(kind, 3, n, n);
       s.inverse = inverse;
       s.threads = 1;
       const Table t = Bake(s);
-      const int width = kind == TableKind::kE ? 3 : 3;
+      const int width = kind == TableKind::kE ? 3 : n;
       const int rows = kind == TableKind::kE ? 3 : 1;
       ASSERT_EQ(t.axes.size(), kind == TableKind::kE ? 3u : 2u);
       EXPECT_EQ(t.axes.back().name, "ior");
-      EXPECT_EQ(t.height, rows * 3);
-      for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(t.height, rows * n);
+      for (int k = 0; k < n; ++k) {
         const double ior = s.ior.Value(k), eta = inverse ? 1 / ior : ior;
         for (int y = 0; y < rows; ++y) {
           for (int x = 0; x < width; ++x) {
@@ -132,9 +134,12 @@ TEST(GlassTableTest, RefusesWhatItCannotBake) {
 // Texels of baked tables against the independent reference: every texel's
 // claimed error (the error channel; max_abs_error for the stored values)
 // must bound its distance from the reference, within the reference's own
-// error. The views: grazing (mu = 0, evaluated at 1e-7), oblique, normal;
-// for light leaving the medium also 1e-2 on both sides of the critical
-// angle mu_c = sqrt(1 - 1/ior^2), where total internal reflection sets in.
+// error. The views: grazing (mu = 1e-3), oblique, normal; for light
+// leaving the medium also 3e-2 on both sides of the critical angle mu_c =
+// sqrt(1 - 1/ior^2), where total internal reflection sets in. (The
+// reference takes many minutes at mu = 1e-7, the bake's mu = 0, and
+// within 1e-2 of the critical angle at roughness 0.2: those texels are
+// checked against the converged rule below.)
 TEST(GlassTableTest, TexelsAgreeWithIndependentIntegration) {
   struct Bk {
     bool inverse;
@@ -142,10 +147,10 @@ TEST(GlassTableTest, TexelsAgreeWithIndependentIntegration) {
     int n_mu;
     double r_lo, r_hi, ior_lo, ior_hi;
   };
-  std::vector<Bk> bakes = {{false, 0.0, 1.0, 3, 0.3, 1.0, 1.5, 3.0}, {true, 0.0, 1.0, 3, 0.3, 1.0, 1.5, 2.4}};
+  std::vector<Bk> bakes = {{false, 1e-3, 1.0, 3, 0.3, 1.0, 1.5, 3.0}, {true, 1e-3, 1.0, 3, 0.3, 1.0, 1.5, 2.4}};
   for (double ior : {1.5, 2.4}) {
     const double mc = std::sqrt(1 - 1 / (ior * ior));
-    bakes.push_back({true, mc - 1e-2, mc + 1e-2, 2, 0.2, 0.6, ior, ior});
+    bakes.push_back({true, mc - 3e-2, mc + 3e-2, 2, 0.5, 1.0, ior, ior});
   }
   double worst = 0, worst_ref = 0;
   int n = 0;
@@ -191,16 +196,24 @@ TEST(GlassTableTest, TexelsAgreeWithIndependentIntegration) {
 }
 
 // Tiny roughness (alpha from 1e-4 up), where the lobes are too narrow for
-// the independent reference to finish in reasonable time: the baked texels
-// against the rule converged to 1e-11, grazing and critical views included.
-TEST(GlassTableTest, ClaimsBoundTheErrorAtTinyRoughness) {
+// the independent reference to finish in reasonable time, and the grazing
+// views mu = 0 (evaluated at 1e-7) and 1e-4 at any roughness: the baked
+// texels against the rule converged to 1e-11, and views 1e-3 from the
+// critical angle.
+TEST(GlassTableTest, ClaimsBoundTheErrorAtTinyRoughnessAndGrazing) {
   double worst = 0;
   int n = 0;
+  struct Bk {
+    int n_mu;
+    double mu_hi, r_lo, r_hi;
+  };
+  for (const Bk& b : {Bk{6, 1.0, 0.01, 0.05}, Bk{2, 1e-4, 0.3, 1.0}})
   for (bool inverse : {false, true}) {
-    BakeSpec s = GlassSpec(TableKind::kE, 6, 3, 2);
+    BakeSpec s = GlassSpec(TableKind::kE, b.n_mu, 3, 2);
     s.inverse = inverse;
-    s.roughness.min = 0.01;
-    s.roughness.max = 0.05;
+    s.mu.max = b.mu_hi;
+    s.roughness.min = b.r_lo;
+    s.roughness.max = b.r_hi;
     s.ior.min = 1.33;
     s.ior.max = 2.4;
     const Table t = Bake(s);
@@ -208,9 +221,9 @@ TEST(GlassTableTest, ClaimsBoundTheErrorAtTinyRoughness) {
       const double ior = s.ior.Value(k), eta = inverse ? 1 / ior : ior;
       for (int y = 0; y < 3; ++y) {
         const double r = s.roughness.Value(y);
-        for (int x = 0; x < 6; ++x) {
+        for (int x = 0; x < b.n_mu; ++x) {
           double mu = std::max(s.mu.Value(x), 1e-7);
-          const size_t i = size_t((k * 3 + y) * 6 + x);
+          const size_t i = size_t((k * 3 + y) * b.n_mu + x);
           const RuleResult c = GlassAlbedo(r * r, eta, Masking::kHeightCorrelated, mu, 1e-11, 4096);
           const double d = std::abs(t.channels[0].values[i] - c.value);
           const double claim = t.channels.back().values[i];
@@ -238,7 +251,7 @@ TEST(GlassTableTest, ClaimsBoundTheErrorAtTinyRoughness) {
       }
     }
   }
-  std::printf("glass tables at tiny roughness: %d texels, max |table - converged| / claims %.3g\n", n, worst);
+  std::printf("glass tables at tiny roughness and grazing: %d texels, max |table - converged| / claims %.3g\n", n, worst);
 }
 
 // Cycles' generator ([Cycles], tests/data/cycles_glass_tables.json) let
@@ -247,8 +260,11 @@ TEST(GlassTableTest, ClaimsBoundTheErrorAtTinyRoughness) {
 // entering side never refracts upwards). This is that extra term,
 //   Q(mu) = integral D_wo(h) (1 - F) G2(wo, t) / G1(wo) 1{t.z > 0} dh,
 // by the midpoint rule on an n x n grid of the visible-normal sampler of
-// [Heitz18] (the sampler maps the unit square onto D_wo): a resolution
-// check, not a claim (the indicator's edge limits it to about 1 / n).
+// [Heitz18] (the sampler maps the unit square onto D_wo), its radial
+// coordinate u1 = 1 - (1 - s)^4 graded towards the disk's rim, where the
+// tails of narrow lobes refract upwards (a uniform 192 x 192 grid misses
+// them at roughness 1/15): a resolution check, not a claim (the
+// indicator's edge limits it to about 1 / n).
 double CyclesWrongSideRefraction(double alpha, double eta, double mu, int n) {
   mu = std::max(mu, 1e-4);
   const double so = std::sqrt((1 - mu) * (1 + mu));
@@ -265,7 +281,8 @@ double CyclesWrongSideRefraction(double alpha, double eta, double mu, int n) {
   double q = 0;
   for (int a = 0; a < n; ++a) {
     for (int b = 0; b < n; ++b) {
-      const double u1 = (a + 0.5) / n, u2 = (b + 0.5) / n;
+      const double sa = (a + 0.5) / n, u2 = (b + 0.5) / n;
+      const double u1 = 1 - std::pow(1 - sa, 4), w1 = 4 * std::pow(1 - sa, 3);
       const double r = std::sqrt(u1), phi = 2 * kPi<double> * u2;
       const double p1 = r * std::cos(phi), s = 0.5 * (1 + vh.z);
       const double p2 = (1 - s) * std::sqrt(1 - p1 * p1) + s * r * std::sin(phi);
@@ -277,7 +294,7 @@ double CyclesWrongSideRefraction(double alpha, double eta, double mu, int n) {
       const Vec3<double> t = wo * (-1 / eta) + h * (c / eta - std::sqrt(k));
       if (!(t.z > 0)) continue;
       const double f = FresnelDielectric(eta, c);
-      q += (1 - f) * (1 + lo) / (1 + lo + lambda(t.z));
+      q += w1 * (1 - f) * (1 + lo) / (1 + lo + lambda(t.z));
     }
   }
   return q / (double(n) * n);
@@ -292,7 +309,11 @@ double CyclesWrongSideRefraction(double alpha, double eta, double mu, int n) {
 // Cycles' wrong-side refraction term Q: where Q is below 1e-6 they must
 // agree with ours within the shipped tables' noise, elsewhere ours + Q
 // within Q's midpoint resolution, and never ours above the shipped value
-// beyond the noise (Q only adds).
+// beyond the noise (Q only adds). Q's grid resolves it to 1e-3 (observed
+// at most 9.9e-4 from the difference). The slice k = 0 (ior exactly 1) is left
+// out: Cycles' generator takes its no-interface path there and stores 1,
+// where our slice holds the rough model's limit eta -> 1 (the refraction
+// straight through, masked: 0.53 at roughness 1 and mu 1/15).
 TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
   std::ifstream in(BRDFBAKE_TEST_DATA "/cycles_glass_tables.json");
   ASSERT_TRUE(in.good());
@@ -309,9 +330,11 @@ TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
     if (last) s.ior.placement = Placement::kCenters;
     return Bake(s);
   };
-  // The shipped tables' noise: Monte Carlo (Sobol-Burley, 2^23 samples per
-  // E texel, 2^26 per E_avg texel) and 6 decimals.
-  const double kNoise = 3e-5;
+  // The shipped tables' noise: Monte Carlo over weights in [0, 1]
+  // (Sobol-Burley points, 2^23 samples per E texel, 2^26 per E_avg texel:
+  // a plain Monte Carlo standard deviation of at most 1.7e-4 and 6e-5)
+  // and 6 decimals. Observed at most 4.3e-5 (E) and 5.4e-6 (E_avg).
+  const auto noise = [](bool e) { return e ? 1e-4 : 3e-5; };
   for (bool inverse : {false, true}) {
     for (TableKind kind : {TableKind::kE, TableKind::kEavg}) {
       const bool e = kind == TableKind::kE;
@@ -320,6 +343,7 @@ TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
       const Table head = bake(kind, inverse, false), last = bake(kind, inverse, true);
       double sum2 = 0, worst = 0, sum2_clean = 0, worst_clean = 0, worst_q = 0;
       int n = 0, n_clean = 0;
+      double k0_worst = 0;
       for (int k = 0; k < 16; ++k) {
         const Table& t = k < 15 ? head : last;
         const int kk = k < 15 ? k : 0;
@@ -338,11 +362,17 @@ TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
                 // 2 int Q mu dmu by the midpoint rule in mu.
                 for (int m = 0; m < 32; ++m) {
                   const double mu = (m + 0.5) / 32;
-                  q += 2 * mu * CyclesWrongSideRefraction(alpha, eta, mu, 48) / 32;
+                  q += 2 * mu * CyclesWrongSideRefraction(alpha, eta, mu, 64) / 32;
                 }
               }
             }
             const double d = shipped - ours;
+            const double kNoise = noise(e);
+            if (k == 0) {
+              EXPECT_GE(shipped, 1 - kNoise);
+              k0_worst = std::max(k0_worst, std::abs(d));
+              continue;
+            }
             sum2 += d * d;
             worst = std::max(worst, std::abs(d));
             ++n;
@@ -355,16 +385,16 @@ TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
               EXPECT_LE(std::abs(d), kNoise) << where << ": ours " << ours << ", Cycles " << shipped;
             } else {
               worst_q = std::max(worst_q, std::abs(d - q));
-              EXPECT_LE(std::abs(d - q), 5e-3) << where << ": ours " << ours << " + Q " << q << ", Cycles " << shipped;
+              EXPECT_LE(std::abs(d - q), 2e-3) << where << ": ours " << ours << " + Q " << q << ", Cycles " << shipped;
               EXPECT_GE(d, -kNoise) << where << ": ours " << ours << ", Cycles " << shipped;
             }
           }
         }
       }
-      std::printf("%s: %d texels, RMS %.3g, max %.3g; without the wrong-side term (%d texels): RMS %.3g, "
-                  "max %.3g; elsewhere max |Cycles - ours - Q| %.3g\n",
+      std::printf("%s: %d texels (k >= 1), RMS %.3g, max %.3g; without the wrong-side term (%d texels): "
+                  "RMS %.3g, max %.3g; elsewhere max |Cycles - ours - Q| %.3g; at ior 1 max %.3g\n",
                   name.c_str(), n, std::sqrt(sum2 / n), worst, n_clean,
-                  n_clean ? std::sqrt(sum2_clean / n_clean) : 0.0, worst_clean, worst_q);
+                  n_clean ? std::sqrt(sum2_clean / n_clean) : 0.0, worst_clean, worst_q, k0_worst);
     }
   }
 }
