@@ -212,9 +212,10 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
   // mu and roughness clamped at 1e-4, ior from 1 to 99.5 = z 0 to 0.99 with
   // the fresnel-z warp; inverse: eta = 1 / ior), and a 32^3 E over the
   // default ior range 1 to 3; no true error (no reference bake of these).
+  // The glass rule runs in double scalar code only: double_reference.
   for (bool inverse : {false, true}) {
     for (T table : {T::kE, T::kEavg}) {
-      BakeSpec cycles = Spec(table, ModelKind::kGgxGlass);
+      BakeSpec cycles = Spec(table, ModelKind::kGgxGlass, I::kQuadrature, false);
       cycles.inverse = inverse;
       cycles.mu.clamp_min = cycles.roughness.clamp_min = 1e-4;
       cycles.ior.max = (1 + 0.99 * 0.99) / (1 - 0.99 * 0.99);
@@ -226,7 +227,8 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
       }
     }
   }
-  Add("ggx-glass", Spec(T::kE, ModelKind::kGgxGlass), {"size", "iors"}, {{32, 32, c}}, 0);
+  Add("ggx-glass", Spec(T::kE, ModelKind::kGgxGlass, I::kQuadrature, false), {"size", "iors"},
+      {{32, 32, c}}, 0);
 #endif
 
   // The double scalar reference of the same rules.
