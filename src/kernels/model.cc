@@ -392,6 +392,10 @@ void ValidateFresnel(const Fresnel& f) {
 
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
+  if (p.kind == ModelKind::kGgxGlass) {
+    Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval --quantity "
+        "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
+  }
 #if BRDFBAKE_WITH_BECKMANN
   if (p.kind == ModelKind::kBeckmann) {
     return std::make_unique<NdfModel<BeckmannNdf<double>>>(

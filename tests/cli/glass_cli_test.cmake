@@ -94,6 +94,7 @@ expect_error_matching("--ior" eval --quantity E --model ggx-glass --roughness 0.
 expect_error_matching("--ior" eval --quantity E --model ggx --roughness 0.3 --ior 1.5)
 expect_error_matching("--quantity" eval --quantity dfg --model ggx-glass --roughness 0.3)
 expect_error_matching("--quantity" eval --quantity D --model ggx-glass --roughness 0.3)
+expect_error_matching("--grid" eval --grid hemisphere --model ggx-glass --roughness 0.3 -o "${OUT}/bad.exr")
 expect_error_matching("--integrator" bake --table E --model ggx-glass --integrator qmc -o "${OUT}/bad.exr")
 expect_error_matching("--table" bake --table dfg --model ggx-glass -o "${OUT}/bad.exr")
 expect_error_matching("--range: the ior axis" bake --table E --model ggx-glass --range ior=0.5:1
