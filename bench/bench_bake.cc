@@ -10,8 +10,8 @@
 // (the double scalar reference of the same rule, `bake --target scalar`).
 // The axes are the table's sizes: size:N is an N x N table (E, dfg) or N
 // entries (E_avg); tables with other axes name each one (mu, phi,
-// roughness, anisotropy, alpha_x, alpha_y) and gammas:D adds D gamma slices
-// (std). Items are texels.
+// roughness, anisotropy, alpha_x, alpha_y), gammas:D adds D gamma slices
+// (std) and iors:D D ior slices (ggx-glass). Items are texels.
 //
 // Counters: integration_error, the claimed maximum error before storage,
 // and true_error, the largest difference of the values before storage from
@@ -58,6 +58,8 @@ void ApplyArg(const std::string& name, int value, BakeSpec* spec) {
     spec->alpha_y.size = value;
   } else if (name == "gammas") {
     spec->gamma.size = value;
+  } else if (name == "iors") {
+    spec->ior.size = value;
   } else if (name == "threads") {
     spec->threads = value;
   }
@@ -204,6 +206,29 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
 #endif
 #if BRDFBAKE_WITH_DISNEY
   Add("disney-diffuse", Spec(T::kE, ModelKind::kDisneyDiffuse), size, {{64, c}});
+#endif
+#if BRDFBAKE_WITH_GLASS
+  // ggx-glass: the four tables of Cycles' set on its axes (16 entries each,
+  // mu and roughness clamped at 1e-4, ior from 1 to 99.5 = z 0 to 0.99 with
+  // the fresnel-z warp; inverse: eta = 1 / ior), and a 32^3 E over the
+  // default ior range 1 to 3; no true error (no reference bake of these).
+  // The glass rule runs in double scalar code only: double_reference.
+  for (bool inverse : {false, true}) {
+    for (T table : {T::kE, T::kEavg}) {
+      BakeSpec cycles = Spec(table, ModelKind::kGgxGlass, I::kQuadrature, false);
+      cycles.inverse = inverse;
+      cycles.mu.clamp_min = cycles.roughness.clamp_min = 1e-4;
+      cycles.ior.max = (1 + 0.99 * 0.99) / (1 - 0.99 * 0.99);
+      const std::string label = inverse ? "ggx-glass_cycles_inverse" : "ggx-glass_cycles";
+      if (table == T::kE) {
+        Add(label, cycles, {"size", "iors"}, {{16, 16, c}}, 0);
+      } else {
+        Add(label, cycles, {"roughness", "iors"}, {{16, 16, c}}, 0);
+      }
+    }
+  }
+  Add("ggx-glass", Spec(T::kE, ModelKind::kGgxGlass, I::kQuadrature, false), {"size", "iors"},
+      {{32, 32, c}}, 0);
 #endif
 
   // The double scalar reference of the same rules.

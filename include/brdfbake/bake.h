@@ -32,7 +32,12 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // u = u(min)^(1 - t) u(max)^t, so gamma = inf (u = 1) can end the axis and
 // the knee of E near gamma = 1.5 (E ~ z / (z + C), z = gamma - 1.5, with C
 // from 1e-4 to 0.1 across texels) gets slices at every scale of z.
-enum class Warp { kLinear, kSquare, kSqrt, kTail };
+// kFresnelZ is the ior axis's default warp (ggx-glass): z = F0^(1/4) =
+// sqrt(|ior - 1| / (ior + 1)) is linear in t between z(min) and z(max), and
+// ior = (1 + z^2) / (1 - z^2) (the coordinate Cycles looks its glass
+// tables up with, [Cycles]; E changes about evenly in it, and the whole
+// range from ior 1 (z = 0) to 100 (z = 0.99) fits one axis).
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -95,6 +100,15 @@ struct BakeSpec {
   // gamma axis, the table is baked at model.gamma.
   Axis gamma{"gamma", 0, 1.501, kInfinity, Warp::kTail, Placement::kEdges};
   bool HasGammaAxis() const { return gamma.size > 0; }
+  // ggx-glass: the third axis (E: slices of mu x roughness; E_avg: rows
+  // over roughness), the relative index of refraction in [1, 100] of the
+  // medium below the view; it replaces model.ior.
+  Axis ior{"ior", 16, 1.0, 3.0, Warp::kFresnelZ, Placement::kEdges};
+  // ggx-glass: light leaving the medium (the view inside it, as Cycles'
+  // inverse tables): each slice is baked at eta = 1 / ior < 1, with total
+  // internal reflection; the axis keeps the medium's ior.
+  bool inverse = false;
+  bool Glass() const { return model.kind == ModelKind::kGgxGlass; }
   // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
   // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over
   // mu x phi_o x roughness x anisotropy, E_avg over roughness x anisotropy.

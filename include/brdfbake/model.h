@@ -24,11 +24,15 @@ namespace brdfbake {
 // The model families, and ggx-aniso: GGX whose widths a table takes from
 // the roughness and the glTF anisotropy strength (bake and eval of E only).
 // kCharlie is the Charlie sheen (models/sheen.h), kDisneyDiffuse the Disney
-// diffuse BRDF (models/disney_diffuse.h).
-enum class ModelKind { kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso, kCharlie, kDisneyDiffuse };
+// diffuse BRDF (models/disney_diffuse.h). kGgxGlass is the rough dielectric
+// over GGX (models/dielectric.h, [Walter07]): a table model of the glass
+// family (E of reflection and refraction over mu, roughness and ior; E_avg).
+enum class ModelKind {
+  kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso, kCharlie, kDisneyDiffuse, kGgxGlass
+};
 
 // The kind's name on the command line and in files: ggx, beckmann, std,
-// ellipsoid, sel, ggx-aniso, charlie, disney-diffuse.
+// ellipsoid, sel, ggx-aniso, charlie, disney-diffuse, ggx-glass.
 const char* ModelName(ModelKind kind);
 
 // The kind `name` names; std::invalid_argument with a one-line message
@@ -45,6 +49,10 @@ struct ModelParams {
   // disney-diffuse are isotropic (alpha_x = alpha_y = r^2; disney-diffuse
   // takes r = sqrt(alpha_x)) with alpha in (0, 1].
   SheenVisibility visibility = SheenVisibility::kContyKulla;
+  // ggx-glass only: the relative index of refraction eta = n_below / n_above
+  // of the interface the view wo (above) meets; eta < 1 is light leaving
+  // the denser medium (total internal reflection). In [0.01, 100].
+  double ior = 1.5;
 
   const char* name() const { return ModelName(kind); }
 
@@ -65,7 +73,7 @@ const std::vector<ModelInfo>& Models();  // the families this build contains
 SheenVisibility ParseSheenVisibility(const std::string& name);
 
 // Whether `kind` is a model family of this build (BRDFBAKE_MODELS);
-// ggx-aniso is built with ggx.
+// ggx-aniso is built with ggx, ggx-glass with the glass family.
 bool ModelBuilt(ModelKind kind);
 
 // The largest alpha accepted (roughness 100). Every model quantity, in

@@ -34,6 +34,7 @@ bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q 
 
 void ValidateEvalRequest(const EvalRequest& req) {
   const bool aniso = req.model.kind == ModelKind::kGgxAniso;
+  const bool glass = req.model.kind == ModelKind::kGgxGlass;
   ModelParams params = req.model;
   if (aniso) params.kind = ModelKind::kGgx;  // the widths come from roughness and anisotropy
   bool tables_only = !req.quantities.empty();
@@ -60,11 +61,13 @@ void ValidateEvalRequest(const EvalRequest& req) {
       const bool ellipsoid = kind == ModelKind::kEllipsoid;
       const bool lobe = kind == ModelKind::kCharlie || kind == ModelKind::kDisneyDiffuse;
       if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
-          !aniso && !ellipsoid && !lobe) {
-        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie and "
-            "disney-diffuse only (got '" + m + "')");
+          !aniso && !ellipsoid && !lobe && !glass) {
+        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie, "
+            "disney-diffuse and ggx-glass only (got '" + m + "')");
       }
-      if ((aniso || ellipsoid || lobe) && q == "dfg") Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+      if ((aniso || ellipsoid || lobe || glass) && q == "dfg") {
+        Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+      }
       if (ellipsoid) continue;  // the material's own widths and angles
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
@@ -75,7 +78,9 @@ void ValidateEvalRequest(const EvalRequest& req) {
       }
       continue;
     }
-    if (aniso) Bad("--quantity: ggx-aniso has the table quantities E and E_avg only (got '" + q + "')");
+    if (aniso || glass) {
+      Bad("--quantity: " + std::string(req.model.name()) + " has the table quantities E and E_avg only (got '" + q + "')");
+    }
     if (table_sweep) {
       Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
           "direction (got '" + q + "')");
@@ -164,7 +169,9 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
   const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
   // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
   const std::unique_ptr<Model> model =
-      req.model.kind == ModelKind::kGgxAniso || table_sweep ? nullptr : MakeModel(req.model);
+      req.model.kind == ModelKind::kGgxAniso || req.model.kind == ModelKind::kGgxGlass || table_sweep
+          ? nullptr
+          : MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 

@@ -98,6 +98,9 @@ void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
   ValidateFresnel(req.fresnel);
   if (req.model.kind == ModelKind::kSel) throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
+  if (req.model.kind == ModelKind::kGgxGlass) {
+    throw std::invalid_argument("--grid: model ggx-glass has the table quantities E and E_avg only");
+  }
   if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
     throw std::invalid_argument("--width/--height must be in [1, 16384]");
   }

@@ -30,6 +30,7 @@
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
 #include "rules/ggx/azimuthal.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
+#include "rules/glass/glass_albedo.h"
 #include "rules/sel/sel_norm.h"
 #include "rules/sheen/sheen_albedo.h"
 #include "sampling/sampling_integrators.h"
@@ -55,6 +56,7 @@ const char* WarpName(Warp w) {
     case Warp::kSquare: return "square";
     case Warp::kSqrt: return "sqrt";
     case Warp::kTail: return "tail";
+    case Warp::kFresnelZ: return "fresnel-z";
   }
   return "linear";
 }
@@ -84,7 +86,9 @@ Warp ParseWarp(const std::string& s) {
   if (s == "square") return Warp::kSquare;
   if (s == "sqrt") return Warp::kSqrt;
   if (s == "tail") return Warp::kTail;
-  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, or tail for the gamma axis)");
+  if (s == "fresnel-z") return Warp::kFresnelZ;
+  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, or "
+      "fresnel-z for the ior axis)");
 }
 Placement ParsePlacement(const std::string& s) {
   if (s == "centers") return Placement::kCenters;
@@ -114,6 +118,15 @@ double Axis::ValueAt(double fi) const {
     if (lu >= 0) return kInfinity;
     return 1.5 + std::exp(lu) / -std::expm1(lu);
   }
+  if (warp == Warp::kFresnelZ) {
+    // z = sqrt(|ior - 1| / (ior + 1)) linear in t; the axis lies on one
+    // side of 1 (ValidateBakeSpec), where ior(z) is monotonic.
+    auto z_of = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    if (t == 0) return min;
+    if (t == 1) return max;
+    const double z = (1 - t) * z_of(min) + t * z_of(max), z2 = z * z;
+    return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
+  }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
@@ -137,6 +150,13 @@ std::string Axis::ToJson() const {
     for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
     j["values"] = values;
   }
+  if (warp == Warp::kFresnelZ) {
+    j["map"] = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
+               "ior = (1 + z^2) / (1 - z^2)";
+    nlohmann::json values = nlohmann::json::array();
+    for (int i = 0; i < size; ++i) values.push_back(Value(i));
+    j["values"] = values;
+  }
   return j.dump();
 }
 
@@ -157,10 +177,20 @@ int64_t TexelCount(const BakeSpec& spec);  // below
 
 void ValidateBakeSpec(const BakeSpec& spec) {
   const bool aniso = spec.Anisotropic();
+  const bool glass = spec.Glass();
   ModelParams params = spec.model;
   if (aniso) params.kind = ModelKind::kGgx;  // its widths come from the axes
+  if (glass) params.alpha_x = params.alpha_y = 1.0;  // from the roughness axis
   ValidateModelParams(params);
   const ModelKind m = spec.model.kind;
+  if (glass && spec.table != TableKind::kE && spec.table != TableKind::kEavg) {
+    Bad("--table: ggx-glass bakes E and E_avg (reflection plus refraction; no dfg)");
+  }
+  if (glass && spec.integrator != IntegratorKind::kQuadrature) {
+    Bad("--integrator: ggx-glass tables are baked with the quadrature only (got " +
+        std::string(IntegratorName(spec.integrator)) + ")");
+  }
+  if (spec.inverse && !glass) Bad("--inverse: only ggx-glass has an inside (light leaving the medium)");
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
     Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
@@ -184,9 +214,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     Bad("--integrator: ellipsoid tables are baked with the quadrature only");
   }
   if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso &&
-      !sel && !ellipsoid && !sheen) {
-    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie and "
-        "disney-diffuse (got '" + std::string(spec.model.name()) + "')");
+      !sel && !ellipsoid && !sheen && !glass) {
+    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie, "
+        "disney-diffuse and ggx-glass (got '" + std::string(spec.model.name()) + "')");
   }
   if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
   if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
@@ -205,6 +235,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   for (const Axis* a : axes) {
     if (a->warp == Warp::kTail) Bad("--warp: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
+    if (a->warp == Warp::kFresnelZ) {
+      Bad("--warp: fresnel-z is the ior axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
+    }
     if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (a->placement == Placement::kEdges && a->size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
@@ -238,6 +271,22 @@ void ValidateBakeSpec(const BakeSpec& spec) {
       Bad("--range: the gamma axis must satisfy " + ExactText(kMinStudentTGamma<double>) +
           " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " + ExactText(g.min) +
           ":" + ExactText(g.max) + ")");
+    }
+  }
+  if (glass) {
+    const Axis& a = spec.ior;
+    if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
+    if (a.placement == Placement::kEdges && a.size < 2) {
+      Bad("--size: edges placement needs at least 2 entries per axis");
+    }
+    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear) {
+      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default) or linear (got " +
+          std::string(WarpName(a.warp)) + ")");
+    }
+    const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
+    if (!(a.min >= 1) || !(a.max <= kMaxFresnelIndex) || !ordered) {
+      Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
+          "eta = 1/ior: --inverse; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
   }
   if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");
@@ -411,8 +460,25 @@ TexelEstimate SheenQuadrature(const BakeSpec& spec, double alpha, double mu) {
   return t;
 }
 
+// ggx-glass: E of reflection plus refraction by the visible-normal rule
+// of rules/glass/glass_albedo.h at eta = spec.model.ior; below alpha 1e-4
+// the smooth interface, whose E is exactly 1.
+TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
+  TexelEstimate v;
+  if (alpha < kMinAlpha<double>) {
+    v.e = 1;
+    return v;
+  }
+  const RuleResult r = GlassAlbedo(alpha, spec.model.ior, spec.masking, std::max(mu, kMuMin),
+                                   spec.tolerance, spec.EffectiveSamples());
+  v.e = r.value;
+  v.err_e = r.error;
+  return v;
+}
+
 TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
   const ModelKind m = spec.model.kind;
+  if (m == ModelKind::kGgxGlass) return GlassTexel(spec, alpha, mu);
   if (m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse) return SheenTexel(spec, alpha, mu, texel_seed);
   if (alpha < kMinAlpha<double>) return MirrorTexel(mu);
   if (m == ModelKind::kGgx) return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);
@@ -465,6 +531,17 @@ std::string ModelJson(const BakeSpec& spec) {
     return j.dump();
   }
   j["alpha"] = "roughness^2";
+  if (spec.Glass()) {
+    j["definition"] = "rough dielectric over isotropic GGX ([Walter07]): reflection weighted by the "
+                      "exact unpolarized dielectric Fresnel F(eta, wo.h), refraction by 1 - F with "
+                      "the half-vector Jacobian; importance transport (no 1/eta^2 radiance factor), "
+                      "so a smooth interface has E = 1";
+    j["eta"] = spec.inverse ? "1 / ior: the view inside the medium, light leaving it (total "
+                              "internal reflection beyond the critical angle)"
+                            : "ior: the view outside, light entering the medium";
+    j["ior"] = "the ior axis (brdfbake.axes)";
+    return j.dump();
+  }
   if (spec.model.kind == ModelKind::kCharlie) {
     j["visibility"] = SheenVisibilityName(spec.model.visibility);
     const SheenVisibility v = spec.model.visibility;
@@ -521,6 +598,19 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak of g, "
                  "worst pieces bisected; the tolerance applies to G",
                  "sum of |K15 - G7| of both rules");
+        break;
+      }
+      if (spec.Glass()) {
+        describe("the visible normals of wo in the stretched configuration of [Heitz18]: polar "
+                 "angles (theta, phi) about the view on the projected lune, each ray cut where the "
+                 "reflection or the refraction reaches the horizon and at the critical angle (roots "
+                 "of quadratic forms in closed form), the rays cut where the sequence of those "
+                 "curves changes (src/rules/glass/glass_albedo.h)",
+                 "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
+                 "Gauss-Kronrod 15 on pieces graded towards the curves and the lune's edge, mapped "
+                 "smoothly at the critical angle's square-root edge (double scalar code)",
+                 "3 x the sum over the phi pieces of |K15 - G7|, plus the rays' own sums carried "
+                 "through the Kronrod weights");
         break;
       }
       if (spec.model.kind == ModelKind::kEllipsoid || spec.Anisotropic()) {
@@ -666,6 +756,8 @@ std::string IntegratorJson(const BakeSpec& spec) {
   j["grazing"] = "mu = 0 evaluated at mu = 1e-7";
   if (spec.model.kind == ModelKind::kCharlie) {
     j["smallest_alpha"] = "alpha < 1e-6 is evaluated at 1e-6";
+  } else if (spec.Glass()) {
+    j["smooth"] = "alpha < 1e-4 is the smooth interface: E = 1";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
     j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
   }
@@ -1067,12 +1159,16 @@ int64_t TexelCount(const BakeSpec& spec) {
     const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
     return spec.table == TableKind::kEavg ? rs : rs * spec.mu.size * spec.phi.size;
   }
-  const int64_t slices = spec.HasGammaAxis() ? spec.gamma.size : 1;
+  const int64_t slices = spec.Glass() ? spec.ior.size : spec.HasGammaAxis() ? spec.gamma.size : 1;
   return slices * (spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
                                                   : int64_t(spec.mu.size) * spec.roughness.size);
 }
 
-const char* Definition(const std::string& meaning) {
+const char* Definition(const std::string& meaning, bool glass) {
+  if (glass && meaning == "E") {
+    return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
+           "the rough dielectric, Fresnel included: reflection plus refraction";
+  }
   if (meaning == "E") return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
   if (meaning == "1-E") return "1 - E(mu), computed in double before rounding";
   if (meaning == "E_avg") return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
@@ -1151,6 +1247,16 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     slice_specs.assign(size_t(spec.gamma.size), spec);
     for (int k = 0; k < spec.gamma.size; ++k) slice_specs[k].model.gamma = spec.gamma.Value(k);
   }
+  // ggx-glass likewise per ior slice, at eta = ior (or 1 / ior inside).
+  if (spec.Glass()) {
+    t.axes.push_back(spec.ior);
+    t.height *= spec.ior.size;
+    slice_specs.assign(size_t(spec.ior.size), spec);
+    for (int k = 0; k < spec.ior.size; ++k) {
+      const double ior = spec.ior.Value(k);
+      slice_specs[k].model.ior = spec.inverse ? 1 / ior : ior;
+    }
+  }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel) {
     t.axes = {spec.alpha_x, spec.alpha_y};
@@ -1200,7 +1306,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
         name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
       }
       if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
-      t.channels.push_back({name, meanings[c], Definition(meanings[c]), {}, {}, {}});
+      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec.Glass()), {}, {}, {}});
     }
     if (spec.error_channel) {
       // In the table's layer when it has one (dfg., sel.): a reader that
@@ -1210,7 +1316,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       const std::string name = spec.table == TableKind::kDfg ? "dfg." + n + "_error"
                                : sel                         ? "sel." + n + "_error"
                                                              : "error";
-      t.channels.push_back({name, "error", Definition("error"), {}, {}, {}});
+      t.channels.push_back({name, "error", Definition("error", false), {}, {}, {}});
     }
     for (Channel& c : t.channels) {
       c.values.resize(size_t(total));

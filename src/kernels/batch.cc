@@ -115,8 +115,10 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
   const ModelDispatch m = DispatchOf(model.kind);
   if (!m.eval) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
-        (model.kind == ModelKind::kGgxAniso ? " is a table model; give ggx with its two widths"
-                                            : " is not in this build (BRDFBAKE_MODELS)"));
+        (model.kind == ModelKind::kGgxAniso   ? " is a table model; give ggx with its two widths"
+         : model.kind == ModelKind::kGgxGlass ? " is a table model; the rough dielectric's batch is "
+                                                "DielectricBsdfBatch"
+                                              : " is not in this build (BRDFBAKE_MODELS)"));
   }
   try {
     ValidateModelParams(ModelParamsOf(model));
@@ -386,6 +388,7 @@ bool BatchSupports(ModelKind kind, Quantity q) {
     case ModelKind::kDisneyDiffuse:
       return q == Quantity::kBrdf;
     case ModelKind::kGgxAniso:
+    case ModelKind::kGgxGlass:
       return false;
   }
   return false;
@@ -404,6 +407,7 @@ bool BatchSupports(ModelKind kind, Sampler s) {
     case ModelKind::kSel:
     case ModelKind::kGgxAniso:
     case ModelKind::kDisneyDiffuse:
+    case ModelKind::kGgxGlass:
       return false;
   }
   return false;

@@ -212,6 +212,7 @@ std::string ModelParams::ToJson() const {
     if (std::isinf(gamma)) j["gamma"] = "inf"; else j["gamma"] = gamma;
   }
   if (kind == ModelKind::kCharlie) j["visibility"] = SheenVisibilityName(visibility);
+  if (kind == ModelKind::kGgxGlass) j["ior"] = ior;
   if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
     j["theta_x"] = theta_x;
     j["theta_y"] = theta_y;
@@ -249,16 +250,17 @@ namespace {
 
 constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
                                 ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso,
-                                ModelKind::kCharlie,   ModelKind::kDisneyDiffuse};
+                                ModelKind::kCharlie,   ModelKind::kDisneyDiffuse, ModelKind::kGgxGlass};
 
-// Every model name this build accepts: the families, and ggx-aniso (a
-// table model of the ggx family).
+// Every model name this build accepts: the families, ggx-aniso (a table
+// model of the ggx family) and ggx-glass (of the glass family).
 std::vector<std::string> BuiltModelNames() {
   std::vector<std::string> names;
   for (const ModelInfo& m : Models()) {
     names.push_back(ModelName(m.kind));
     if (m.kind == ModelKind::kGgx) names.push_back(ModelName(ModelKind::kGgxAniso));
   }
+  if (ModelBuilt(ModelKind::kGgxGlass)) names.push_back(ModelName(ModelKind::kGgxGlass));
   return names;
 }
 
@@ -280,6 +282,7 @@ const char* ModelName(ModelKind kind) {
     case ModelKind::kGgxAniso: return "ggx-aniso";
     case ModelKind::kCharlie: return "charlie";
     case ModelKind::kDisneyDiffuse: return "disney-diffuse";
+    case ModelKind::kGgxGlass: return "ggx-glass";
   }
   return "ggx";
 }
@@ -305,6 +308,7 @@ SheenVisibility ParseSheenVisibility(const std::string& name) {
 }
 
 bool ModelBuilt(ModelKind kind) {
+  if (kind == ModelKind::kGgxGlass) return BRDFBAKE_WITH_GLASS != 0;
   if (kind == ModelKind::kGgxAniso) kind = ModelKind::kGgx;
   for (const ModelInfo& m : Models()) {
     if (kind == m.kind) return true;
@@ -327,6 +331,15 @@ void ValidateModelParams(const ModelParams& p) {
   if (!ModelBuilt(p.kind)) {
     Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
         BuiltModels() + ")");
+  }
+  if (p.kind == ModelKind::kGgxGlass) {
+    if (!(p.ior >= kMinFresnelIndex && p.ior <= kMaxFresnelIndex)) {
+      Bad("ior must lie in [0.01, 100] (the relative index of refraction; below 1 light leaves the "
+          "denser medium; got " + ExactText(p.ior) + ")");
+    }
+    CheckAlpha("alpha_x", p.alpha_x);
+    CheckAlpha("alpha_y", p.alpha_y);
+    return;
   }
   if (p.kind == ModelKind::kDisneyDiffuse) {
     // r = sqrt(alpha) in [0, 1]: r = 0 is an ordinary diffuse lobe.
@@ -379,6 +392,10 @@ void ValidateFresnel(const Fresnel& f) {
 
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
+  if (p.kind == ModelKind::kGgxGlass) {
+    Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval --quantity "
+        "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
+  }
 #if BRDFBAKE_WITH_BECKMANN
   if (p.kind == ModelKind::kBeckmann) {
     return std::make_unique<NdfModel<BeckmannNdf<double>>>(

@@ -191,6 +191,7 @@ struct ModelOptions {
   std::string alpha, alpha_x, alpha_y, roughness;
   std::string gamma = "2";
   std::string visibility = "conty-kulla";
+  std::string ior = "1.5";
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
   CLI::App* app = nullptr;
 
@@ -198,7 +199,11 @@ struct ModelOptions {
     app = a;
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ellipsoid | sel | charlie (sheen) | disney-diffuse, or "
-                    "ggx-aniso (E, E_avg only)")
+                    "ggx-aniso, ggx-glass (E, E_avg only)")
+        ->capture_default_str();
+    app->add_option("--ior", ior,
+                    "ggx-glass: relative index of refraction eta in [0.01, 100] of the medium below "
+                    "the view; below 1 light leaves the denser medium (total internal reflection)")
         ->capture_default_str();
     app->add_option("--visibility", visibility,
                     "charlie: neubelt | conty-kulla | neubelt-clamped | conty-kulla-clamped | enterprise-pbr")
@@ -237,6 +242,15 @@ struct ModelOptions {
       Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
     }
     p.visibility = brdfbake::ParseSheenVisibility(visibility);
+    if (Given(app, "--ior") && p.kind != brdfbake::ModelKind::kGgxGlass) {
+      Bad("--ior: model " + model + " has no index of refraction (only ggx-glass does; the Fresnel "
+          "factor's is --eta)");
+    }
+    p.ior = ParseNumber("--ior", ior);
+    if (!(p.ior >= 0.01 && p.ior <= 100)) {
+      Bad("--ior must lie in [0.01, 100] (the relative index of refraction; below 1 light leaves "
+          "the denser medium; got " + ior + ")");
+    }
     double a = 0.25;
     if (!alpha.empty() && !roughness.empty()) Bad("--alpha and --roughness are exclusive");
     if (!alpha.empty()) a = ParseNumber("--alpha", alpha);
@@ -269,6 +283,9 @@ struct ModelOptions {
         Bad("--alpha-x/--alpha-y: ggx-aniso takes --roughness and --anisotropy");
       }
       check.kind = brdfbake::ModelKind::kGgx;
+    }
+    if (p.kind == brdfbake::ModelKind::kGgxGlass && (!alpha_x.empty() || !alpha_y.empty())) {
+      Bad("--alpha-x/--alpha-y: ggx-glass is isotropic; give --roughness or --alpha");
     }
     if (mirror) check.alpha_x = check.alpha_y = 1.0;  // the widths stand for no NDF
     brdfbake::ValidateModelParams(check);
@@ -324,6 +341,10 @@ std::string ModelsHelp() {
   std::string s = "Models:\n";
   for (const brdfbake::ModelInfo& m : brdfbake::Models()) {
     s += std::string("  ") + brdfbake::ModelName(m.kind) + ": " + m.parameters + "\n      " + m.source + "\n";
+  }
+  if (brdfbake::ModelBuilt(brdfbake::ModelKind::kGgxGlass)) {
+    s += "  ggx-glass: roughness, ior in [0.01, 100] (E and E_avg only)\n"
+         "      rough dielectric over GGX, [Walter07]: reflection + refraction, exact Fresnel\n";
   }
   s += "Quantities (--quantity, comma-separated):\n"
        "  D, pdf      swept direction is the microfacet normal m (pdf: density of the\n"
@@ -403,7 +424,7 @@ struct BakeOptions {
   double theta_x_deg = 0, theta_y_deg = 0, theta_z_deg = 0;
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
-  bool complement = false, error_channel = false;
+  bool complement = false, error_channel = false, inverse = false;
   bool for_report = false;
   CLI::App* app = nullptr;
 
@@ -414,7 +435,8 @@ struct BakeOptions {
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
                     "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm) | "
-                    "charlie (sheen, --visibility) | disney-diffuse (E, E_avg)")
+                    "charlie (sheen, --visibility) | disney-diffuse (E, E_avg) | ggx-glass (rough "
+                    "dielectric, E and E_avg over an ior axis)")
         ->capture_default_str();
     app->add_option("--visibility", visibility,
                     "charlie: neubelt (1 / (4 (NoL + NoV - NoL NoV))) | conty-kulla (the fitted Lambda) | "
@@ -428,15 +450,18 @@ struct BakeOptions {
                     "mu x roughness entries, default " + size + " (E_avg: N roughness entries, default " +
                         (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
                         "gamma slices over [1.501, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
-                        "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y");
+                        "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y; "
+                        "ggx-glass: mu x roughness x ior, default 32x32x32 (E_avg: roughness x ior)");
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
-                    "(the gamma axis: gamma=tail, its only warp)")
+                    "(the gamma axis: gamma=tail, its only warp; the ior axis: ior=fresnel-z, the "
+                    "default, or ior=linear)")
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
                     "gamma=min:max within [1.500001, inf], default 1.501:inf; phi_o in radians within "
-                    "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid)");
+                    "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid); ior=min:max within [1, 100], "
+                    "default 1:3 (ggx-glass)");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
@@ -473,6 +498,9 @@ struct BakeOptions {
     app->add_flag("--complement", complement,
                   "E: store 1-E; E_avg: store 1-E_avg; dfg: add a 1-E channel");
     app->add_flag("--error-channel", error_channel, "add a per-texel 'error' channel");
+    app->add_flag("--inverse", inverse,
+                  "ggx-glass: light leaving the medium (the view inside it): each ior slice is baked at "
+                  "eta = 1/ior, with total internal reflection (Cycles' inverse tables)");
     app->add_option("-o,--output", output,
                     "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
                     "directory, default .)");
@@ -496,6 +524,7 @@ struct BakeOptions {
 
   brdfbake::BakeSpec Get() const {
     brdfbake::BakeSpec spec;
+    if (!for_report) spec.inverse = inverse;
     if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);
     spec.model.kind = brdfbake::ParseModelKind(model);
@@ -555,12 +584,14 @@ struct BakeOptions {
                                ? 0
                                : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const size_t plain = eavg ? 1 : 2;
-    if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso) {
+    if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso &&
+        spec.model.kind != brdfbake::ModelKind::kGgxGlass) {
       Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
           " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
     }
     const bool gamma_axis = gamma_ok && entries == plain + 1;
     const bool aniso = spec.model.kind == brdfbake::ModelKind::kGgxAniso;
+    const bool glass = spec.model.kind == brdfbake::ModelKind::kGgxGlass;
     const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
     const bool ellipsoid = spec.model.kind == brdfbake::ModelKind::kEllipsoid;
     if (!for_report) {
@@ -589,6 +620,22 @@ struct BakeOptions {
         const std::vector<int> n = ParseSize(size, 2, "WxH (alpha_x x alpha_y, e.g. 32x32)");
         spec.alpha_x.size = n[0];
         spec.alpha_y.size = n[1];
+      }
+    } else if (glass) {
+      // E: mu x roughness x ior; E_avg: roughness x ior.
+      const std::vector<int> n =
+          !Given(app, "--size")
+              ? (eavg ? std::vector<int>{32, 32} : std::vector<int>{32, 32, 32})
+              : ParseSize(size, eavg ? 2 : 3,
+                          eavg ? "NxD (roughness x ior, e.g. 32x16)"
+                               : "WxHxD (mu x roughness x ior, e.g. 32x32x16)");
+      if (eavg) {
+        spec.roughness.size = n[0];
+        spec.ior.size = n[1];
+      } else {
+        spec.mu.size = n[0];
+        spec.roughness.size = n[1];
+        spec.ior.size = n[2];
       }
     } else if (aniso) {
       // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
@@ -629,7 +676,7 @@ struct BakeOptions {
       if (gamma_axis) spec.gamma.size = wh[2];
     }
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
-    spec.mu.placement = spec.roughness.placement = spec.gamma.placement = pl;
+    spec.mu.placement = spec.roughness.placement = spec.gamma.placement = spec.ior.placement = pl;
     spec.phi.placement = spec.anisotropy.placement = pl;
     spec.alpha_x.placement = spec.alpha_y.placement = pl;
     // Per-axis settings: "value" for every axis of the table but gamma, or
@@ -647,6 +694,7 @@ struct BakeOptions {
     }
     std::vector<brdfbake::Axis*> named = axes;
     if (gamma_axis) named.push_back(&spec.gamma);
+    if (glass) named.push_back(&spec.ior);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
                         const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
       std::vector<std::string> seen;
@@ -667,13 +715,15 @@ struct BakeOptions {
             std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
                                    (gamma_axis ? " or gamma" : "");
             if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
+            if (glass) expected = eavg ? "roughness or ior" : "mu, roughness or ior";
             if (sel) expected = "alpha_x or alpha_y";
             if (ellipsoid) expected = eavg ? "none (E_avg is one value)" : "mu or phi_o";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
                      ? std::string("no gamma axis (std without --gamma and a third --size entry has one)")
-                     : "unknown axis '" + name + "' (expected " + expected + ")"));
+                 : name == "ior" ? std::string("no ior axis (only ggx-glass has one)")
+                                 : "unknown axis '" + name + "' (expected " + expected + ")"));
           }
         }
         for (brdfbake::Axis* a : targets) {
@@ -756,6 +806,10 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
     dims += " (" + std::to_string(table.spec.gamma.size) + " gamma slices of " +
             std::to_string(h / table.spec.gamma.size) + " rows)";
   }
+  if (table.spec.Glass() && table.spec.table == brdfbake::TableKind::kE) {
+    dims += " (" + std::to_string(table.spec.ior.size) + " ior slices of " +
+            std::to_string(h / table.spec.ior.size) + " rows" + (table.spec.inverse ? ", inverse" : "") + ")";
+  }
   std::printf("wrote %s: %s %s %s, %s integrator, baked in %.3f s, max abs error %.2e\n",
               OneLine(path).c_str(), what.c_str(), table.spec.model.name(), dims.c_str(),
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
@@ -803,7 +857,7 @@ int RunPreset(const BakeOptions& opts) {
   // may be chosen.
   for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range",
                         "--placement", "--masking", "--pixel", "--complement", "--error-channel", "--integrator",
-                        "--samples", "--seed", "--symbol", "--channels"}) {
+                        "--samples", "--seed", "--symbol", "--channels", "--inverse"}) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
   }
   const std::string dir = opts.output.empty() ? "." : opts.output;
@@ -865,7 +919,7 @@ int RunPreset(const BakeOptions& opts) {
 int RunSceneBake(const BakeOptions& opts) {
   for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range", "--placement", "--masking",
                         "--complement", "--error-channel", "--integrator", "--samples", "--seed", "--tolerance",
-                        "--symbol", "--channels"}) {
+                        "--symbol", "--channels", "--inverse"}) {
     if (Given(opts.app, o)) {
       Bad(std::string(o) + ": a scene bake takes its settings from the scene file (the command line may override "
                            "--preset, --format, --pixel, --shader, --max-size and --error-target)");
@@ -920,6 +974,11 @@ int RunBake(const BakeOptions& opts) {
   const std::vector<brdfbake::ShaderLanguage> langs = ShaderLanguages(opts.shader);
   if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
     Bad("-o: sel_norm tables are written as .exr");
+  }
+  if (spec.Glass() && (container != brdfbake::Container::kExr || !langs.empty())) {
+    Bad(std::string(container != brdfbake::Container::kExr ? "-o" : "--shader") +
+        ": ggx-glass tables are written as .exr, without a lookup function (read the axes from "
+        "its header)");
   }
   if (!langs.empty()) brdfbake::CheckShaderTable(spec);
   if (opts.channels != "named" && opts.channels != "rgba") {
