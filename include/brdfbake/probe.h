@@ -55,8 +55,9 @@ std::vector<std::vector<double>> ProbePositions(const Table& table, const ProbeO
 // positions, over every value channel (all but "error"). The exact values are the table's own integrator at each point,
 // moved into the stored range as the bake stores them; they are computed in
 // parallel and reduced serially, so the result does not depend on the
-// thread count. E, E_avg and dfg over (mu,) roughness (+ gamma), and
-// ggx-aniso E and E_avg; throws std::invalid_argument for the others.
+// thread count. E, E_avg and dfg over (mu,) roughness (+ gamma, or ior for
+// ggx-glass), and ggx-aniso E and E_avg; throws std::invalid_argument for
+// the others.
 ProbeResult LookupError(const Table& table, const ProbeOptions& options = {});
 
 // The exact values of the table's channels (as LookupError compares them)

@@ -41,6 +41,19 @@ struct SceneMaterial {
   // factor over [0, factor].
   bool sheen = false;
   double sheen_roughness_min = 0, sheen_roughness_max = 0;
+  // The index of refraction (glTF KHR_materials_ior, 1.5 by default; TOML
+  // ior, a number or a range [min, max] in [1, 100]). On an opaque
+  // material it sets F0 = ((ior - 1) / (ior + 1))^2 alone.
+  double ior_min = 1.5, ior_max = 1.5;
+  bool ior_given = false;
+  // A transmissive material (glTF KHR_materials_transmission with a factor
+  // above 0, TOML transmission = true): the rough dielectric over GGX
+  // (ggx-glass) at its roughness and ior, reflection plus refraction.
+  // `volume` (KHR_materials_volume with a thickness above 0, TOML volume =
+  // true): the surface bounds a medium, so light also leaves it (eta = 1 /
+  // ior); without it the material is thin-walled.
+  bool transmission = false;
+  bool volume = false;
   std::string source;  // "toml" or "glTF material 3"
   // Features brdfbake recognises but does not bake tables for (glTF
   // extensions), each with what it would need and why it is not baked
@@ -114,7 +127,8 @@ struct PlannedTable {
 
 struct ScenePlan {
   std::vector<PlannedTable> tables;
-  // How anisotropic, clearcoat and sheen materials are served, and why.
+  // How anisotropic, clearcoat, sheen and transmissive materials are
+  // served, and why.
   std::vector<std::string> decisions;
   std::vector<std::string> notes;  // materials or features not baked, and why
 };
@@ -125,7 +139,9 @@ struct ScenePlan {
 // isotropic tables looked up at the collapsed roughness that meets the
 // target; clearcoat layers the isotropic GGX tables; sheen layers the
 // charlie (conty-kulla) E and E_avg over their sheen roughness, or the
-// engine's own sheen channel. `progress` gets one line per candidate tried.
+// engine's own sheen channel; transmissive materials the ggx-glass E and
+// E_avg over their roughness and ior range (and the inverse tables, eta =
+// 1 / ior, for a volume). `progress` gets one line per candidate tried.
 ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::string&)>& progress = nullptr);
 
 // The files a bake of `scene` may write into `dir` (each table's file, its

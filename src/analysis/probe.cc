@@ -163,6 +163,11 @@ std::vector<double> ExactTableValues(const Table& t, const std::vector<double>& 
     one.gamma.size = 0;
     one.model.gamma = value("gamma", s.model.gamma);
   }
+  if (s.Glass()) {
+    // The slice's eta, as Bake sets it: ior, or 1 / ior inside the medium.
+    const double ior = value("ior", s.ior.min);
+    one.model.ior = s.inverse ? 1 / ior : ior;
+  }
   // The stored range: [0, 1], or unbounded above for the lobes that do
   // not conserve energy (charlie, disney-diffuse: StoredEMax), as the bake
   // stores them.

@@ -26,6 +26,7 @@
 #include "base/error.h"
 #include "base/text.h"
 #include "brdfbake/exr.h"
+#include "brdfbake/models/fresnel.h"
 #include "brdfbake/models/slope_ndf.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/probe.h"
@@ -114,18 +115,32 @@ Masking MaskingOf(const Fields& f) {
   f.Fail("masking", "'" + Excerpt(m) + "' is not height-correlated or separable");
 }
 
-// A roughness field: a number in [0, 1], or a range [min, max] within it.
-void RoughnessRange(const Fields& f, const std::string& field, double* lo, double* hi) {
+// A field that is a number in [lim_lo, lim_hi], or a range [min, max]
+// within it.
+void NumberRange(const Fields& f, const std::string& field, double lim_lo, double lim_hi, double* lo, double* hi) {
   const toml::node* r = f.t.get(field);
   if (r->is_array()) {
     const toml::array& a = *r->as_array();
     if (a.size() != 2 || !a[0].is_number() || !a[1].is_number()) f.Fail(field, "a range is two numbers [min, max]");
     *lo = a[0].value<double>().value() + 0.0;  // -0 as 0
     *hi = a[1].value<double>().value() + 0.0;
-    if (!(*lo >= 0 && *lo <= *hi && *hi <= 1)) f.Fail(field, "the range must satisfy 0 <= min <= max <= 1");
+    if (!(*lo >= lim_lo && *lo <= *hi && *hi <= lim_hi)) {
+      f.Fail(field, "the range must satisfy " + Num(lim_lo) + " <= min <= max <= " + Num(lim_hi));
+    }
   } else {
-    *lo = *hi = f.Number(field, 0.5, 0, 1, true);
+    *lo = *hi = f.Number(field, lim_lo, lim_lo, lim_hi, true);
   }
+}
+
+// A roughness field: in [0, 1].
+void RoughnessRange(const Fields& f, const std::string& field, double* lo, double* hi) {
+  NumberRange(f, field, 0, 1, lo, hi);
+}
+
+// An index of refraction: in [1, 100] (the dielectric Fresnel's domain,
+// fresnel.h, from the side of index 1).
+void IorRange(const Fields& f, const std::string& field, double* lo, double* hi) {
+  NumberRange(f, field, 1, kMaxFresnelIndex, lo, hi);
 }
 
 std::string ReadBytes(const std::string& path, size_t limit = std::string::npos);
@@ -271,7 +286,8 @@ Scene LoadToml(const std::string& path) {
     std::string name = "#" + std::to_string(index);
     if (const toml::node* n = mt.get("name"); n && n->is_string()) name = std::string(**n->as_string());
     const Fields f{mt, path + ": material '" + Excerpt(name) + "'"};
-    f.OnlyKnown({"name", "model", "roughness", "gamma", "anisotropy", "masking", "sheen_roughness"});
+    f.OnlyKnown({"name", "model", "roughness", "gamma", "anisotropy", "masking", "sheen_roughness", "ior",
+                 "transmission", "volume"});
     SceneMaterial mat;
     mat.name = f.String("name", "", true);
     if (mat.name.empty()) f.Fail("name", "must not be empty");
@@ -316,6 +332,22 @@ Scene LoadToml(const std::string& path) {
       f.Fail("anisotropy", "only ggx-aniso has an anisotropy");
     }
     mat.masking = MaskingOf(f);
+    if (f.Has("ior")) {
+      IorRange(f, "ior", &mat.ior_min, &mat.ior_max);
+      mat.ior_given = true;
+    }
+    mat.transmission = f.Bool("transmission", false);
+    mat.volume = f.Bool("volume", false);
+    if (mat.volume && !mat.transmission) f.Fail("volume", "a volume needs transmission = true");
+    if (mat.transmission) {
+      if (mat.model != ModelKind::kGgx) f.Fail("transmission", "transmissive materials are ggx (the rough dielectric over GGX)");
+      if (mat.masking != Masking::kHeightCorrelated) {
+        f.Fail("transmission", "the glass tables are height-correlated (masking = \"height-correlated\")");
+      }
+      if (!ModelBuilt(ModelKind::kGgxGlass)) {
+        f.Fail("transmission", "transmission needs the glass family, which is not in this build (BRDFBAKE_MODELS)");
+      }
+    }
     s.materials.push_back(mat);
   }
   if (s.materials.empty()) Bad(path + ": no [[material]] entries");
@@ -481,6 +513,15 @@ Scene LoadGltf(const std::string& path) {
       if (!it->is_number()) Bad(where + ": field '" + field + "': expected a number, got a " + JsonType(*it));
       return it->get<double>();
     };
+    // A texture reference of an extension: an object with an integer index.
+    const auto check_texture = [&](const nlohmann::json& obj, const char* key, const std::string& field) {
+      const auto tex = obj.find(key);
+      if (tex == obj.end()) return;
+      const auto index = tex->is_object() ? tex->find("index") : tex->end();
+      if (!tex->is_object() || index == tex->end() || !index->is_number_unsigned()) {
+        Bad(where + ": field '" + field + key + "': expected an object with an integer 'index' >= 0");
+      }
+    };
     double factor = 1.0;
     bool textured = false;
     const auto pbr = m.find("pbrMetallicRoughness");
@@ -542,11 +583,60 @@ Scene LoadGltf(const std::string& path) {
           // The texture's blue channel scales the strength: [0, strength].
           mat.anisotropy_min = tex != ext.end() ? 0.0 : strength;
         }
-      } else if (name_ext == "KHR_materials_ior" || name_ext == "KHR_materials_specular") {
-        // The F0 and F90 these set weight the split-sum terms: dfg covers them.
+      } else if (name_ext == "KHR_materials_ior") {
+        // On an opaque material the ior sets F0, which weights the
+        // split-sum terms (dfg covers it); a transmissive one refracts by
+        // it. The schema's minimum is 1; brdfbake's Fresnel reaches 100.
+        const double ior = number(ext, "ior", "KHR_materials_ior.ior", 1.5);
+        if (!(ior >= 1 && ior <= kMaxFresnelIndex)) {
+          Bad(where + ": field 'KHR_materials_ior.ior': " + ExactText(ior) + " is outside [1, " +
+              Num(kMaxFresnelIndex) + "]");
+        }
+        mat.ior_min = mat.ior_max = ior;
+        mat.ior_given = true;
+      } else if (name_ext == "KHR_materials_specular") {
+        // The F0 and F90 this sets weight the split-sum terms: dfg covers them.
       } else if (name_ext == "KHR_materials_transmission") {
-        mat.unsupported.push_back(
-            {name_ext, "needs a transmission (BTDF) albedo table over roughness and IOR, which brdfbake does not bake yet"});
+        // The rough dielectric's BTDF at the material's roughness and ior;
+        // a transmissionTexture multiplies the factor (0 stays 0).
+        const std::string field = "KHR_materials_transmission.";
+        const double t = number(ext, "transmissionFactor", field + "transmissionFactor", 0.0) + 0.0;
+        if (!(t >= 0 && t <= 1)) {
+          Bad(where + ": field '" + field + "transmissionFactor': " + ExactText(t) + " is outside [0, 1]");
+        }
+        check_texture(ext, "transmissionTexture", field);
+        if (t > 0 && !ModelBuilt(ModelKind::kGgxGlass)) {
+          mat.unsupported.push_back({name_ext,
+                                     "needs the ggx-glass tables over roughness and ior, and this build leaves "
+                                     "the glass family out (BRDFBAKE_MODELS)"});
+        } else if (t > 0) {
+          mat.transmission = true;
+        }
+      } else if (name_ext == "KHR_materials_volume") {
+        // A thickness above 0 makes the surface bound a medium (light
+        // enters and leaves it); 0 is thin-walled.
+        const std::string field = "KHR_materials_volume.";
+        const double thickness = number(ext, "thicknessFactor", field + "thicknessFactor", 0.0) + 0.0;
+        if (!(thickness >= 0) || std::isinf(thickness)) {
+          Bad(where + ": field '" + field + "thicknessFactor': " + ExactText(thickness) + " is not a finite number >= 0");
+        }
+        const double distance = number(ext, "attenuationDistance", field + "attenuationDistance", 1.0);
+        if (!(distance > 0)) {
+          Bad(where + ": field '" + field + "attenuationDistance': " + ExactText(distance) + " is not above 0");
+        }
+        if (const auto c = ext.find("attenuationColor"); c != ext.end()) {
+          if (!c->is_array() || c->size() != 3) {
+            Bad(where + ": field '" + field + "attenuationColor': expected an array of three numbers");
+          }
+          for (size_t k = 0; k < 3; ++k) {
+            const nlohmann::json& v = (*c)[k];
+            if (!v.is_number() || !(v.get<double>() >= 0)) {
+              Bad(where + ": field '" + field + "attenuationColor[" + std::to_string(k) + "]': expected a number >= 0");
+            }
+          }
+        }
+        check_texture(ext, "thicknessTexture", field);
+        mat.volume = thickness > 0;
       } else if (name_ext == "KHR_materials_sheen") {
         // The sheen layer: the Charlie NDF, conty-kulla visibility, at
         // sheenRoughnessFactor (its texture's alpha modulates it over [0,
@@ -618,6 +708,15 @@ Scene LoadGltf(const std::string& path) {
       } else {
         mat.unsupported.push_back({name_ext, "an extension brdfbake does not know: not baked"});
       }
+    }
+    if (!mat.transmission) mat.volume = false;  // a medium behind an opaque surface changes no table
+    if (mat.transmission && mat.model == ModelKind::kGgxAniso) {
+      // The glass tables are isotropic; an anisotropic BTDF would need 4D
+      // ones.
+      mat.unsupported.push_back({"KHR_materials_transmission",
+                                 "anisotropic transmission needs 4D glass tables, which brdfbake does not bake: "
+                                 "not baked"});
+      mat.transmission = mat.volume = false;
     }
     s.materials.push_back(mat);
   }
@@ -746,6 +845,26 @@ std::vector<TableKind> SheenKinds(const Scene& scene) {
   return kinds;
 }
 
+// The groups of the transmissive materials' glass tables: light entering
+// the medium (eta = ior), and for a volume also leaving it (eta = 1 / ior).
+constexpr const char* kGlassGroup = "ggx-glass";
+constexpr const char* kGlassInverseGroup = "ggx-glass_inverse";
+bool IsGlassGroup(const std::string& g) { return g == kGlassGroup || g == kGlassInverseGroup; }
+
+// The glass groups' table kinds: E and E_avg among the scene's tables (a
+// dielectric's Fresnel is inside its E: no dfg split), whatever the
+// preset (no engine preset ships glass tables: they are brdfbake's own).
+std::vector<TableKind> GlassKinds(const Scene& scene) {
+  std::vector<TableKind> kinds;
+  const bool any = std::any_of(scene.materials.begin(), scene.materials.end(),
+                               [](const SceneMaterial& m) { return m.transmission; });
+  if (!any) return kinds;
+  for (TableKind k : scene.engine.tables) {
+    if (k == TableKind::kE || k == TableKind::kEavg) kinds.push_back(k);
+  }
+  return kinds;
+}
+
 // One table slot of a plan: its kind and material group; `generic` when
 // the engine has no layout for it (the ggx-aniso tables under a preset,
 // and the sheen tables of an engine without a sheen table).
@@ -757,7 +876,7 @@ struct Slot {
 
 // The slot of a planned table of `group`.
 Slot SlotOf(const Scene& scene, TableKind kind, const std::string& group, bool anisotropic) {
-  bool generic = anisotropic;
+  bool generic = anisotropic || IsGlassGroup(group);
   if (group == kSheenGroup && !scene.engine.preset.empty()) {
     generic = !EngineTable(FindPreset(scene.engine.preset), kind, ModelKind::kCharlie);
   }
@@ -847,6 +966,11 @@ struct AnisoBox {
   double rmin = 1, rmax = 0, smin = 1, smax = 0;
 };
 
+// The transmissive materials' box: their roughness and ior.
+struct GlassBox {
+  double rmin = 1, rmax = 0, ior_min = kMaxFresnelIndex, ior_max = 1;
+};
+
 // Axis over [lo, hi] with n entries (one entry at lo = hi: centres).
 void SetAxis(Axis* a, double lo, double hi, int n, Placement placement) {
   a->min = lo;
@@ -860,6 +984,10 @@ int64_t Texels(const Table& t) { return int64_t(t.width) * t.height; }
 // The texels a bake of `spec` holds (E, E_avg, dfg of the scene's models).
 int64_t SpecTexels(const BakeSpec& s) {
   const int64_t r = s.roughness.size;
+  if (s.Glass()) {
+    const int64_t ri = r * s.ior.size;
+    return s.table == TableKind::kEavg ? ri : ri * s.mu.size;
+  }
   if (s.Anisotropic()) {
     const int64_t rs = r * s.anisotropy.size;
     return s.table == TableKind::kEavg ? rs : rs * s.mu.size * s.phi.size;
@@ -896,6 +1024,10 @@ PlannedTable Evaluate(const BakeSpec& spec, const LayoutOf& layout_of, const Pro
   const Image im = ArrangeTable(p.table, own);
   const PixelType stored = spec.half ? PixelType::kHalf : PixelType::kFloat;
   p.total_error = p.interpolation_error + (im.pixel == stored ? p.table.integration_error : im.max_abs_error);
+  // The probe's exact values are the table's integrator at its tolerance:
+  // a glass table, baked at a tolerance tied to the target (GlassBase),
+  // counts that too.
+  if (spec.Glass()) p.total_error += spec.tolerance;
   p.collapse_error = collapse;
   p.meets_target = p.total_error + collapse <= target;
   if (progress) {
@@ -1186,6 +1318,78 @@ class Planner {
            " would meet it (lookup error " + Num(h.total_error) + ")";
   }
 
+  // The ggx-glass tables of the transmissive materials: E over mu x
+  // roughness x ior, E_avg over roughness x ior, over the materials'
+  // roughness and ior ranges (one entry where a range is one value), the
+  // ior axis in z = F0^(1/4) (bake.h); `inverse`: light leaving the
+  // medium (eta = 1 / ior). brdfbake's own file under every preset: no
+  // engine preset ships a glass table yet.
+  BakeSpec GlassBase(TableKind kind, const GlassBox& b, bool inverse) const {
+    BakeSpec base;
+    base.table = kind;
+    base.model.kind = ModelKind::kGgxGlass;
+    base.inverse = inverse;
+    // A glass texel costs thousands of ray integrals: the texels and the
+    // probe's exact values are integrated to a thousandth of the target
+    // (at least 1e-7, at most 1e-5) rather than 1e-7, and the bound
+    // counts it (Evaluate).
+    base.tolerance = std::clamp(1e-3 * scene_.engine.error_target, 1e-7, 1e-5);
+    const Placement pl = preset_ ? Placement::kCenters : scene_.engine.placement;
+    base.half = !preset_ && scene_.engine.pixel == PixelType::kHalf;
+    base.complement = !preset_ && scene_.engine.complement;
+    base.mu.placement = pl;
+    SetAxis(&base.roughness, b.rmin, b.rmax, 2, pl);
+    SetAxis(&base.ior, b.ior_min, b.ior_max, 2, pl);
+    base.ior.warp = Warp::kFresnelZ;
+    return base;
+  }
+
+  // A rung of the glass ladder: n entries along mu and roughness, n / 2
+  // along ior (E changes less across an ior range than across roughness);
+  // E_avg n along each spanned axis.
+  static BakeSpec GlassRung(const BakeSpec& base, const Rung& rung) {
+    const bool eavg = base.table == TableKind::kEavg;
+    BakeSpec spec = base;
+    if (!eavg) {
+      spec.mu.size = rung.n;
+      spec.mu.warp = rung.warp;
+    }
+    if (base.roughness.size > 1) spec.roughness.size = rung.n;
+    if (base.ior.size > 1) spec.ior.size = eavg ? rung.n : std::max(2, rung.n / 2);
+    return spec;
+  }
+
+  // The smallest rung that meets the target: E up to the size limit and
+  // 2^15 texels (a glass texel is a two-dimensional integral, thousands of
+  // rays), mu square only (linear was 5 to 15 times worse at every size
+  // tried: E changes fastest at grazing views); E_avg, a hundred E
+  // integrals per entry, up to 8 per axis as the 4D E_avg.
+  PlannedTable PlanGlass(const BakeSpec& base, const std::string& label) const {
+    const double target = scene_.engine.error_target;
+    const bool eavg = base.table == TableKind::kEavg;
+    const bool single = eavg && base.roughness.size <= 1 && base.ior.size <= 1;
+    std::vector<Rung> rungs;
+    if (single) {
+      rungs = {{1, Warp::kLinear}};
+    } else {
+      const int limit = eavg ? std::min(8, scene_.engine.max_lut_size) : scene_.engine.max_lut_size;
+      for (const Rung& r : Rungs(Doublings(2, limit), {eavg ? Warp::kLinear : Warp::kSquare})) {
+        if (SpecTexels(GlassRung(base, r)) <= (int64_t(1) << 15)) rungs.push_back(r);
+      }
+    }
+    ProbeOptions probe;
+    probe.probes = 8;
+    probe.minor_probes = 4;
+    PlannedTable p = Climb(rungs, [&](const Rung& r) { return GlassRung(base, r); }, GenericLayout(), probe, 0.0,
+                           target, label, progress_);
+    if (!p.meets_target && !single) {
+      p.hint = eavg ? "no size up to 8 per axis meets it"
+                    : "no size within the limit (" + std::to_string(scene_.engine.max_lut_size) +
+                          " per axis, 2^15 texels) meets it";
+    }
+    return p;
+  }
+
   const Preset* preset() const { return preset_; }
 
  private:
@@ -1377,9 +1581,15 @@ std::vector<Slot> PossibleSlots(const Scene& scene) {
   }
   const std::vector<TableKind> sheen_kinds = SheenKinds(scene);
   if (!sheen_kinds.empty()) groups[kSheenGroup] = false;
+  const std::vector<TableKind> glass_kinds = GlassKinds(scene);
+  for (const SceneMaterial& m : scene.materials) {
+    if (glass_kinds.empty() || !m.transmission) continue;
+    groups[kGlassGroup] = false;
+    if (m.volume) groups[kGlassInverseGroup] = false;
+  }
   std::vector<Slot> slots;
   for (const auto& [group, aniso] : groups) {
-    for (TableKind k : group == kSheenGroup ? sheen_kinds : kinds) {
+    for (TableKind k : group == kSheenGroup ? sheen_kinds : IsGlassGroup(group) ? glass_kinds : kinds) {
       if (aniso && k == TableKind::kDfg) continue;
       slots.push_back(SlotOf(scene, k, group, aniso));
     }
@@ -1415,8 +1625,18 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
   std::map<std::string, std::map<TableKind, std::vector<Member>>> iso;
   std::map<std::string, SceneMaterial> model_of;
   std::map<std::string, std::vector<const SceneMaterial*>> aniso;
-  std::vector<const SceneMaterial*> sheen;
+  std::vector<const SceneMaterial*> sheen, glass;
   for (const SceneMaterial& m : scene.materials) {
+    if (m.transmission) glass.push_back(&m);
+    if (!m.transmission && m.ior_given) {
+      const double f0_lo = std::pow((m.ior_min - 1) / (m.ior_min + 1), 2);
+      const double f0_hi = std::pow((m.ior_max - 1) / (m.ior_max + 1), 2);
+      plan.decisions.push_back("material '" + Printable(m.name) + "' (ior " + Range(m.ior_min, m.ior_max) +
+                               ", opaque): the ior sets only F0 = ((ior - 1) / (ior + 1))^2 = " +
+                               Range(f0_lo, f0_hi) +
+                               ", which weights the split-sum terms: the scene's dfg (scale and bias) serves it, "
+                               "and E and E_avg (F = 1) do not change");
+    }
     if (m.sheen) {
       sheen.push_back(&m);
       SceneMaterial charlie;
@@ -1470,6 +1690,59 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     if (sheen_kinds.empty() && !in_channel) {
       plan.notes.push_back(who + ": the charlie E over (mu, sheen roughness) that glTF's sheen scales the base layer "
                                  "by: the engine samples no E or E_avg table (its 'tables')");
+    }
+  }
+  // Transmissive materials: the ggx-glass E and E_avg over their box,
+  // entering the medium, and for volumes leaving it too.
+  std::vector<PlannedTable> glass_tables;
+  const std::vector<TableKind> glass_kinds = GlassKinds(scene);
+  if (!glass.empty()) {
+    GlassBox box;
+    std::string names;
+    bool volume = false;
+    for (const SceneMaterial* m : glass) {
+      box.rmin = std::min(box.rmin, m->roughness_min);
+      box.rmax = std::max(box.rmax, m->roughness_max);
+      box.ior_min = std::min(box.ior_min, m->ior_min);
+      box.ior_max = std::max(box.ior_max, m->ior_max);
+      volume |= m->volume;
+      names += (names.empty() ? "'" : ", '") + Printable(m->name) + "'";
+    }
+    std::string d = "transmissive material" + std::string(glass.size() > 1 ? "s " : " ") + names +
+                    " (KHR_materials_transmission, roughness " + Range(box.rmin, box.rmax) + ", ior " +
+                    Range(box.ior_min, box.ior_max) +
+                    "): the rough dielectric over GGX (ggx-glass: reflection by the exact Fresnel plus refraction, "
+                    "[Walter07])";
+    if (glass_kinds.empty()) {
+      d += "; the engine samples no E or E_avg table, so no glass table is baked";
+    } else {
+      d += ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), over the materials' ior range "
+           "only, the ior axis in z = F0^(1/4)";
+      d += volume ? "; a volume (KHR_materials_volume) also lets light leave the medium: the inverse tables "
+                    "(eta = 1 / ior, total internal reflection beyond the critical angle)"
+                  : "; thin-walled (no KHR_materials_volume): light only enters, eta = ior";
+      if (planner.preset()) {
+        d += "; engine preset '" + scene.engine.preset + "' ships no glass table: brdfbake's own EXR files";
+      }
+    }
+    d += "; its specular reflection looks up the isotropic GGX tables as the opaque materials do";
+    plan.decisions.push_back(d);
+    for (bool inverse : {false, true}) {
+      if (inverse && !volume) continue;
+      const std::string group = inverse ? kGlassInverseGroup : kGlassGroup;
+      for (TableKind k : glass_kinds) {
+        PlannedTable p = planner.PlanGlass(planner.GlassBase(k, box, inverse), std::string(TableName(k)) + " " + group);
+        p.group = group;
+        for (const SceneMaterial* m : glass) {
+          if (!inverse || m->volume) p.materials.push_back(m->name);
+        }
+        p.file = TableFile(scene, {k, group, true});
+        p.why = "used by " + std::to_string(p.materials.size()) + " transmissive material" +
+                (p.materials.size() > 1 ? "s" : "") + ", roughness " + Range(box.rmin, box.rmax) + ", ior " +
+                Range(box.ior_min, box.ior_max) +
+                (inverse ? "; light leaving the medium (eta = 1 / ior)" : "; light entering the medium (eta = ior)");
+        glass_tables.push_back(std::move(p));
+      }
     }
   }
   // Anisotropic groups: the 4D tables over their box, or the isotropic
@@ -1648,6 +1921,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     }
   }
   for (PlannedTable& a : aniso_tables) plan.tables.push_back(std::move(a));
+  for (PlannedTable& g : glass_tables) plan.tables.push_back(std::move(g));
   std::stable_sort(plan.tables.begin(), plan.tables.end(),
                    [](const PlannedTable& x, const PlannedTable& y) { return x.group < y.group; });
   // Under a preset, the files are the engine's.

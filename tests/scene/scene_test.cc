@@ -113,9 +113,12 @@ TEST(SceneTest, GltfExampleReadsMaterialsAndExtensions) {
   }
   EXPECT_TRUE(aluminium_served);
   EXPECT_EQ(sheen_tables, 2);  // E and E_avg
-  ASSERT_EQ(plan.decisions.size(), 2u);
+  // The anisotropic aluminium, the sheen, and the opaque material with
+  // KHR_materials_ior (served by dfg).
+  ASSERT_EQ(plan.decisions.size(), 3u);
   std::string decisions;
   for (const std::string& d : plan.decisions) decisions += d + "\n";
+  EXPECT_NE(decisions.find("(ior 1.5, opaque)"), std::string::npos) << decisions;
   EXPECT_NE(decisions.find("brushed_aluminium"), std::string::npos) << decisions;
   EXPECT_NE(decisions.find("collapsed roughness"), std::string::npos) << decisions;
   EXPECT_NE(decisions.find("the sheen layer of 'velvet'"), std::string::npos) << decisions;

@@ -29,11 +29,15 @@ double TextureBilinear(const At& at, int width, int height, double u, double v) 
 }
 
 // The texture coordinate (in [0, 1]) at which axis `a` holds the value p.
-// The tail warp (gamma) is log-linear in u = (gamma - 1.5) / (gamma - 0.5).
+// The tail warp (gamma) is log-linear in u = (gamma - 1.5) / (gamma - 0.5);
+// the fresnel-z warp (ior) linear in z = sqrt(|ior - 1| / (ior + 1)).
 inline double TextureCoordinate(const Axis& a, double p) {
   if (a.size == 1) return 0.5;
   double t;
-  if (a.warp == Warp::kTail) {
+  if (a.warp == Warp::kFresnelZ) {
+    auto z = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    t = std::clamp((z(p) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0);
+  } else if (a.warp == Warp::kTail) {
     auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
     t = std::clamp((log_u(p) - log_u(a.min)) / (log_u(a.max) - log_u(a.min)), 0.0, 1.0);
   } else {

@@ -790,6 +790,29 @@ class Progress {
   std::mutex mu_;
 };
 
+// A scene plan's progress on stderr when it is a terminal and the plan has
+// taken more than a second: the candidate just measured and the time so
+// far, on one line rewritten in place.
+class PlanProgress {
+ public:
+  PlanProgress() : tty_(::isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  void operator()(const std::string& line) {
+    if (!tty_) return;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (elapsed < 1.0) return;
+    std::fprintf(stderr, "\r\x1b[Kplanning, %.0fs: %s", elapsed, OneLine(line).substr(0, 100).c_str());
+    shown_ = true;
+  }
+  void Finish() {
+    if (shown_) std::fprintf(stderr, "\r\x1b[K");
+  }
+
+ private:
+  bool tty_;
+  bool shown_ = false;
+  std::chrono::steady_clock::time_point start_;
+};
+
 // The file beside `path` that holds its shader function: dfg.ktx2 -> dfg.glsl.
 std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
   return std::filesystem::path(path).replace_extension(brdfbake::ShaderLanguageName(lang)).string();
@@ -943,7 +966,9 @@ int RunSceneBake(const BakeOptions& opts) {
   // Every output is checked before the plan's work (a directory in the
   // place of a table failed only after the planning).
   for (const std::string& f : outputs) brdfbake::CheckOutputPath(f);
-  const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene);
+  PlanProgress progress;
+  const brdfbake::ScenePlan plan = brdfbake::PlanScene(scene, [&](const std::string& l) { progress(l); });
+  progress.Finish();
   const std::vector<std::string> files = brdfbake::WriteScenePlan(scene, plan, opts.output);
   std::printf("%s", brdfbake::PlanText(scene, plan).c_str());
   for (const std::string& f : files) std::printf("wrote %s\n", OneLine(f).c_str());
@@ -1370,7 +1395,10 @@ int main(int argc, char** argv) {
       brdfbake::ApplySceneOverrides(&scene, SceneOverridesGiven(plan, plan_preset, plan_format, plan_pixel, plan_shader,
                                                                 plan_max_size, plan_error_target));
       brdfbake::SceneOutputFiles(scene, ".");  // a --format the engine does not load is refused here too
-      std::printf("%s", brdfbake::PlanText(scene, brdfbake::PlanScene(scene)).c_str());
+      PlanProgress progress;
+      const brdfbake::ScenePlan scene_plan = brdfbake::PlanScene(scene, [&](const std::string& l) { progress(l); });
+      progress.Finish();
+      std::printf("%s", brdfbake::PlanText(scene, scene_plan).c_str());
     }
     if (*report) status = RunReportCommand(report_opts, repeats, reference_tolerance);
     if (*stability) status = RunStabilityCommand(stability_samples, stability_seed);
