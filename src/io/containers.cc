@@ -582,9 +582,15 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
   } else {
     layout += ", one row";
   }
+  if (im.axes.size() > 2) {
+    layout += ", then slices of " + std::to_string(im.axes[1].size) + " rows stacked vertically over";
+    for (size_t k = 2; k < im.axes.size(); ++k) layout += (k > 2 ? ", " : " ") + im.axes[k].name;
+    layout += " (the third axis fastest)";
+  }
   layout += "; channels interleaved per texel in the order of brdfbake.channel_order; axis i of size N: "
             "t = (i + 0.5) / N (centers) or i / (N - 1) (edges), value = min + (max - min) w(t), "
-            "w = t, t^2, sqrt(t) for linear, square, sqrt; the integrand at max(value, clamp_min)";
+            "w = t, t^2, sqrt(t) for linear, square, sqrt (the tail and fresnel-z warps: the axis' map); "
+            "the integrand at max(value, clamp_min)";
   char err[40];
   std::snprintf(err, sizeof(err), "%.3e", im.max_abs_error * (1 + 1e-3));
   std::vector<std::pair<std::string, std::string>> kv = {
@@ -592,7 +598,7 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
       {"brdfbake.table", im.table_name.empty() ? std::string(TableName(t.spec.table)) : im.table_name},
       {"brdfbake.model", t.model_json},
       {"brdfbake.masking", MaskingName(t.spec.masking)},
-      {"brdfbake.fresnel", im.fresnel.empty() ? std::string("one") : im.fresnel},
+      {"brdfbake.fresnel", !im.fresnel.empty() ? im.fresnel : t.spec.Glass() ? "dielectric" : "one"},
       {"brdfbake.axes", axes.dump()},
       {"brdfbake.layout", layout},
       {"brdfbake.channels", channels.dump()},

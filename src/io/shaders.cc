@@ -27,7 +27,7 @@ std::string Lit(double v) {
 // The shader's parameter for a table axis.
 std::string ParameterName(const Axis& a) {
   if (a.name == "mu") return "NoV";
-  return a.name;  // roughness, phi_o, anisotropy, gamma
+  return a.name;  // roughness, phi_o, anisotropy, gamma, ior
 }
 
 // One axis' texture coordinate in [0, 1] from its physical value, as
@@ -44,6 +44,12 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
     auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
     const double lo = log_u(a.min), hi = log_u(a.max);
     x = "(log(1.0 - 1.0 / (" + value + " - 0.5)) - " + Lit(lo) + ") / " + Lit(hi - lo);
+  } else if (a.warp == Warp::kFresnelZ) {
+    // z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) linear in t between the
+    // axis' ends (bake.h).
+    auto z = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    const double lo = z(a.min), hi = z(a.max);
+    x = "(sqrt(abs(" + value + " - 1.0) / (" + value + " + 1.0)) - " + Lit(lo) + ") / " + Lit(hi - lo);
   } else {
     x = "(" + value + " - " + Lit(a.min) + ") / " + Lit(a.max - a.min);
   }

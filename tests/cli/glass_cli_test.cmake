@@ -108,7 +108,22 @@ expect_error_matching("--warp" bake --table E --model ggx-glass --warp ior=sqrt 
 expect_error_matching("--warp" bake --table E --model ggx-glass --warp mu=fresnel-z -o "${OUT}/bad.exr")
 expect_error_matching("--inverse" bake --table E --model ggx --inverse -o "${OUT}/bad.exr")
 expect_error_matching("--range: no ior axis" bake --table E --model ggx --range ior=1:2 -o "${OUT}/bad.exr")
-expect_error_matching("-o: ggx-glass" bake --table E --model ggx-glass --size 2x2x2 -o "${OUT}/bad.h")
+# Other containers and the shader lookups: the header names the dielectric
+# Fresnel and the ior slices, the GLSL lookup inverts the fresnel-z warp.
+run_tool(TRUE out err bake --table E --model ggx-glass --size 2x2x2 --range ior=1.3:1.8 --tolerance 1e-5
+         -o "${OUT}/glass.h" --shader glsl)
+file(READ "${OUT}/glass.h" header)
+file(READ "${OUT}/glass.glsl" glsl)
+foreach(want "brdfbake.fresnel: dielectric" "slices of 2 rows stacked vertically over ior")
+  string(FIND "${header}" "${want}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "glass.h lacks '${want}'")
+  endif()
+endforeach()
+string(FIND "${glsl}" "sqrt(abs(ior - 1.0) / (ior + 1.0))" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "glass.glsl does not invert the fresnel-z warp:\n${glsl}")
+endif()
 file(GLOB leftovers "${OUT}/bad*" "${OUT}/.brdfbake-*")
 if(leftovers)
   message(FATAL_ERROR "files left behind: ${leftovers}")

@@ -135,6 +135,28 @@ std::vector<Case> KindCases() {
     cases.push_back({"ggx_aniso_Eavg", "", 0, s});
   }
   {
+    // ggx-glass: the ior axis in z = F0^(1/4) (fresnel-z), slices of mu x
+    // roughness; E_avg over roughness x ior; the inverse side.
+    BakeSpec s;
+    s.model.kind = ModelKind::kGgxGlass;
+    s.table = TableKind::kE;
+    s.mu.size = 6;
+    s.roughness.size = 5;
+    s.roughness.min = 0.1;
+    s.ior.size = 4;
+    s.ior.min = 1.2;
+    s.ior.max = 2.5;
+    s.tolerance = 1e-5;
+    cases.push_back({"ggx_glass_E", "", 0, s});
+    s.inverse = true;
+    centres(s.ior, 3);
+    cases.push_back({"ggx_glass_E_inverse", "", 0, s});
+    s.inverse = false;
+    s.table = TableKind::kEavg;
+    s.roughness.size = 4;
+    cases.push_back({"ggx_glass_Eavg", "", 0, s});
+  }
+  {
     BakeSpec s;
     s.model.kind = ModelKind::kEllipsoid;
     s.model.alpha_x = 0.3;

@@ -1000,11 +1000,6 @@ int RunBake(const BakeOptions& opts) {
   if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
     Bad("-o: sel_norm tables are written as .exr");
   }
-  if (spec.Glass() && (container != brdfbake::Container::kExr || !langs.empty())) {
-    Bad(std::string(container != brdfbake::Container::kExr ? "-o" : "--shader") +
-        ": ggx-glass tables are written as .exr, without a lookup function (read the axes from "
-        "its header)");
-  }
   if (!langs.empty()) brdfbake::CheckShaderTable(spec);
   if (opts.channels != "named" && opts.channels != "rgba") {
     Bad("--channels: unknown value '" + opts.channels + "' (expected named or rgba)");
