@@ -75,13 +75,14 @@ inline double CharlieSplitNoL(bool lambda, double nol0) {
 // node evaluator's Outer gives them: cos and sin of theta_h, the weight w
 // = D(theta_h) sin(theta_h) dtheta_h/ds, and the arc's azimuths: its end
 // phi_max (pi: the whole circle; 0: empty), where NoL is 1/2 and
-// CharlieSplitNoL, and tau's range log1p(split / eps) (neubelt).
+// CharlieSplitNoL, tau's range log1p(split / eps) (neubelt) and z's,
+// split^power (the Lambda visibilities).
 struct CharlieOuterSetup {
-  double theta_max, mu, s_mu, eps;
+  double theta_max, mu, s_mu, eps, power;
   bool lambda;  // the visibility has a Lambda
 };
 struct CharlieOuterNodes {
-  double c[16], s[16], w[16], phi_max[16], phi_half[16], phi_split[16], tau_hi[16];
+  double c[16], s[16], w[16], phi_max[16], phi_half[16], phi_split[16], tau_hi[16], z_hi[16];
 };
 
 // The variable of an arc piece: the azimuth phi_h; z = NoL^power towards
@@ -124,6 +125,7 @@ struct ScalarCharlieNodes {
       out->phi_half[i] = phi_at(0.5);
       out->phi_split[i] = phi_at(split);
       out->tau_hi[i] = std::log1p(split / o.eps);
+      out->z_hi[i] = o.lambda ? std::pow(split, o.power) : 0.0;
     }
   }
   GkPiece Piece(CharlieArcVar var, const CharlieArcTerms& t, double arg, double a, double b) const {
@@ -133,6 +135,17 @@ struct ScalarCharlieNodes {
         e[i] = 0;
       }
     });
+  }
+  // The pieces [a[j], b[j]], j < m, of one arc, the first m_phi in phi
+  // and the others in `var` (kZ or kLog, with its arg): their values and
+  // |K15 - G7|.
+  void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
+              const double* b, int m_phi, int m, double* value, double* err) const {
+    for (int j = 0; j < m; ++j) {
+      const GkPiece p = Piece(j < m_phi ? CharlieArcVar::kPhi : var, t, arg, a[j], b[j]);
+      value[j] = p.value;
+      err[j] = p.err;
+    }
   }
 };
 
@@ -159,7 +172,16 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // tolerance `inner_tol`.
   // The neubelt tau's scale (below).
   const double eps = ck ? 1.0 : std::min(mu / (1 - mu), 1e6);
-  const CharlieOuterSetup setup{theta_max, mu, s_mu, eps, ck};
+  const CharlieOuterSetup setup{theta_max, mu, s_mu, eps, power, ck};
+  // z at the NoL levels of the end part below (levels[k] / levels[0])^power,
+  // the first a factor 4 down and the others 16, once per texel rather
+  // than a pow per level of every arc.
+  double z_ratio[24];
+  z_ratio[0] = 1;
+  if (ck) {
+    const double first = std::pow(0.25, power), then = std::pow(0.0625, power);
+    for (int k = 1; k < 24; ++k) z_ratio[k] = z_ratio[k - 1] * (k == 1 ? first : then);
+  }
   auto over_arc = [&](const CharlieOuterNodes& o, int i, double inner_tol, double* err) {
     const double c = o.c[i], s = o.s[i];
     CharlieArcTerms t{mu * c, s_mu * s, 2 * c, mu};
@@ -212,7 +234,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
           ++n_levels;
         }
         z_cuts[n_z++] = 0.0;
-        for (int k = n_levels - 1; k >= 0; --k) z_cuts[n_z++] = std::pow(levels[k], power);
+        for (int k = n_levels - 1; k >= 0; --k) z_cuts[n_z++] = o.z_hi[i] * z_ratio[k];
       } else {
         const double hi = o.tau_hi[i];
         const int n = std::clamp(static_cast<int>(std::ceil(0.5 * hi)), 1, 12);
@@ -240,9 +262,6 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       std::sort(log_cuts, log_cuts + n_log);
     }
     using Var = CharlieArcVar;
-    auto make = [&](Var var, double a, double b) {
-      return nodes.Piece(var, t, var == Var::kLog ? eps : power, a, b);
-    };
     // The pieces, in slots left uninitialised (an array of GkPiece, whose
     // members start at 0, was zeroed whole at every node).
     struct Slot {
@@ -252,18 +271,39 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     constexpr int kMaxArcPieces = 96;
     Slot pieces[kMaxArcPieces];
     int n = 0;
-    auto put = [&](int k, Var var, double a, double b) {
-      const GkPiece p = make(var, a, b);
-      pieces[k] = Slot{p.a, p.b, p.value, p.err, var};
-    };
-    auto add = [&](const double* cuts, int m, Var var) {
-      for (int k = 0; k + 1 < m; ++k) {
-        if (cuts[k + 1] > cuts[k]) put(n++, var, cuts[k], cuts[k + 1]);
+    // The end part's variable and its argument.
+    const Var end_var = ck ? Var::kZ : Var::kLog;
+    const double end_arg = ck ? power : eps;
+    // The m pieces [a[j], b[j]] (the first m_phi in phi, the others in
+    // end_var) into the slots at[j], in one call of the node evaluator:
+    // the lanes evaluate their nodes together.
+    auto put = [&](const double* a, const double* b, const int* at, int m_phi, int m) {
+      double value[kMaxArcPieces], err[kMaxArcPieces];
+      nodes.Pieces(t, end_var, end_arg, a, b, m_phi, m, value, err);
+      for (int j = 0; j < m; ++j) {
+        pieces[at[j]] = Slot{a[j], b[j], value[j], err[j], j < m_phi ? Var::kPhi : end_var};
       }
     };
-    add(phi_cuts, n_phi, Var::kPhi);
-    add(z_cuts, n_z, Var::kZ);
-    add(log_cuts, n_log, Var::kLog);
+    // The initial pieces between the cuts.
+    {
+      double a[kMaxArcPieces], b[kMaxArcPieces];
+      int at[kMaxArcPieces];
+      auto add = [&](const double* cuts, int m) {
+        for (int i = 0; i + 1 < m; ++i) {
+          if (cuts[i + 1] > cuts[i]) {
+            a[n] = cuts[i];
+            b[n] = cuts[i + 1];
+            at[n] = n;
+            ++n;
+          }
+        }
+      };
+      add(phi_cuts, n_phi);
+      const int m_phi = n;
+      add(z_cuts, n_z);
+      add(log_cuts, n_log);
+      put(a, b, at, m_phi, n);
+    }
     double v, e;
     auto sums = [&] {
       v = e = 0;
@@ -282,8 +322,9 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       }
       const Slot p = pieces[w];
       const double m = 0.5 * (p.a + p.b);
-      put(w, p.var, p.a, m);
-      put(n++, p.var, m, p.b);
+      const double a[2] = {p.a, m}, b[2] = {m, p.b};
+      const int at[2] = {w, n++};
+      put(a, b, at, p.var == Var::kPhi ? 2 : 0, 2);
     }
     *err = e;
     return v;
