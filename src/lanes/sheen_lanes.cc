@@ -90,14 +90,26 @@ struct SimdCharlieNodes {
   // first m_phi in phi and the others in `var`, at most kCharlieBatch
   // pieces at a time, their nodes in stages (Nodes).
   void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
-              const double* b, int m_phi, int m, double* value, double* err) const {
+              const double* b, int m_phi, int m, const double* const* nol_rel, double nol_scale,
+              double* value, double* err) const {
     for (int j = 0; j < m; j += kCharlieBatch) {
       const int k = std::min(m - j, kCharlieBatch), k_phi = std::clamp(m_phi - j, 0, k);
+      const double* const* rel = nol_rel != nullptr ? nol_rel + j : nullptr;
       if (var == CharlieArcVar::kLog) {
-        Sums<CharlieArcVar::kLog>(t, arg, a + j, b + j, k_phi, k, value + j, err + j);
+        Sums<CharlieArcVar::kLog>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
       } else {
-        Sums<CharlieArcVar::kZ>(t, arg, a + j, b + j, k_phi, k, value + j, err + j);
+        Sums<CharlieArcVar::kZ>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
       }
+    }
+  }
+
+  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16, x > 0).
+  void Powers(const double* x, int n, double e, double* out) const {
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const V ev = hn::Set(d, e);
+    for (size_t i = 0; i < static_cast<size_t>(n); i += N) {
+      hn::StoreU(hn::Exp(d, hn::Mul(ev, hn::Log(d, hn::LoadU(d, x + i)))), d, out + i);
     }
   }
 
@@ -110,7 +122,8 @@ struct SimdCharlieNodes {
   // piece, node by node, with the same values.
   template <CharlieArcVar kEnd>
   void Sums(const CharlieArcTerms& t, double arg, const double* a, const double* b, int m_phi,
-            int m, double* value, double* err) const {
+            int m, const double* const* nol_rel, double nol_scale, double* value,
+            double* err) const {
     static const Kronrod16 rule;
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -123,7 +136,8 @@ struct SimdCharlieNodes {
       }
     }
     const Terms terms(d, t, mu, lambda_mu);
-    Nodes<kEnd>(d, terms, arg, x, g, 16 * static_cast<size_t>(m_phi), 16 * static_cast<size_t>(m));
+    Nodes<kEnd>(d, terms, arg, x, g, 16 * static_cast<size_t>(m_phi), 16 * static_cast<size_t>(m),
+                nol_rel, nol_scale);
     for (int j = 0; j < m; ++j) {
       V ks = hn::Zero(d), gs = hn::Zero(d);
       for (size_t i = 0; i < 16; i += N) {
@@ -163,7 +177,8 @@ struct SimdCharlieNodes {
   // are independent of one another.
   template <CharlieArcVar kEnd>
   HWY_INLINE void Nodes(DF64 d, const Terms& t, double arg, const double* xs, double* out,
-                        size_t n_phi, size_t n) const {
+                        size_t n_phi, size_t n, const double* const* nol_rel,
+                        double nol_scale) const {
     const size_t N = hn::Lanes(d);
     const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
     HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch],
@@ -179,7 +194,12 @@ struct SimdCharlieNodes {
       const V x = hn::Load(d, xs + i);
       V nol, jac_num, jac_den;
       if constexpr (kEnd == CharlieArcVar::kZ) {
-        nol = hn::Exp(d, hn::Mul(hn::Set(d, 1 / arg), hn::Log(d, x)));
+        const double* rel = nol_rel != nullptr ? nol_rel[i / 16] : nullptr;
+        if (rel != nullptr) {
+          nol = hn::Mul(hn::Set(d, nol_scale), hn::LoadU(d, rel + i % 16));
+        } else {
+          nol = hn::Exp(d, hn::Mul(hn::Set(d, 1 / arg), hn::Log(d, x)));
+        }
       } else {
         nol = hn::Mul(hn::Set(d, arg), hn::Expm1(d, x));
       }
