@@ -76,12 +76,15 @@ struct SimdCharlieNodes {
       hn::StoreU(sv_th, d, out->s + i);
       hn::StoreU(w, d, out->w + i);
       hn::StoreU(phi_max, d, out->phi_max + i);
-      hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
       hn::StoreU(hn::Acos(d, cos_at(split)), d, out->phi_split + i);
-      hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
+      // What the visibility's arcs use: phi_half and z_hi with a Lambda,
+      // tau_hi without.
       if (o.lambda) {
+        hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
         const V ls = hn::Log(d, hn::IfThenElse(hn::Gt(split, zero), split, one));
         hn::StoreU(hn::Exp(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
+      } else {
+        hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
       }
     }
   }

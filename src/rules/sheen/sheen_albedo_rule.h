@@ -74,9 +74,10 @@ inline double CharlieSplitNoL(bool lambda, double nol0) {
 // The outer nodes of one piece in s, theta_h = theta_max (1 - s^2), as a
 // node evaluator's Outer gives them: cos and sin of theta_h, the weight w
 // = D(theta_h) sin(theta_h) dtheta_h/ds, and the arc's azimuths: its end
-// phi_max (pi: the whole circle; 0: empty), where NoL is 1/2 and
-// CharlieSplitNoL, tau's range log1p(split / eps) (neubelt) and z's,
-// split^power (the Lambda visibilities).
+// phi_max (pi: the whole circle; 0: empty), where NoL is CharlieSplitNoL
+// and (with a Lambda) 1/2, and the end part's range: z's split^power
+// with a Lambda, tau's log1p(split / eps) without (the lanes fill only
+// the fields the visibility uses).
 struct CharlieOuterSetup {
   double theta_max, mu, s_mu, eps, power;
   bool lambda;  // the visibility has a Lambda
@@ -350,10 +351,13 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       add(log_cuts, n_log);
       // The z pieces between the levels alone (no cap cut among them):
       // their nodes' NoL from z_nol, the lowest first.
-      const double* nol_rel[kMaxArcPieces] = {};
+      const double* nol_rel[kMaxArcPieces];
       const bool levels_only = z_levels > 0 && n_z == z_levels + 1 && n - m_phi == z_levels;
-      for (int q = 0; levels_only && q < z_levels; ++q) {
-        nol_rel[m_phi + q] = q == 0 ? z_nol[2 * (z_levels - 1) + 1] : z_nol[2 * (z_levels - 1 - q)];
+      if (levels_only) {
+        for (int q = 0; q < m_phi; ++q) nol_rel[q] = nullptr;
+        for (int q = 0; q < z_levels; ++q) {
+          nol_rel[m_phi + q] = q == 0 ? z_nol[2 * (z_levels - 1) + 1] : z_nol[2 * (z_levels - 1 - q)];
+        }
       }
       put(a, b, at, m_phi, n, levels_only ? nol_rel : nullptr);
     }
