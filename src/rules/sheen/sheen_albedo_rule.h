@@ -93,7 +93,8 @@ enum class CharlieArcVar { kPhi, kZ, kLog };
 // The double reference's g at a node x of the variable `var` (arg: power
 // for kZ, eps for kLog), times dphi/dx, and its Gauss-Kronrod 15 piece
 // (times 2: J = 2 int g dphi); and an outer piece's nodes. A node
-// evaluator gives Outer and Piece.
+// evaluator gives Outer, Pieces (several pieces of one arc in one call,
+// which the lanes evaluate together) and Powers.
 struct ScalarCharlieNodes {
   const CharlieSheen<double>* sheen;
   double At(CharlieArcVar var, const CharlieArcTerms& t, double arg, double x) const {
