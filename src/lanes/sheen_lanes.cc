@@ -34,12 +34,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 // (Lambda's lower branch), so L takes z itself.
 struct SimdCharlieNodes {
   using V = hn::Vec<DF64>;
+  static constexpr int kCharlieBatch = 8;
   CharlieConsts<DF64> c;
   double mu;
   double lambda_mu;  // conty-kulla: Lambda(mu)
 
-  // ScalarCharlieNodes::Outer in lanes: Highway's Sin, Cos, Acos and
-  // Log1p, D by CharlieDCos2.
+  // ScalarCharlieNodes::Outer in lanes: Highway's Sin, Cos, Acos, Log1p,
+  // Log and Exp, D by CharlieDCos2.
   void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -75,43 +76,83 @@ struct SimdCharlieNodes {
       hn::StoreU(sv_th, d, out->s + i);
       hn::StoreU(w, d, out->w + i);
       hn::StoreU(phi_max, d, out->phi_max + i);
-      hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
       hn::StoreU(hn::Acos(d, cos_at(split)), d, out->phi_split + i);
-      hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
+      // What the visibility's arcs use: phi_half and z_hi with a Lambda,
+      // tau_hi without.
+      if (o.lambda) {
+        hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
+        const V ls = hn::Log(d, hn::IfThenElse(hn::Gt(split, zero), split, one));
+        hn::StoreU(hn::Exp(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
+      } else {
+        hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
+      }
     }
   }
 
-  GkPiece Piece(CharlieArcVar var, const CharlieArcTerms& t, double arg, double a, double b) const {
-    switch (var) {
-      case CharlieArcVar::kZ: return Sums<CharlieArcVar::kZ>(t, arg, a, b);
-      case CharlieArcVar::kLog: return Sums<CharlieArcVar::kLog>(t, arg, a, b);
-      default: return Sums<CharlieArcVar::kPhi>(t, arg, a, b);
+  // ScalarCharlieNodes::Pieces: m pieces [a[j], b[j]] of one arc, the
+  // first m_phi in phi and the others in `var`, at most kCharlieBatch
+  // pieces at a time, their nodes in stages (Nodes).
+  void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
+              const double* b, int m_phi, int m, const double* const* nol_rel, double nol_scale,
+              double* value, double* err) const {
+    for (int j = 0; j < m; j += kCharlieBatch) {
+      const int k = std::min(m - j, kCharlieBatch), k_phi = std::clamp(m_phi - j, 0, k);
+      const double* const* rel = nol_rel != nullptr ? nol_rel + j : nullptr;
+      if (var == CharlieArcVar::kLog) {
+        Sums<CharlieArcVar::kLog>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
+      } else {
+        Sums<CharlieArcVar::kZ>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
+      }
+    }
+  }
+
+  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16, x > 0).
+  void Powers(const double* x, int n, double e, double* out) const {
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const V ev = hn::Set(d, e);
+    for (size_t i = 0; i < static_cast<size_t>(n); i += N) {
+      hn::StoreU(hn::Exp(d, hn::Mul(ev, hn::Log(d, hn::LoadU(d, x + i)))), d, out + i);
     }
   }
 
  private:
-  template <CharlieArcVar kVar>
-  GkPiece Sums(const CharlieArcTerms& t, double arg, double a, double b) const {
+  // The nodes of m pieces go through each stage of Nodes together: a
+  // stage's vectors are independent of one another, so the core overlaps
+  // their long chains of cos, log, exp and divisions instead of waiting
+  // on one node's chain (one piece is two vectors in AVX-512 lanes).
+  // On a 64 x 64 conty-kulla table this took about 30% less time than
+  // piece by piece, node by node, with the same values.
+  template <CharlieArcVar kEnd>
+  void Sums(const CharlieArcTerms& t, double arg, const double* a, const double* b, int m_phi,
+            int m, const double* const* nol_rel, double nol_scale, double* value,
+            double* err) const {
     static const Kronrod16 rule;
     const DF64 d;
     const size_t N = hn::Lanes(d);
-    const double mid = 0.5 * (a + b), h = 0.5 * (b - a);
-    const Terms terms(d, t, mu, lambda_mu);
-    V ks = hn::Zero(d), gs = hn::Zero(d);
-    for (size_t i = 0; i < 16; i += N) {
-      const V x = hn::MulAdd(hn::Set(d, h), hn::Load(d, rule.x + i), hn::Set(d, mid));
-      const V g = Node<kVar>(d, terms, arg, x);
-      ks = hn::MulAdd(hn::Load(d, rule.wk + i), g, ks);
-      gs = hn::MulAdd(hn::Load(d, rule.wg + i), g, gs);
+    HWY_ALIGN double x[16 * kCharlieBatch], g[16 * kCharlieBatch];
+    for (int j = 0; j < m; ++j) {
+      const double mid = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
+      for (size_t i = 0; i < 16; i += N) {
+        hn::Store(hn::MulAdd(hn::Set(d, h), hn::Load(d, rule.x + i), hn::Set(d, mid)), d,
+                  x + 16 * j + i);
+      }
     }
-    const double k = hn::GetLane(hn::SumOfLanes(d, ks)), gauss = hn::GetLane(hn::SumOfLanes(d, gs));
-    const double s = 2 * h;
-    GkPiece p;
-    p.a = a;
-    p.b = b;
-    p.value = k * s;
-    p.err = std::abs(k - gauss) * s;
-    return p;
+    const Terms terms(d, t, mu, lambda_mu);
+    Nodes<kEnd>(d, terms, arg, x, g, 16 * static_cast<size_t>(m_phi), 16 * static_cast<size_t>(m),
+                nol_rel, nol_scale);
+    for (int j = 0; j < m; ++j) {
+      V ks = hn::Zero(d), gs = hn::Zero(d);
+      for (size_t i = 0; i < 16; i += N) {
+        const V gv = hn::Load(d, g + 16 * j + i);
+        ks = hn::MulAdd(hn::Load(d, rule.wk + i), gv, ks);
+        gs = hn::MulAdd(hn::Load(d, rule.wg + i), gv, gs);
+      }
+      const double k = hn::GetLane(hn::SumOfLanes(d, ks)), gauss = hn::GetLane(hn::SumOfLanes(d, gs));
+      const double s = 2 * (0.5 * (b[j] - a[j]));
+      value[j] = k * s;
+      err[j] = std::abs(k - gauss) * s;
+    }
   }
 
   // One arc's constants in lanes.
@@ -133,56 +174,103 @@ struct SimdCharlieNodes {
   // NoL = z^(1/power), dphi/dz = NoL / (z power 2 c r sin(phi)) (kZ);
   // NoL = eps expm1(tau), dphi/dtau = (NoL + eps) / (2 c r sin(phi))
   // (kLog). There 2 c r sin(phi) = sqrt((nol0 - NoL) (NoL - nol_pi))
-  // (ArcSine). One division per node where V is not capped.
-  template <CharlieArcVar kVar>
-  HWY_INLINE V Node(DF64 d, const Terms& t, double arg, V x) const {
+  // (ArcSine). One division per node where V is not capped. The n nodes
+  // x[i] (n a multiple of 16) give g[i], stage by stage: the variable's
+  // map, log(NoL) for Lambda's x^p, Lambda, and g; each stage's vectors
+  // are independent of one another.
+  template <CharlieArcVar kEnd>
+  HWY_INLINE void Nodes(DF64 d, const Terms& t, double arg, const double* xs, double* out,
+                        size_t n_phi, size_t n, const double* const* nol_rel,
+                        double nol_scale) const {
+    const size_t N = hn::Lanes(d);
     const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
-    V y, nol, jac_num = one, jac_den = one;
-    if constexpr (kVar == CharlieArcVar::kPhi) {
-      y = hn::MulAdd(t.r, hn::Cos(d, x), t.p);
-      nol = hn::Sub(hn::Mul(t.two_c, y), t.mu);
-    } else {
-      if constexpr (kVar == CharlieArcVar::kZ) {
-        nol = hn::Exp(d, hn::Mul(hn::Set(d, 1 / arg), hn::Log(d, x)));
+    HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch],
+        jns[16 * kCharlieBatch], jds[16 * kCharlieBatch], ls[16 * kCharlieBatch];
+    for (size_t i = 0; i < n_phi; i += N) {
+      const V y = hn::MulAdd(t.r, hn::Cos(d, hn::Load(d, xs + i)), t.p);
+      hn::Store(y, d, ys + i);
+      hn::Store(hn::Sub(hn::Mul(t.two_c, y), t.mu), d, nols + i);
+      hn::Store(one, d, jns + i);
+      hn::Store(one, d, jds + i);
+    }
+    for (size_t i = n_phi; i < n; i += N) {
+      const V x = hn::Load(d, xs + i);
+      V nol, jac_num, jac_den;
+      if constexpr (kEnd == CharlieArcVar::kZ) {
+        const double* rel = nol_rel != nullptr ? nol_rel[i / 16] : nullptr;
+        if (rel != nullptr) {
+          nol = hn::Mul(hn::Set(d, nol_scale), hn::LoadU(d, rel + i % 16));
+        } else {
+          nol = hn::Exp(d, hn::Mul(hn::Set(d, 1 / arg), hn::Log(d, x)));
+        }
       } else {
         nol = hn::Mul(hn::Set(d, arg), hn::Expm1(d, x));
       }
-      y = hn::Mul(hn::Add(nol, t.mu), t.half_over_c);
+      const V y = hn::Mul(hn::Add(nol, t.mu), t.half_over_c);
       jac_den = hn::Sqrt(hn::Max(hn::Mul(hn::Sub(t.nol0, nol), hn::Sub(nol, t.nol_pi)), zero));
-      if constexpr (kVar == CharlieArcVar::kZ) {
+      if constexpr (kEnd == CharlieArcVar::kZ) {
         jac_num = nol;
         jac_den = hn::Mul(jac_den, hn::Mul(x, hn::Set(d, arg)));
       } else {
         jac_num = hn::Add(nol, hn::Set(d, arg));
       }
+      hn::Store(y, d, ys + i);
+      hn::Store(nol, d, nols + i);
+      hn::Store(jac_num, d, jns + i);
+      hn::Store(jac_den, d, jds + i);
     }
-    const auto up = hn::Gt(nol, zero);
-    const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
-    V num, den;
-    if (c.neubelt) {
-      // V NoL 4 y = NoL y / (NoL + mu - NoL mu).
-      num = hn::Mul(nol, y);
-      den = hn::Add(hn::NegMulAdd(nl, t.mu, nl), t.mu);
-    } else {
-      // V NoL 4 y = y G2 / mu, G2 = 1 / (1 + Lambda(mu) + Lambda(NoL)).
-      V log_lambda;
-      if constexpr (kVar == CharlieArcVar::kZ) {
-        log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e), hn::Div(c.a, hn::MulAdd(c.b, x, one)));
-      } else {
-        log_lambda = CharlieLogLambda(d, c, nl);
+    // Lambda: exp of L (CharlieLogLambda: L(w) below 1/2, 2 L(1/2) - L(1 -
+    // w) above, L(x) = a / (1 + b x^p) + d x + e), x^p as exp(p log x)
+    // in phi, and in z, z itself (every NoL there is below 1/2).
+    if (!c.neubelt) {
+      const V half = hn::Set(d, 0.5);
+      for (size_t i = 0; i < n_phi; i += N) {
+        const V nol = hn::Load(d, nols + i);
+        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
+        const V w = hn::IfThenElse(hn::Lt(nl, half), nl, hn::Sub(one, nl));
+        hn::Store(hn::Log(d, hn::IfThenElse(hn::Gt(w, zero), w, one)), d, ls + i);
       }
-      num = y;
-      den = hn::Mul(t.mu, hn::Add(t.one_lambda_mu, hn::Exp(d, log_lambda)));
+      for (size_t i = 0; i < n_phi; i += N) {
+        const V nol = hn::Load(d, nols + i);
+        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
+        const auto low = hn::Lt(nl, half);
+        const V w = hn::IfThenElse(low, nl, hn::Sub(one, nl));
+        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), hn::Exp(d, hn::Mul(c.p, hn::Load(d, ls + i))));
+        const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
+        hn::Store(hn::Exp(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
+      }
+      for (size_t i = n_phi; i < n; i += N) {
+        const V nol = hn::Load(d, nols + i);
+        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
+        const V log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e),
+                                     hn::Div(c.a, hn::MulAdd(c.b, hn::Load(d, xs + i), one)));
+        hn::Store(hn::Exp(d, log_lambda), d, ls + i);
+      }
     }
-    V g;
-    if (c.clamp) {
-      // V <= 1, so g <= 4 NoL y.
-      g = hn::Min(hn::Div(num, den), hn::Mul(hn::Mul(hn::Set(d, 4.0), nl), y));
-      if constexpr (kVar != CharlieArcVar::kPhi) g = hn::Div(hn::Mul(g, jac_num), jac_den);
-    } else {
-      g = hn::Div(hn::Mul(num, jac_num), hn::Mul(den, jac_den));
+    for (size_t i = 0; i < n; i += N) {
+      const V y = hn::Load(d, ys + i), nol = hn::Load(d, nols + i);
+      const auto up = hn::Gt(nol, zero);
+      const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
+      V num, den;
+      if (c.neubelt) {
+        // V NoL 4 y = NoL y / (NoL + mu - NoL mu).
+        num = hn::Mul(nol, y);
+        den = hn::Add(hn::NegMulAdd(nl, t.mu, nl), t.mu);
+      } else {
+        // V NoL 4 y = y G2 / mu, G2 = 1 / (1 + Lambda(mu) + Lambda(NoL)).
+        num = y;
+        den = hn::Mul(t.mu, hn::Add(t.one_lambda_mu, hn::Load(d, ls + i)));
+      }
+      V g;
+      if (c.clamp) {
+        // V <= 1, so g <= 4 NoL y.
+        g = hn::Min(hn::Div(num, den), hn::Mul(hn::Mul(hn::Set(d, 4.0), nl), y));
+        g = hn::Div(hn::Mul(g, hn::Load(d, jns + i)), hn::Load(d, jds + i));
+      } else {
+        g = hn::Div(hn::Mul(num, hn::Load(d, jns + i)), hn::Mul(den, hn::Load(d, jds + i)));
+      }
+      hn::Store(hn::IfThenElseZero(up, g), d, out + i);
     }
-    return hn::IfThenElseZero(up, g);
   }
 };
 

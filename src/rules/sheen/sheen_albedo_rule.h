@@ -74,14 +74,16 @@ inline double CharlieSplitNoL(bool lambda, double nol0) {
 // The outer nodes of one piece in s, theta_h = theta_max (1 - s^2), as a
 // node evaluator's Outer gives them: cos and sin of theta_h, the weight w
 // = D(theta_h) sin(theta_h) dtheta_h/ds, and the arc's azimuths: its end
-// phi_max (pi: the whole circle; 0: empty), where NoL is 1/2 and
-// CharlieSplitNoL, and tau's range log1p(split / eps) (neubelt).
+// phi_max (pi: the whole circle; 0: empty), where NoL is CharlieSplitNoL
+// and (with a Lambda) 1/2, and the end part's range: z's split^power
+// with a Lambda, tau's log1p(split / eps) without (the lanes fill only
+// the fields the visibility uses).
 struct CharlieOuterSetup {
-  double theta_max, mu, s_mu, eps;
+  double theta_max, mu, s_mu, eps, power;
   bool lambda;  // the visibility has a Lambda
 };
 struct CharlieOuterNodes {
-  double c[16], s[16], w[16], phi_max[16], phi_half[16], phi_split[16], tau_hi[16];
+  double c[16], s[16], w[16], phi_max[16], phi_half[16], phi_split[16], tau_hi[16], z_hi[16];
 };
 
 // The variable of an arc piece: the azimuth phi_h; z = NoL^power towards
@@ -91,7 +93,8 @@ enum class CharlieArcVar { kPhi, kZ, kLog };
 // The double reference's g at a node x of the variable `var` (arg: power
 // for kZ, eps for kLog), times dphi/dx, and its Gauss-Kronrod 15 piece
 // (times 2: J = 2 int g dphi); and an outer piece's nodes. A node
-// evaluator gives Outer and Piece.
+// evaluator gives Outer, Pieces (several pieces of one arc in one call,
+// which the lanes evaluate together) and Powers.
 struct ScalarCharlieNodes {
   const CharlieSheen<double>* sheen;
   double At(CharlieArcVar var, const CharlieArcTerms& t, double arg, double x) const {
@@ -101,10 +104,18 @@ struct ScalarCharlieNodes {
     }
     // dphi/dz = NoL / (z power 2 c r sin(phi)), dphi/dtau = (NoL + eps) /
     // (2 c r sin(phi)).
-    const bool z = var == CharlieArcVar::kZ;
-    const double nol = z ? std::pow(x, 1 / arg) : arg * std::expm1(x);
-    const double jac = z ? nol / (x * arg * ArcSine(t, nol)) : (nol + arg) / ArcSine(t, nol);
+    if (var == CharlieArcVar::kZ) return AtZ(t, arg, x, std::pow(x, 1 / arg));
+    const double nol = arg * std::expm1(x);
+    return CharlieArcIntegrand(*sheen, t.mu, (nol + t.mu) / t.two_c, nol) * (nol + arg) / ArcSine(t, nol);
+  }
+  // The same in z at a node x whose NoL = x^(1/power) is given.
+  double AtZ(const CharlieArcTerms& t, double power, double x, double nol) const {
+    const double jac = nol / (x * power * ArcSine(t, nol));
     return CharlieArcIntegrand(*sheen, t.mu, (nol + t.mu) / t.two_c, nol) * jac;
+  }
+  // out[i] = x[i]^e, i < n.
+  void Powers(const double* x, int n, double e, double* out) const {
+    for (int i = 0; i < n; ++i) out[i] = std::pow(x[i], e);
   }
   void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
     for (int i = 0; i < 15; ++i) {
@@ -124,6 +135,7 @@ struct ScalarCharlieNodes {
       out->phi_half[i] = phi_at(0.5);
       out->phi_split[i] = phi_at(split);
       out->tau_hi[i] = std::log1p(split / o.eps);
+      out->z_hi[i] = o.lambda ? std::pow(split, o.power) : 0.0;
     }
   }
   GkPiece Piece(CharlieArcVar var, const CharlieArcTerms& t, double arg, double a, double b) const {
@@ -133,6 +145,31 @@ struct ScalarCharlieNodes {
         e[i] = 0;
       }
     });
+  }
+  // The pieces [a[j], b[j]], j < m, of one arc, the first m_phi in phi
+  // and the others in `var` (kZ or kLog, with its arg): their values and
+  // |K15 - G7|. Where nol_rel (if given) has nol_rel[j], piece j is in z
+  // and its nodes' NoL are nol_scale nol_rel[j][i] (CharlieAlbedoWith's
+  // end part).
+  void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
+              const double* b, int m_phi, int m, const double* const* nol_rel, double nol_scale,
+              double* value, double* err) const {
+    for (int j = 0; j < m; ++j) {
+      GkPiece p;
+      if (nol_rel != nullptr && nol_rel[j] != nullptr) {
+        const double* rel = nol_rel[j];
+        p = KronrodPieceBatch(a[j], b[j], 2.0, [&](const double* x, double* v, double* e) {
+          for (int i = 0; i < 15; ++i) {
+            v[i] = AtZ(t, arg, x[i], nol_scale * rel[i]);
+            e[i] = 0;
+          }
+        });
+      } else {
+        p = Piece(j < m_phi ? CharlieArcVar::kPhi : var, t, arg, a[j], b[j]);
+      }
+      value[j] = p.value;
+      err[j] = p.err;
+    }
   }
 };
 
@@ -159,7 +196,38 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // tolerance `inner_tol`.
   // The neubelt tau's scale (below).
   const double eps = ck ? 1.0 : std::min(mu / (1 - mu), 1e6);
-  const CharlieOuterSetup setup{theta_max, mu, s_mu, eps, ck};
+  const CharlieOuterSetup setup{theta_max, mu, s_mu, eps, power, ck};
+  // z at the NoL levels of the end part below (levels[k] / levels[0])^power,
+  // the first a factor 4 down and the others 16, once per texel rather
+  // than a pow per level of every arc.
+  double z_ratio[24];
+  z_ratio[0] = 1;
+  if (ck) {
+    const double first = std::pow(0.25, power), then = std::pow(0.0625, power);
+    for (int k = 1; k < 24; ++k) z_ratio[k] = z_ratio[k - 1] * (k == 1 ? first : then);
+  }
+  // The NoL at the nodes of those initial z pieces over nol_split, the
+  // same for every arc: NoL = z^(1/power) and z = z_hi (x at the piece's
+  // node in units of z_hi), so NoL = nol_split x^(1/power). Once per
+  // texel instead of a log and an exp at every node: rows 2k for the
+  // piece between levels k + 1 and k, 2k + 1 from 0 to level k, for the
+  // levels of nol_split = 1/2, the most an arc has (its nodes in the
+  // order of Kronrod15, the 16th at the centre).
+  double z_nol[48][16];
+  if (ck) {
+    int k_max = 1;
+    for (double l = 0.5; l > 0.25 * mu && k_max < 24; ++k_max) l *= k_max == 1 ? 0.25 : 0.0625;
+    const KronrodRule& rule = Kronrod15();
+    double x[48][16];
+    for (int k = 0; k < k_max; ++k) {
+      for (int bottom = 0; bottom < 2; ++bottom) {
+        const double lo = bottom ? 0.0 : (k + 1 < 24 ? z_ratio[k + 1] : 0.0), hi = z_ratio[k];
+        const double mid = 0.5 * (lo + hi), h = 0.5 * (hi - lo);
+        for (int i = 0; i < 16; ++i) x[2 * k + bottom][i] = mid + h * (i < 15 ? rule.x[i] : 0.0);
+      }
+    }
+    nodes.Powers(&x[0][0], 32 * k_max, 1 / power, &z_nol[0][0]);
+  }
   auto over_arc = [&](const CharlieOuterNodes& o, int i, double inner_tol, double* err) {
     const double c = o.c[i], s = o.s[i];
     CharlieArcTerms t{mu * c, s_mu * s, 2 * c, mu};
@@ -197,7 +265,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     //    table: 8% fewer than with cuts at NoL = nol0 / 2 4^-k).
     // Fixed arrays: no allocation per node.
     double phi_cuts[6], z_cuts[28], log_cuts[16];
-    int n_phi = 0, n_z = 0, n_log = 0;
+    int n_phi = 0, n_z = 0, n_log = 0, z_levels = 0;
     phi_cuts[n_phi++] = 0.0;
     const double nol_split = CharlieSplitNoL(ck, nol0);
     if (ck && 0.5 < nol0 && (!arc_end || 0.5 > nol_split)) phi_cuts[n_phi++] = o.phi_half[i];
@@ -212,7 +280,8 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
           ++n_levels;
         }
         z_cuts[n_z++] = 0.0;
-        for (int k = n_levels - 1; k >= 0; --k) z_cuts[n_z++] = std::pow(levels[k], power);
+        for (int k = n_levels - 1; k >= 0; --k) z_cuts[n_z++] = o.z_hi[i] * z_ratio[k];
+        z_levels = n_levels;
       } else {
         const double hi = o.tau_hi[i];
         const int n = std::clamp(static_cast<int>(std::ceil(0.5 * hi)), 1, 12);
@@ -240,9 +309,6 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       std::sort(log_cuts, log_cuts + n_log);
     }
     using Var = CharlieArcVar;
-    auto make = [&](Var var, double a, double b) {
-      return nodes.Piece(var, t, var == Var::kLog ? eps : power, a, b);
-    };
     // The pieces, in slots left uninitialised (an array of GkPiece, whose
     // members start at 0, was zeroed whole at every node).
     struct Slot {
@@ -252,18 +318,50 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     constexpr int kMaxArcPieces = 96;
     Slot pieces[kMaxArcPieces];
     int n = 0;
-    auto put = [&](int k, Var var, double a, double b) {
-      const GkPiece p = make(var, a, b);
-      pieces[k] = Slot{p.a, p.b, p.value, p.err, var};
-    };
-    auto add = [&](const double* cuts, int m, Var var) {
-      for (int k = 0; k + 1 < m; ++k) {
-        if (cuts[k + 1] > cuts[k]) put(n++, var, cuts[k], cuts[k + 1]);
+    // The end part's variable and its argument.
+    const Var end_var = ck ? Var::kZ : Var::kLog;
+    const double end_arg = ck ? power : eps;
+    // The m pieces [a[j], b[j]] (the first m_phi in phi, the others in
+    // end_var) into the slots at[j], in one call of the node evaluator:
+    // the lanes evaluate their nodes together.
+    auto put = [&](const double* a, const double* b, const int* at, int m_phi, int m,
+                   const double* const* nol_rel = nullptr) {
+      double value[kMaxArcPieces], err[kMaxArcPieces];
+      nodes.Pieces(t, end_var, end_arg, a, b, m_phi, m, nol_rel, nol_split, value, err);
+      for (int j = 0; j < m; ++j) {
+        pieces[at[j]] = Slot{a[j], b[j], value[j], err[j], j < m_phi ? Var::kPhi : end_var};
       }
     };
-    add(phi_cuts, n_phi, Var::kPhi);
-    add(z_cuts, n_z, Var::kZ);
-    add(log_cuts, n_log, Var::kLog);
+    // The initial pieces between the cuts.
+    {
+      double a[kMaxArcPieces], b[kMaxArcPieces];
+      int at[kMaxArcPieces];
+      auto add = [&](const double* cuts, int m) {
+        for (int i = 0; i + 1 < m; ++i) {
+          if (cuts[i + 1] > cuts[i]) {
+            a[n] = cuts[i];
+            b[n] = cuts[i + 1];
+            at[n] = n;
+            ++n;
+          }
+        }
+      };
+      add(phi_cuts, n_phi);
+      const int m_phi = n;
+      add(z_cuts, n_z);
+      add(log_cuts, n_log);
+      // The z pieces between the levels alone (no cap cut among them):
+      // their nodes' NoL from z_nol, the lowest first.
+      const double* nol_rel[kMaxArcPieces];
+      const bool levels_only = z_levels > 0 && n_z == z_levels + 1 && n - m_phi == z_levels;
+      if (levels_only) {
+        for (int q = 0; q < m_phi; ++q) nol_rel[q] = nullptr;
+        for (int q = 0; q < z_levels; ++q) {
+          nol_rel[m_phi + q] = q == 0 ? z_nol[2 * (z_levels - 1) + 1] : z_nol[2 * (z_levels - 1 - q)];
+        }
+      }
+      put(a, b, at, m_phi, n, levels_only ? nol_rel : nullptr);
+    }
     double v, e;
     auto sums = [&] {
       v = e = 0;
@@ -282,8 +380,9 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       }
       const Slot p = pieces[w];
       const double m = 0.5 * (p.a + p.b);
-      put(w, p.var, p.a, m);
-      put(n++, p.var, m, p.b);
+      const double a[2] = {p.a, m}, b[2] = {m, p.b};
+      const int at[2] = {w, n++};
+      put(a, b, at, p.var == Var::kPhi ? 2 : 0, 2);
     }
     *err = e;
     return v;
