@@ -23,11 +23,14 @@
 #include "brdfbake/presets.h"
 #include "brdfbake/scene.h"
 #include "util/file_util.h"
+#include "util/scene_util.h"
 #include "util/lookup_util.h"
 
 namespace brdfbake {
 namespace {
 
+using test::FindPlanned;
+using test::Joined;
 using test::Slurp;
 using test::WriteText;
 
@@ -36,19 +39,6 @@ const std::string kExamples = std::string(BRDFBAKE_TEST_DATA) + "/../../examples
 Scene Toml(const std::string& dir, const std::string& text) {
   WriteText(dir + "/s.toml", text);
   return LoadScene(dir + "/s.toml");
-}
-
-const PlannedTable* Find(const ScenePlan& plan, const std::string& file) {
-  for (const PlannedTable& p : plan.tables) {
-    if (p.file == file) return &p;
-  }
-  return nullptr;
-}
-
-std::string Joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += x + "\n";
-  return s;
 }
 
 // A GPU's lookup of a table over any number of axes: linear along each,
@@ -91,9 +81,9 @@ TEST(SceneAnisoTest, AnisotropicOnlySceneBakesWhatItNeeds) {
                        "[engine]\nmax_lut_size = 16\nerror_target = 2e-2\npixel = \"float\"\n"
                        "[[material]]\nname = \"a\"\nmodel = \"ggx-aniso\"\nroughness = 0.5\nanisotropy = 0.8\n");
   const ScenePlan plan = PlanScene(s);
-  const PlannedTable* dfg = Find(plan, "dfg_ggx.exr");
-  const PlannedTable* e = Find(plan, "E_ggx-aniso.exr");
-  const PlannedTable* avg = Find(plan, "E_avg_ggx-aniso.exr");
+  const PlannedTable* dfg = FindPlanned(plan, "dfg_ggx.exr");
+  const PlannedTable* e = FindPlanned(plan, "E_ggx-aniso.exr");
+  const PlannedTable* avg = FindPlanned(plan, "E_avg_ggx-aniso.exr");
   ASSERT_NE(dfg, nullptr) << PlanText(s, plan);
   ASSERT_NE(e, nullptr) << PlanText(s, plan);
   ASSERT_NE(avg, nullptr) << PlanText(s, plan);
@@ -130,7 +120,7 @@ TEST(SceneAnisoTest, Missed4dTargetSaysWhatWouldMeetIt) {
                        "[engine]\nmax_lut_size = 4\nerror_target = 2e-2\npixel = \"float\"\n"
                        "[[material]]\nname = \"a\"\nmodel = \"ggx-aniso\"\nroughness = 0.5\nanisotropy = 0.8\n");
   const ScenePlan plan = PlanScene(s);
-  const PlannedTable* e = Find(plan, "E_ggx-aniso.exr");
+  const PlannedTable* e = FindPlanned(plan, "E_ggx-aniso.exr");
   ASSERT_NE(e, nullptr) << PlanText(s, plan);
   EXPECT_FALSE(e->meets_target) << e->total_error;
   EXPECT_NE(e->hint.find("would meet it"), std::string::npos) << e->hint;
@@ -169,8 +159,8 @@ TEST(SceneAnisoTest, PlannedErrorClaimsBoundOnAnisotropicTables) {
                        "[[material]]\nname = \"a\"\nmodel = \"ggx-aniso\"\nroughness = [0.3, 0.5]\nanisotropy = 0.5\n"
                        "[[material]]\nname = \"b\"\nmodel = \"ggx-aniso\"\nroughness = 0.4\nanisotropy = 0.9\n");
   const ScenePlan plan = PlanScene(s);
-  const PlannedTable* e = Find(plan, "E_ggx-aniso.exr");
-  const PlannedTable* avg = Find(plan, "E_avg_ggx-aniso.exr");
+  const PlannedTable* e = FindPlanned(plan, "E_ggx-aniso.exr");
+  const PlannedTable* avg = FindPlanned(plan, "E_avg_ggx-aniso.exr");
   ASSERT_NE(e, nullptr) << PlanText(s, plan);
   ASSERT_NE(avg, nullptr) << PlanText(s, plan);
   ASSERT_EQ(e->spec.roughness.min, 0.3);

@@ -20,27 +20,17 @@
 
 #include "brdfbake/scene.h"
 #include "util/file_util.h"
+#include "util/scene_util.h"
 #include "util/lookup_util.h"
 
 namespace brdfbake {
 namespace {
 
+using test::FindPlanned;
+using test::Joined;
 using test::WriteText;
 
 std::string Scratch(const std::string& name) { return test::Scratch("scene_glass_" + name); }
-
-std::string Joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += x + "\n";
-  return s;
-}
-
-const PlannedTable* Find(const ScenePlan& plan, const std::string& file) {
-  for (const PlannedTable& p : plan.tables) {
-    if (p.file == file) return &p;
-  }
-  return nullptr;
-}
 
 // A glTF file: thin-walled glass (transmission, ior 1.33), a glass volume
 // (ior 1.7), an opaque material with an ior, and one whose transmission
@@ -90,7 +80,7 @@ TEST(SceneGlassTest, GltfTransmissionGetsTheGlassTablesOverItsIorRange) {
   // The glass tables over ior [1.33, 1.7] and roughness [0.2, 0.5] only.
   for (const char* f : {"E_ggx-glass.exr", "E_avg_ggx-glass.exr", "E_ggx-glass_inverse.exr",
                         "E_avg_ggx-glass_inverse.exr"}) {
-    const PlannedTable* p = Find(plan, f);
+    const PlannedTable* p = FindPlanned(plan, f);
     ASSERT_NE(p, nullptr) << f << "\n" << PlanText(s, plan);
     EXPECT_EQ(p->spec.model.kind, ModelKind::kGgxGlass);
     EXPECT_DOUBLE_EQ(p->spec.ior.min, 1.33) << f;
@@ -114,9 +104,9 @@ TEST(SceneGlassTest, GltfTransmissionGetsTheGlassTablesOverItsIorRange) {
   Scene thin = s;
   thin.materials.erase(thin.materials.begin() + 1);
   const ScenePlan thin_plan = PlanScene(thin);
-  EXPECT_NE(Find(thin_plan, "E_ggx-glass.exr"), nullptr);
-  EXPECT_EQ(Find(thin_plan, "E_ggx-glass_inverse.exr"), nullptr);
-  const PlannedTable* one = Find(thin_plan, "E_ggx-glass.exr");
+  EXPECT_NE(FindPlanned(thin_plan, "E_ggx-glass.exr"), nullptr);
+  EXPECT_EQ(FindPlanned(thin_plan, "E_ggx-glass_inverse.exr"), nullptr);
+  const PlannedTable* one = FindPlanned(thin_plan, "E_ggx-glass.exr");
   ASSERT_NE(one, nullptr);
   EXPECT_EQ(one->spec.ior.size, 1);  // one ior: one slice
   EXPECT_DOUBLE_EQ(one->table.axes.back().Value(0), 1.33);

@@ -22,28 +22,18 @@
 
 #include "brdfbake/scene.h"
 #include "util/file_util.h"
+#include "util/scene_util.h"
 #include "util/lookup_util.h"
 
 namespace brdfbake {
 namespace {
 
+using test::FindPlanned;
+using test::Joined;
 using test::Slurp;
 using test::WriteText;
 
 std::string Scratch(const std::string& name) { return test::Scratch("scene_sheen_" + name); }
-
-std::string Joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += x + "\n";
-  return s;
-}
-
-const PlannedTable* Find(const ScenePlan& plan, const std::string& file) {
-  for (const PlannedTable& p : plan.tables) {
-    if (p.file == file) return &p;
-  }
-  return nullptr;
-}
 
 // A glTF file: a plain GGX material, a sheen material, one whose sheen
 // roughness a texture modulates, and one whose sheen colour is 0 (no layer).
@@ -98,7 +88,7 @@ TEST(SceneSheenTest, GltfSheenGetsTheCharlieTables) {
   EXPECT_EQ(files, (std::vector<std::string>{"E_avg_charlie.exr", "E_avg_ggx.exr", "E_charlie.exr", "E_ggx.exr",
                                              "dfg_ggx.exr"}));
   for (const char* f : {"E_charlie.exr", "E_avg_charlie.exr"}) {
-    const PlannedTable* p = Find(plan, f);
+    const PlannedTable* p = FindPlanned(plan, f);
     ASSERT_NE(p, nullptr) << f;
     EXPECT_EQ(p->spec.model.kind, ModelKind::kCharlie);
     EXPECT_EQ(p->spec.model.visibility, SheenVisibility::kContyKulla);
@@ -114,11 +104,11 @@ TEST(SceneSheenTest, GltfSheenGetsTheCharlieTables) {
       EXPECT_FALSE(p->hint.empty()) << f;
     }
   }
-  EXPECT_EQ(Find(plan, "E_charlie.exr")->spec.mu.clamp_min, 1e-4);
-  EXPECT_EQ(Find(plan, "E_charlie.exr")->table.axes[0].clamp_min, 1e-4);
+  EXPECT_EQ(FindPlanned(plan, "E_charlie.exr")->spec.mu.clamp_min, 1e-4);
+  EXPECT_EQ(FindPlanned(plan, "E_charlie.exr")->table.axes[0].clamp_min, 1e-4);
   // The base layers' GGX tables are the base roughness' alone.
-  EXPECT_EQ(Find(plan, "E_ggx.exr")->spec.roughness.min, 0.5);
-  EXPECT_EQ(Find(plan, "E_ggx.exr")->spec.roughness.max, 0.9);
+  EXPECT_EQ(FindPlanned(plan, "E_ggx.exr")->spec.roughness.min, 0.5);
+  EXPECT_EQ(FindPlanned(plan, "E_ggx.exr")->spec.roughness.max, 0.9);
   const std::string decisions = Joined(plan.decisions);
   EXPECT_NE(decisions.find("the sheen layers of 'velvet', 'satin'"), std::string::npos) << decisions;
   EXPECT_NE(decisions.find("conty-kulla"), std::string::npos) << decisions;
@@ -145,8 +135,8 @@ TEST(SceneSheenTest, GltfSheenGetsTheCharlieTables) {
   s.engine.max_lut_size = 8;
   s.engine.tables = {TableKind::kE};
   const ScenePlan e_only = PlanScene(s);
-  EXPECT_NE(Find(e_only, "E_charlie.exr"), nullptr);
-  EXPECT_EQ(Find(e_only, "E_avg_charlie.exr"), nullptr);
+  EXPECT_NE(FindPlanned(e_only, "E_charlie.exr"), nullptr);
+  EXPECT_EQ(FindPlanned(e_only, "E_avg_charlie.exr"), nullptr);
   s.engine.tables = {TableKind::kDfg};
   const ScenePlan dfg_only = PlanScene(s);
   for (const PlannedTable& p : dfg_only.tables) EXPECT_NE(p.spec.model.kind, ModelKind::kCharlie) << p.file;
@@ -323,7 +313,7 @@ TEST(SceneSheenTest, EnginePresetsServeTheSheenOrGetBrdfbakesFiles) {
   const size_t at = gd.find(says);
   ASSERT_NE(at, std::string::npos) << gd;
   const double stated = std::stod(gd.substr(at + says.size()));
-  const PlannedTable* dfg = Find(gp, "dfg_lut.exr");
+  const PlannedTable* dfg = FindPlanned(gp, "dfg_lut.exr");
   ASSERT_NE(dfg, nullptr) << PlanText(godot, gp);
   BakeSpec cloth;
   cloth.table = TableKind::kE;
@@ -350,10 +340,10 @@ TEST(SceneSheenTest, EnginePresetsServeTheSheenOrGetBrdfbakesFiles) {
   Scene bevy = LoadScene(dir + "/s.gltf");
   ApplySceneOverrides(&bevy, {{"--preset", "bevy"}, {"--error-target", "1e-2"}, {"--max-size", "16"}});
   const ScenePlan bp = PlanScene(bevy);
-  const PlannedTable* e = Find(bp, "E_charlie.exr");
+  const PlannedTable* e = FindPlanned(bp, "E_charlie.exr");
   ASSERT_NE(e, nullptr) << PlanText(bevy, bp);
-  EXPECT_NE(Find(bp, "E_avg_charlie.exr"), nullptr) << PlanText(bevy, bp);
-  EXPECT_NE(Find(bp, "dfg.ktx2"), nullptr) << PlanText(bevy, bp);
+  EXPECT_NE(FindPlanned(bp, "E_avg_charlie.exr"), nullptr) << PlanText(bevy, bp);
+  EXPECT_NE(FindPlanned(bp, "dfg.ktx2"), nullptr) << PlanText(bevy, bp);
   EXPECT_EQ(e->spec.roughness.min, 0.0);
   EXPECT_EQ(e->spec.roughness.max, 0.6);
   EXPECT_FALSE(e->spec.half);  // brdfbake's own file under a preset: float, as the 4D tables

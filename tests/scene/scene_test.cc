@@ -23,24 +23,19 @@
 #include "brdfbake/exr.h"
 #include "brdfbake/scene.h"
 #include "util/file_util.h"
+#include "util/scene_util.h"
 #include "util/lookup_util.h"
 
 namespace brdfbake {
 namespace {
 
+using test::FindPlanned;
 using test::Slurp;
 using test::WriteText;
 
 const std::string kExamples = std::string(BRDFBAKE_TEST_DATA) + "/../../examples";
 
 std::string Scratch(const std::string& name) { return test::Scratch("scene_" + name); }
-
-const PlannedTable* Find(const ScenePlan& plan, const std::string& file) {
-  for (const PlannedTable& p : plan.tables) {
-    if (p.file == file) return &p;
-  }
-  return nullptr;
-}
 
 TEST(SceneTest, TomlExamplePlansExactlyWhatItsMaterialsNeed) {
   const Scene s = LoadScene(kExamples + "/scene.toml");
@@ -54,13 +49,13 @@ TEST(SceneTest, TomlExamplePlansExactlyWhatItsMaterialsNeed) {
   EXPECT_EQ(files, (std::vector<std::string>{"E_avg_ggx.exr", "E_avg_std_g3.exr", "E_ggx.exr", "E_std_g3.exr",
                                              "dfg_ggx.exr", "dfg_std_g3.exr"}));
   // ggx: the union of the materials' roughness, [0.3, 0.6], nothing more.
-  const PlannedTable* e = Find(plan, "E_ggx.exr");
+  const PlannedTable* e = FindPlanned(plan, "E_ggx.exr");
   ASSERT_NE(e, nullptr);
   EXPECT_EQ(e->spec.roughness.min, 0.3);
   EXPECT_EQ(e->spec.roughness.max, 0.6);
   EXPECT_EQ(e->materials, (std::vector<std::string>{"brushed_steel", "painted_metal"}));
   // std: one gamma, one roughness: a single roughness entry.
-  const PlannedTable* d = Find(plan, "dfg_std_g3.exr");
+  const PlannedTable* d = FindPlanned(plan, "dfg_std_g3.exr");
   ASSERT_NE(d, nullptr);
   EXPECT_EQ(d->spec.model.gamma, 3.0);
   EXPECT_EQ(d->spec.roughness.size, 1);
