@@ -469,8 +469,12 @@ TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
     v.e = 1;
     return v;
   }
-  const RuleResult r = GlassAlbedo(alpha, spec.model.ior, spec.masking, std::max(mu, kMuMin),
-                                   spec.tolerance, spec.EffectiveSamples());
+  const double m = std::max(mu, kMuMin);
+  const int n = spec.EffectiveSamples();
+  const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m,
+                                                   spec.tolerance, n)
+                                 : GlassAlbedo(alpha, spec.model.ior, spec.masking, m,
+                                               spec.tolerance, n);
   v.e = r.value;
   v.err_e = r.error;
   return v;
@@ -606,9 +610,14 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "reflection or the refraction reaches the horizon and at the critical angle (roots "
                  "of quadratic forms in closed form), the rays cut where the sequence of those "
                  "curves changes (src/rules/glass/glass_albedo.h)",
-                 "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
-                 "Gauss-Kronrod 15 on pieces graded towards the curves and the lune's edge, mapped "
-                 "smoothly at the critical angle's square-root edge (double scalar code)",
+                 spec.simd ? "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
+                             "Gauss-Kronrod 15 on pieces graded towards the curves and the lune's "
+                             "edge, mapped smoothly at the critical angle's square-root edge (each "
+                             "piece's nodes in double SIMD lanes)"
+                           : "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
+                             "Gauss-Kronrod 15 on pieces graded towards the curves and the lune's "
+                             "edge, mapped smoothly at the critical angle's square-root edge (double "
+                             "scalar code)",
                  "3 x the sum over the phi pieces of |K15 - G7|, plus the rays' own sums carried "
                  "through the Kronrod weights");
         break;
