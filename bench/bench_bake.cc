@@ -212,10 +212,10 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
   // mu and roughness clamped at 1e-4, ior from 1 to 99.5 = z 0 to 0.99 with
   // the fresnel-z warp; inverse: eta = 1 / ior), and a 32^3 E over the
   // default ior range 1 to 3; no true error (no reference bake of these).
-  // The glass rule runs in double scalar code only: double_reference.
+  // Each ray piece's nodes in lanes (src/lanes/glass_lanes.cc): simd.
   for (bool inverse : {false, true}) {
     for (T table : {T::kE, T::kEavg}) {
-      BakeSpec cycles = Spec(table, ModelKind::kGgxGlass, I::kQuadrature, false);
+      BakeSpec cycles = Spec(table, ModelKind::kGgxGlass, I::kQuadrature);
       cycles.inverse = inverse;
       cycles.mu.clamp_min = cycles.roughness.clamp_min = 1e-4;
       cycles.ior.max = (1 + 0.99 * 0.99) / (1 - 0.99 * 0.99);
@@ -227,7 +227,7 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
       }
     }
   }
-  Add("ggx-glass", Spec(T::kE, ModelKind::kGgxGlass, I::kQuadrature, false), {"size", "iors"},
+  Add("ggx-glass", Spec(T::kE, ModelKind::kGgxGlass, I::kQuadrature), {"size", "iors"},
       {{32, 32, c}}, 0);
 #endif
 
@@ -239,6 +239,12 @@ void Add(const std::string& model, const BakeSpec& spec, std::vector<std::string
       {{32, 16, 32, 4, c}}, 0);
   Add("sel", Spec(T::kSelNorm, ModelKind::kSel, I::kQuadrature, false), {"alpha_x", "alpha_y"},
       {{32, 32, c}});
+#if BRDFBAKE_WITH_GLASS
+  BakeSpec glass_ref = Spec(T::kE, ModelKind::kGgxGlass, I::kQuadrature, false);
+  glass_ref.mu.clamp_min = glass_ref.roughness.clamp_min = 1e-4;
+  glass_ref.ior.max = (1 + 0.99 * 0.99) / (1 - 0.99 * 0.99);
+  Add("ggx-glass_cycles", glass_ref, {"size", "iors"}, {{16, 16, c}}, 0);
+#endif
 
   // The sampling integrators, their points in lanes or in the reference.
   for (I integrator : {I::kQmc, I::kEngine}) {

@@ -38,6 +38,15 @@ RuleResult SimdCharlieAlbedo(double alpha, SheenVisibility visibility, double mu
 RuleResult SimdDisneyAlbedo(double r, double mu);
 RuleResult SimdDisneyEavg(double r);
 
+// GlassAlbedo (glass_albedo.h) from the parameters, each ray piece's 15
+// nodes in lanes; alpha = 0 is the smooth interface (E = 1).
+RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
+                           int max_pieces);
+// Its integrand at 15 angles theta along the ray phi (the values the
+// rule's ScalarGlassNodes gives), for the tests.
+void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi,
+                         const double* theta, double* v);
+
 // SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);
 class EllipsoidRay;

@@ -1,0 +1,171 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The glass albedo rule (rules/glass/glass_albedo_rule.h) with each ray
+// piece's nodes in double SIMD lanes: the same rays, cuts, pieces and
+// nodes as the scalar reference ScalarGlassNodes, the 15 values of a
+// piece computed together (the 16th lane repeats the first node and is
+// dropped).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "brdfbake/models/dielectric.h"
+#include "brdfbake/models/ggx.h"
+#include "lanes/quadrature_simd.h"
+#include "rules/glass/glass_albedo_rule.h"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "src/lanes/glass_lanes.cc"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+#include <hwy/contrib/math/math-inl.h>
+
+#include "lanes/lanes_common-inl.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace brdfbake {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// ScalarGlassNodes in lanes, term by term:
+//  - cos and sin of theta by Highway's Cos and Sin (within 3 ulp on
+//    Highway 1.0.3; theta is in [0, pi/2]);
+//  - the microfacet h = m / |m| and its Fresnel cosine c = wo.h clamped to
+//    [0, 1];
+//  - F by the same amplitudes as FresnelDielectric (models/fresnel.h,
+//    [Walter07] eq. 22 in its cos_t form), 1 where sin^2(theta_t) >= 1
+//    (total internal reflection, eta < 1);
+//  - the reflection r = 2 c h - wo and the refraction t = -wo / eta +
+//    (c / eta - cos_t) h ([Walter07] eq. 40), each counted where it lies on
+//    its side of the surface;
+//  - Lambda of r and of t (turned to z > 0) in the GGX form without a
+//    division by the cosine, P / (2 (z^2 + z sqrt(z^2 + P))), P = alpha^2
+//    (x^2 + y^2) (ggx-inl.h's GgxLambda; the reference forms 1/a^2 =
+//    P / z^2 first), and G2 / G1(wo) of the bsdf's masking.
+// The divisions by eta become products by 1 / eta. Every node differs
+// from the reference by the rounding of these terms only: a few ulp of
+// the largest term, more next to the critical angle, where F has an
+// infinite slope in c (tests/lanes/glass_lanes_test.cc bounds the
+// albedos of both paths against each other on every target).
+struct SimdGlassNodes {
+  using V = hn::Vec<DF64>;
+  const GlassFrame* frame;
+  bool separable;
+  double g1o_inv;  // 1 + Lambda(wo) (height-correlated); unused when separable
+  double lambda_o;
+
+  void operator()(const GlassRay& ray, const double* theta, double* v) const {
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const GlassFrame& f = *frame;
+    HWY_ALIGN double in[16], out[16];
+    NodesTo16(theta, in);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5);
+    const V alpha = hn::Set(d, f.alpha), alpha2 = hn::Set(d, f.alpha * f.alpha);
+    const V vx = hn::Set(d, f.vx), vz = hn::Set(d, f.vz);
+    const V cp = hn::Set(d, ray.cp), sp = hn::Set(d, ray.sp);
+    const V so = hn::Set(d, f.so), mu = hn::Set(d, f.mu);
+    const V eta = hn::Set(d, f.eta), inv_eta = hn::Set(d, 1 / f.eta);
+    const V inv_eta2 = hn::Set(d, 1 / (f.eta * f.eta));
+    const V g1o = hn::Set(d, g1o_inv), one_lo = hn::Set(d, 1 + lambda_o);
+    // G2 / G1(wo) at Lambda's numerator p and z = |w.z| > 0.
+    auto g2_over_g1 = [&](V p, V z) {
+      const V z2 = hn::Mul(z, z);
+      const V lambda = hn::Div(p, hn::Mul(hn::Set(d, 2.0), hn::MulAdd(z, hn::Sqrt(hn::Add(z2, p)), z2)));
+      return separable ? hn::Div(one, hn::Add(one, lambda)) : hn::Div(g1o, hn::Add(one_lo, lambda));
+    };
+    for (size_t i = 0; i < 16; i += N) {
+      const V th = hn::Load(d, in + i);
+      const V ct = hn::Cos(d, th), st = hn::Sin(d, th);
+      // m = alpha (ct vx - st sp vz, st cp, .) and m.z = ct vz + st sp vx
+      // (GlassFrame::M).
+      const V ssp = hn::Mul(st, sp);
+      const V mx = hn::Mul(alpha, hn::Sub(hn::Mul(ct, vx), hn::Mul(ssp, vz)));
+      const V my = hn::Mul(alpha, hn::Mul(st, cp));
+      const V mz = hn::Add(hn::Mul(ct, vz), hn::Mul(ssp, vx));
+      const V len = hn::Sqrt(hn::MulAdd(mx, mx, hn::MulAdd(my, my, hn::Mul(mz, mz))));
+      const auto valid = hn::And(hn::Gt(len, zero), hn::Ge(mz, zero));
+      const V inv_len = hn::Div(one, hn::IfThenElse(valid, len, one));
+      const V hx = hn::Mul(mx, inv_len), hy = hn::Mul(my, inv_len), hz = hn::Mul(mz, inv_len);
+      const V c = hn::Min(hn::Max(hn::MulAdd(so, hx, hn::Mul(mu, hz)), zero), one);
+      // Fresnel: sin^2(theta_t) = (1 - c^2) / eta^2.
+      const V omc2 = hn::Mul(hn::Sub(one, c), hn::Add(one, c));
+      const V sin2_t = hn::Mul(omc2, inv_eta2);
+      const auto tir = hn::Ge(sin2_t, one);
+      const V cos_t = hn::Sqrt(hn::Max(hn::Sub(one, sin2_t), zero));
+      const V ec = hn::Mul(eta, c), et = hn::Mul(eta, cos_t);
+      const V r_parl = hn::Div(hn::Sub(ec, cos_t), hn::Add(ec, cos_t));
+      const V r_perp = hn::Div(hn::Sub(c, et), hn::Add(c, et));
+      const V fr = hn::IfThenElse(tir, one, hn::Mul(half, hn::MulAdd(r_parl, r_parl, hn::Mul(r_perp, r_perp))));
+      // Reflection r = 2 c h - wo (wo = (so, 0, mu)).
+      const V two_c = hn::Add(c, c);
+      const V rx = hn::MulSub(two_c, hx, so), ry = hn::Mul(two_c, hy), rz = hn::MulSub(two_c, hz, mu);
+      const auto r_ok = hn::And(hn::Gt(rz, zero), hn::Gt(fr, zero));
+      const V rz_safe = hn::IfThenElse(r_ok, rz, one);
+      const V pr = hn::Mul(alpha2, hn::MulAdd(rx, rx, hn::Mul(ry, ry)));
+      V w = hn::IfThenElseZero(r_ok, hn::Mul(fr, g2_over_g1(pr, rz_safe)));
+      // Refraction t = -wo / eta + (c / eta - cos_t) h, cos_t^2 = 1 - (1 -
+      // c^2) / eta^2.
+      const V ct2 = hn::Sub(one, hn::Mul(omc2, inv_eta2));
+      const V k = hn::Sub(hn::Mul(c, inv_eta), hn::Sqrt(hn::Max(ct2, zero)));
+      const V tx = hn::MulSub(k, hx, hn::Mul(so, inv_eta)), ty = hn::Mul(k, hy);
+      const V tz = hn::MulSub(k, hz, hn::Mul(mu, inv_eta));
+      const auto t_ok = hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero));
+      const V tz_safe = hn::IfThenElse(t_ok, hn::Neg(tz), one);
+      const V pt = hn::Mul(alpha2, hn::MulAdd(tx, tx, hn::Mul(ty, ty)));
+      w = hn::Add(w, hn::IfThenElseZero(t_ok, hn::Mul(hn::Sub(one, fr), g2_over_g1(pt, tz_safe))));
+      hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
+    }
+    for (int i = 0; i < 15; ++i) v[i] = out[i];
+  }
+};
+
+RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol,
+                      int max_pieces) {
+  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
+                                                     DielectricTransport::kImportance);
+  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
+  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  return GlassAlbedoWith(frame, tol, max_pieces, nodes);
+}
+
+void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi,
+                const double* theta, double* v) {
+  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
+                                                     DielectricTransport::kImportance);
+  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
+  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  nodes(GlassRay{std::cos(phi), std::sin(phi)}, theta, v);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace brdfbake
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace brdfbake {
+
+HWY_EXPORT(GlassTexel);
+RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
+                           int max_pieces) {
+  if (alpha == 0) {
+    RuleResult out;
+    out.value = 1;
+    out.pieces = 1;
+    return out;
+  }
+  return HWY_DYNAMIC_DISPATCH(GlassTexel)(alpha, eta, masking, mu, tol, max_pieces);
+}
+
+HWY_EXPORT(GlassNodes);
+void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi,
+                         const double* theta, double* v) {
+  HWY_DYNAMIC_DISPATCH(GlassNodes)(alpha, eta, masking, mu, phi, theta, v);
+}
+
+}  // namespace brdfbake
+#endif  // HWY_ONCE
