@@ -517,6 +517,10 @@ def bake_label(table_name, model, axes):
         model_text = f"std (gamma {m.group(1).lstrip('_')})"
     elif model.startswith("charlie_"):
         model_text = f"charlie ({model[len('charlie_'):]})"
+    elif model == "ggx-glass_cycles":
+        model_text = "ggx-glass (Cycles' axes)"
+    elif model == "ggx-glass_cycles_inverse":
+        model_text = "ggx-glass inverse (Cycles' axes)"
     else:
         model_text = model
     values = dict(a.split(":") for a in axes)
@@ -525,6 +529,8 @@ def bake_label(table_name, model, axes):
         dims = [n] if table_name == "E_avg" else [n, n]
         if "gammas" in values:
             dims.append(values["gammas"])
+        if "iors" in values:
+            dims.append(values["iors"])
     else:
         dims = [v for k, v in values.items()]
     return " ".join(x for x in (model_text, table_name, "x".join(dims)) if x)
@@ -598,6 +604,7 @@ def readme_rows(readme, kernels_ratios):
         ("charlie (neubelt) E 64x64", "quadrature", "charlie (sheen) E 64x64, neubelt"),
         ("charlie (conty-kulla) E 64x64", "quadrature", "charlie (sheen) E 64x64, conty-kulla"),
         ("disney-diffuse E 64x64", "quadrature", "disney-diffuse E 64x64"),
+        ("ggx-glass E 32x32x32", "quadrature", "ggx-glass E 32x32x32 (mu, roughness, ior)"),
         ("ggx E 32x32", "engine", "ggx E 32x32, engine setting (1024 NDF samples)"),
     ]
     lines = []
@@ -615,6 +622,13 @@ def readme_rows(readme, kernels_ratios):
         lines.insert(4, f"| std E 32x32, gamma 1.501 to 30 | {fmt_seconds(min(times))} to "
                         f"{fmt_seconds(max(times))} | <= {fmt_error(max(claims))} | "
                         f"<= {fmt_error(max(trues))} |")
+    # Cycles' glass set: E and E_avg entering and leaving the medium.
+    cycles = [readme.get((f"ggx-glass {side}(Cycles' axes) {t}", "quadrature"))
+              for side in ("", "inverse ") for t in ("E 16x16x16", "E_avg 16x16")]
+    if all(cycles):
+        times, claims, _ = zip(*cycles)
+        lines.append(f"| ggx-glass, Cycles' set of four (E, E_avg, both sides) | {fmt_seconds(sum(times))} | "
+                     f"<= {fmt_error(max(claims))} | |")
     if kernels_ratios:
         lines.append(f"SIMD kernels over the double reference: {fmt_ratio(min(kernels_ratios))} to "
                      f"{fmt_ratio(max(kernels_ratios))}")
