@@ -14,6 +14,7 @@
 #include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/ggx.h"
 #include "lanes/quadrature_simd.h"
+#include "rules/glass/glass_albedo.h"
 #include "rules/glass/glass_albedo_rule.h"
 
 #undef HWY_TARGET_INCLUDE
@@ -152,12 +153,7 @@ namespace brdfbake {
 HWY_EXPORT(GlassTexel);
 RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
                            int max_pieces) {
-  if (alpha == 0) {
-    RuleResult out;
-    out.value = 1;
-    out.pieces = 1;
-    return out;
-  }
+  if (alpha == 0) return SmoothGlassAlbedo();
   return HWY_DYNAMIC_DISPATCH(GlassTexel)(alpha, eta, masking, mu, tol, max_pieces);
 }
 

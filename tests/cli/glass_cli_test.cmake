@@ -6,34 +6,7 @@
 # E_avg bake (entering and --inverse), eval of one value with its error,
 # and bad input refused in one line with no file left behind.
 
-function(run_tool expect_ok out_var err_var)
-  execute_process(COMMAND ${BRDFBAKE} ${ARGN}
-    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(expect_ok AND NOT rc EQUAL 0)
-    message(FATAL_ERROR "brdfbake ${ARGN}: exit ${rc}, stderr: ${err}")
-  endif()
-  if(NOT expect_ok AND rc EQUAL 0)
-    message(FATAL_ERROR "brdfbake ${ARGN}: expected a non-zero exit, got 0")
-  endif()
-  set(${out_var} "${out}" PARENT_SCOPE)
-  set(${err_var} "${err}" PARENT_SCOPE)
-endfunction()
-
-# A one-line error matching `pattern`, nothing on standard output.
-function(expect_error_matching pattern)
-  run_tool(FALSE out err ${ARGN})
-  string(STRIP "${err}" err)
-  string(FIND "${err}" "\n" nl)
-  if(NOT nl EQUAL -1 OR err STREQUAL "")
-    message(FATAL_ERROR "brdfbake ${ARGN}: expected a one-line error, got: '${err}'")
-  endif()
-  if(NOT out STREQUAL "")
-    message(FATAL_ERROR "brdfbake ${ARGN}: expected no output on error, got: '${out}'")
-  endif()
-  if(NOT err MATCHES "${pattern}")
-    message(FATAL_ERROR "brdfbake ${ARGN}: expected an error matching '${pattern}', got: '${err}'")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_util.cmake)
 
 file(REMOVE_RECURSE "${OUT}")
 file(MAKE_DIRECTORY "${OUT}")

@@ -18,12 +18,7 @@ RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, doub
 
 RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
                        int max_pieces) {
-  if (alpha == 0) {
-    RuleResult out;
-    out.value = 1;
-    out.pieces = 1;
-    return out;
-  }
+  if (alpha == 0) return SmoothGlassAlbedo();
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
   return GlassAlbedo(bsdf, mu, tol, max_pieces);

@@ -63,8 +63,16 @@ namespace brdfbake {
 RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol,
                        int max_pieces);
 
-// The same from the parameters; alpha = 0 is the smooth interface, whose
-// albedo is exactly 1 (the rough model's smallest alpha is 1e-4).
+// The albedo of the smooth interface (alpha = 0): exactly 1, with no error.
+inline RuleResult SmoothGlassAlbedo() {
+  RuleResult out;
+  out.value = 1;
+  out.pieces = 1;
+  return out;
+}
+
+// The same from the parameters; alpha = 0 is the smooth interface
+// (SmoothGlassAlbedo; the rough model's smallest alpha is 1e-4).
 RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
                        int max_pieces);
 
