@@ -73,6 +73,9 @@ struct Axis {
   // The integrand is evaluated at max(value, clamp_min) (Cycles' tables
   // clamp mu and roughness at 1e-4); 0 = no clamp.
   double clamp_min = 0;
+  // ... and at most clamp_max (the ior axis only: Cycles' glass tables
+  // end at z = 1, ior = inf, baked at z = 0.99); inf = no clamp.
+  double clamp_max = kInfinity;
 
   // docs/format.md: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
   // value = min + (max - min) w(t); the tail warp maps t as its comment says.

@@ -121,7 +121,7 @@ double Axis::ValueAt(double fi) const {
   if (warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) linear in t; the axis lies on one
     // side of 1 (ValidateBakeSpec), where ior(z) is monotonic.
-    auto z_of = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    auto z_of = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
     if (t == 0) return min;
     if (t == 1) return max;
     const double z = (1 - t) * z_of(min) + t * z_of(max), z2 = z * z;
@@ -143,6 +143,7 @@ std::string Axis::ToJson() const {
   j["warp"] = WarpName(warp);
   j["placement"] = PlacementName(placement);
   if (clamp_min > 0) j["clamp_min"] = clamp_min;
+  if (clamp_max < kInfinity) j["clamp_max"] = clamp_max;
   if (warp == Warp::kTail) {
     j["map"] = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
                "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
@@ -154,7 +155,7 @@ std::string Axis::ToJson() const {
     j["map"] = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
                "ior = (1 + z^2) / (1 - z^2)";
     nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i) values.push_back(Value(i));
+    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
     j["values"] = values;
   }
   return j.dump();
@@ -284,10 +285,14 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           std::string(WarpName(a.warp)) + ")");
     }
     const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
-    if (!(a.min >= 1) || !(a.max <= kMaxFresnelIndex) || !ordered) {
+    // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
+    // clamp of at most 100 bakes its last slices.
+    const double top = std::min(a.max, a.clamp_max);
+    if (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max)) {
       Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
           "eta = 1/ior: --inverse; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
+    if (std::isinf(a.max) && a.warp != Warp::kFresnelZ) Bad("--range: an ior axis to inf needs the fresnel-z warp");
   }
   if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");
   if (spec.integrator == IntegratorKind::kQuadrature && spec.samples > 4096) {
@@ -1345,7 +1350,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     t.height *= spec.ior.size;
     slice_specs.assign(size_t(spec.ior.size), spec);
     for (int k = 0; k < spec.ior.size; ++k) {
-      const double ior = spec.ior.Value(k);
+      const double ior = std::min(spec.ior.Value(k), spec.ior.clamp_max);
       slice_specs[k].model.ior = spec.inverse ? 1 / ior : ior;
     }
   }

@@ -184,8 +184,9 @@ std::vector<Preset> MakePresets() {
     // Blender Cycles: ggx_E 32x32 with r on x and NoV on y, both at edges
     // and clamped at 1e-4; ggx_Eavg over r; float C arrays.
     Preset c{"cycles",
-             "Cycles' table_ggx_E (32x32, x = roughness, y = NoV, edges, both clamped at 1e-4) and "
-             "table_ggx_Eavg (32), float C arrays in one header",
+             "Cycles' table_ggx_E (32x32, x = roughness, y = NoV, edges, both clamped at 1e-4), "
+             "table_ggx_Eavg (32) and the glass E (16x16x16 over roughness, NoV, z = F0^(1/4)) and "
+             "E_avg (16x16), entering and leaving, float C arrays in one header",
              {},
              "ggx_tables.h"};
     BakeSpec e = Spec(TableKind::kE, 32, 32, Placement::kEdges);
@@ -196,6 +197,30 @@ std::vector<Preset> MakePresets() {
     a.roughness.clamp_min = 1e-4;
     c.tables.push_back(Entry(a, Layout({{"E_avg", Source::kEavg}}, PixelType::kFloat), Container::kHeader, "",
                         "table_ggx_Eavg"));
+    // The glass tables (shader.tables, looked up in bsdf_microfacet.h):
+    // 16x16x16 E with x = r, y = NoV, slices over z = F0^(1/4) = k / 15
+    // (ior = (1 + z^2) / (1 - z^2), inf at k = 15, baked at z = 0.99,
+    // ior 99.5), all at edges, r and NoV clamped at 1e-4; E_avg 16x16 over
+    // r and z. The inverse tables hold light leaving the medium, eta =
+    // 1 / ior. They are integrated to 1e-6, the step of the six decimals
+    // Cycles' own file holds (its Monte Carlo noise is some 1e-5).
+    for (const bool inverse : {false, true}) {
+      const std::string stem = inverse ? "table_ggx_glass_inv_" : "table_ggx_glass_";
+      BakeSpec g = Spec(TableKind::kE, 16, 16, Placement::kEdges);
+      g.model.kind = ModelKind::kGgxGlass;
+      g.inverse = inverse;
+      g.mu.clamp_min = g.roughness.clamp_min = 1e-4;
+      g.ior.size = 16;
+      g.ior.max = kInfinity;
+      g.ior.clamp_max = 1.9801 / 0.0199;  // z = 0.99
+      g.tolerance = 1e-6;
+      c.tables.push_back(Entry(g, Layout({{"E", Source::kE}}, PixelType::kFloat, true), Container::kHeader, "",
+                               stem + "E"));
+      g.table = TableKind::kEavg;
+      g.mu.clamp_min = 0;
+      c.tables.push_back(Entry(g, Layout({{"E_avg", Source::kEavg}}, PixelType::kFloat), Container::kHeader, "",
+                               stem + "Eavg"));
+    }
     p.push_back(c);
   }
   {

@@ -500,9 +500,13 @@ Image ArrangeTables(const Table& t, const std::vector<const Table*>& others, con
   const SourceReader& reader = readers[0];
   const bool one_d = t.spec.table == TableKind::kEavg;
   const bool transpose = layout.roughness_on_x && !one_d;
+  // Tables over a third axis stack its slices vertically (t.height = rows
+  // x slices); a transposed image keeps them stacked and transposes each.
+  const int rows = transpose && t.axes.size() > 2 ? t.axes[1].size : t.height;
+  const int slices = t.height / rows;
   Image im;
-  im.width = transpose ? t.height : t.width;
-  im.height = transpose ? t.width : t.height;
+  im.width = transpose ? rows : t.width;
+  im.height = transpose ? t.width * slices : t.height;
   im.channels = int(layout.channels.size());
   im.pixel = layout.pixel;
   im.flip_rows = layout.flip_rows && !one_d;
@@ -537,7 +541,8 @@ Image ArrangeTables(const Table& t, const std::vector<const Table*>& others, con
   for (int y = 0; y < im.height; ++y) {
     const int ty = im.flip_rows ? im.height - 1 - y : y;
     for (int x = 0; x < im.width; ++x) {
-      const size_t src = transpose ? size_t(x) * t.width + ty : size_t(ty) * t.width + x;
+      const size_t src = transpose ? (size_t(ty / t.width) * rows + x) * t.width + ty % t.width
+                                   : size_t(ty) * t.width + x;
       const size_t dst = (size_t(y) * im.width + x) * im.channels;
       for (int c = 0; c < im.channels; ++c) {
         const ImageLayout::Out& o = layout.channels[c];
@@ -591,6 +596,12 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
             "t = (i + 0.5) / N (centers) or i / (N - 1) (edges), value = min + (max - min) w(t), "
             "w = t, t^2, sqrt(t) for linear, square, sqrt (the tail and fresnel-z warps: the axis' map); "
             "the integrand at max(value, clamp_min)";
+  for (const Axis& a : im.axes) {
+    if (a.clamp_max < kInfinity) {
+      layout += " and at most clamp_max";
+      break;
+    }
+  }
   char err[40];
   std::snprintf(err, sizeof(err), "%.3e", im.max_abs_error * (1 + 1e-3));
   std::vector<std::pair<std::string, std::string>> kv = {

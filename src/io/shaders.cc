@@ -47,7 +47,7 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
   } else if (a.warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) linear in t between the
     // axis' ends (bake.h).
-    auto z = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
     const double lo = z(a.min), hi = z(a.max);
     x = "(sqrt(abs(" + value + " - 1.0) / (" + value + " + 1.0)) - " + Lit(lo) + ") / " + Lit(hi - lo);
   } else {

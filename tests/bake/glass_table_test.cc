@@ -6,8 +6,9 @@
 // each slice the rule at its eta, reproducibility at any thread count, the
 // baked texels against independent integration (tests/reference/
 // glass_reference.h) at grazing views, next to the critical angle and at
-// tiny roughness, with claims bounding the true error; and Cycles' four
-// shipped glass tables ([Cycles]) texel by texel.
+// tiny roughness, with claims bounding the true error; and the cycles
+// preset's glass tables against Cycles' shipped ones ([Cycles]) texel by
+// texel.
 
 #include <gtest/gtest.h>
 
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include "brdfbake/bake.h"
+#include "brdfbake/presets.h"
 #include "lanes/quadrature_simd.h"
 #include "quadrature/gauss_legendre.h"
 #include "reference/glass_reference.h"
@@ -58,6 +60,24 @@ TEST(GlassTableTest, FresnelZWarpIsLinearInZ) {
   const nlohmann::json j = nlohmann::json::parse(a.ToJson());
   EXPECT_EQ(j["warp"], "fresnel-z");
   EXPECT_EQ(j["values"].size(), 15u);
+  // Up to ior = inf (z = 1), its last slices baked at a clamp.
+  a.max = kInfinity;
+  a.size = 16;
+  a.clamp_max = 99.5;
+  for (int k = 0; k < 15; ++k) EXPECT_NEAR(FresnelZ(a.Value(k)), k / 15.0, 1e-14) << k;
+  EXPECT_EQ(a.Value(15), kInfinity);
+  const nlohmann::json inf = nlohmann::json::parse(a.ToJson());
+  EXPECT_EQ(inf["max"], "inf");
+  EXPECT_EQ(inf["values"][15], "inf");
+  EXPECT_EQ(inf["clamp_max"], 99.5);
+  BakeSpec s = GlassSpec(TableKind::kEavg, 1, 2, 16);
+  s.ior = a;
+  EXPECT_NO_THROW(ValidateBakeSpec(s));
+  s.ior.clamp_max = kInfinity;  // ior = inf itself is not baked
+  EXPECT_THROW(ValidateBakeSpec(s), std::invalid_argument);
+  s.ior.clamp_max = 99.5;
+  s.ior.warp = Warp::kLinear;
+  EXPECT_THROW(ValidateBakeSpec(s), std::invalid_argument);
 }
 
 // Each texel is the rule at its slice's eta (ior, or 1 / ior with
@@ -408,35 +428,32 @@ double CyclesWrongSideRefraction(double alpha, double eta, double mu, int n) {
   return q / (double(n) * n);
 }
 
-// Our tables on Cycles' axes against its four shipped glass tables, texel
-// by texel. Cycles' texel k is at z = k / 15 (ior = (1 + z^2) / (1 - z^2),
-// z clamped to 0.99 at k = 15: ior 99.5), mu and roughness j / 15, i / 15
-// clamped below at 1e-4; data[k][mu][roughness] against our texel at
-// (mu, roughness, ior) = index (k * 16 + i) * 16 + j (E), k * 16 + i
-// (E_avg). The inverse tables take eta = 1 / ior (--inverse) and include
-// Cycles' wrong-side refraction term Q: where Q is below 1e-6 they must
-// agree with ours within the shipped tables' noise, elsewhere ours + Q
-// within Q's midpoint resolution, and never ours above the shipped value
-// beyond the noise (Q only adds). Q's grid resolves it to 1e-3 (observed
-// at most 9.9e-4 from the difference). The slice k = 0 (ior exactly 1) is left
-// out: Cycles' generator takes its no-interface path there and stores 1,
-// where our slice holds the rough model's limit eta -> 1 (the refraction
-// straight through, masked: 0.53 at roughness 1 and mu 1/15).
+// The cycles preset's four glass tables (their bakes arranged as the
+// preset writes them) against Cycles' shipped ones, texel by texel, in
+// Cycles' own flat order: data[k][mu][roughness] at 256 k + 16 j + i (E),
+// data[k][roughness] at 16 k + i (E_avg). Cycles' texel k is at z = k / 15
+// (ior = (1 + z^2) / (1 - z^2), inf at k = 15, where it is baked at z =
+// 0.99: ior 99.5), mu and roughness j / 15, i / 15 clamped below at 1e-4.
+// The inverse tables take eta = 1 / ior and include Cycles' wrong-side
+// refraction term Q: where Q is below 1e-6 they must agree with ours
+// within the shipped tables' noise, elsewhere ours + Q within Q's midpoint
+// resolution, and never ours above the shipped value beyond the noise (Q
+// only adds). Q's grid resolves it to 1e-3 (observed at most 9.9e-4 from
+// the difference). The slice k = 0 (ior exactly 1) is left out: Cycles'
+// generator takes its no-interface path there and stores 1, where our
+// slice holds the rough model's limit eta -> 1 (the refraction straight
+// through, masked: 0.53 at roughness 1 and mu 1/15).
 TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
   std::ifstream in(BRDFBAKE_TEST_DATA "/cycles_glass_tables.json");
   ASSERT_TRUE(in.good());
   const nlohmann::json doc = nlohmann::json::parse(in);
-  // The 15 slices z = k / 15, k < 15, as one fresnel-z axis, and k = 15.
-  const double z14 = 14.0 / 15, z15 = 0.99;
-  const double ior14 = (1 + z14 * z14) / (1 - z14 * z14), ior15 = (1 + z15 * z15) / (1 - z15 * z15);
-  auto bake = [&](TableKind kind, bool inverse, bool last) {
-    BakeSpec s = GlassSpec(kind, 16, 16, last ? 1 : 15);
-    s.inverse = inverse;
-    s.mu.clamp_min = s.roughness.clamp_min = 1e-4;
-    s.ior.min = last ? ior15 : 1.0;
-    s.ior.max = last ? ior15 : ior14;
-    if (last) s.ior.placement = Placement::kCenters;
-    return Bake(s);
+  const Preset& cycles = FindPreset("cycles");
+  auto preset_table = [&](const std::string& symbol) -> const PresetTable& {
+    for (const PresetTable& pt : cycles.tables) {
+      if (pt.symbol == symbol) return pt;
+    }
+    ADD_FAILURE() << "the cycles preset has no " << symbol;
+    return cycles.tables[0];
   };
   // The shipped tables' noise: Monte Carlo over weights in [0, 1]
   // (Sobol-Burley points, 2^23 samples per E texel, 2^26 per E_avg texel:
@@ -448,18 +465,27 @@ TEST(GlassTableTest, AgreesWithCyclesShippedTables) {
       const bool e = kind == TableKind::kE;
       const std::string name = std::string("table_ggx_glass_") + (inverse ? "inv_" : "") + (e ? "E" : "Eavg");
       const nlohmann::json& data = doc[name]["data"];
-      const Table head = bake(kind, inverse, false), last = bake(kind, inverse, true);
+      const PresetTable& pt = preset_table(name);
+      ASSERT_EQ(pt.spec.table, kind);
+      ASSERT_EQ(pt.spec.inverse, inverse);
+      const Table t = Bake(pt.spec);
+      const Image im = ArrangePresetTable(pt, t);
+      ASSERT_EQ(im.values.size(), e ? 4096u : 256u);
+      const Axis& z_axis = t.spec.ior;
+      for (int k = 0; k < 16; ++k) {
+        const double ior = std::min(z_axis.Value(k), z_axis.clamp_max);
+        const double z = std::sqrt((ior - 1) / (ior + 1));
+        EXPECT_NEAR(z, k < 15 ? k / 15.0 : 0.99, 1e-14) << name << " slice " << k;
+      }
       double sum2 = 0, worst = 0, sum2_clean = 0, worst_clean = 0, worst_q = 0;
       int n = 0, n_clean = 0;
       double k0_worst = 0;
       for (int k = 0; k < 16; ++k) {
-        const Table& t = k < 15 ? head : last;
-        const int kk = k < 15 ? k : 0;
-        const double ior = t.spec.ior.Value(kk), eta = inverse ? 1 / ior : ior;
+        const double ior = std::min(z_axis.Value(k), z_axis.clamp_max), eta = inverse ? 1 / ior : ior;
         for (int i = 0; i < 16; ++i) {
           for (int j = 0; j < (e ? 16 : 1); ++j) {
-            const size_t idx = e ? size_t((kk * 16 + i) * 16 + j) : size_t(kk * 16 + i);
-            const double ours = t.channels[0].stored[idx];
+            const size_t idx = e ? size_t(256 * k + 16 * j + i) : size_t(16 * k + i);
+            const double ours = im.values[idx];
             const double shipped = (e ? data[k][j][i] : data[k][i]).get<double>();
             const double r = std::max(i / 15.0, 1e-4), alpha = r * r;
             double q = 0;

@@ -8,6 +8,8 @@
 // - three.js's DFGLUTData.js dropped into a copy of three's own source tree
 //   (tests/js, pinned) and imported by node through three's Three.js, as
 //   WebGLRenderer imports getDFGLUT();
+// - Cycles' ggx_tables.h compiled with a lookup as Cycles' kernel reads
+//   its glass tables;
 // - Enterprise PBR's pbrlut.hpp compiled in two translation units, one of
 //   them defining PBRLUT_IMPLEMENTATION, read through its extern arrays;
 // - Bevy's dfg.ktx2, zstd-supercompressed, decompressed with libzstd and
@@ -203,6 +205,72 @@ TEST(EngineFileTest, EnterprisePbrHeaderServesItsApi) {
   EXPECT_EQ(float(v[1068]), float(b.images[4].values[2 * 16 + 3]));
   EXPECT_EQ(float(v[1069]), float(b.images[5].values[0]));
   EXPECT_EQ(float(v[1069]), 1.0f);  // capped, as the shipped table
+}
+
+// Cycles' ggx_tables.h compiled with a lookup written as Cycles' kernel
+// reads its tables ([Cycles]; docs/engines.md): each coordinate clamped to
+// [0, 1] and scaled by size - 1 (texels at the edges), bilinear within a
+// slice of 16 x 16 (x = roughness, y = NoV), linear across the slices of
+// z = sqrt(|ior - 1| / (ior + 1)), light inside the medium (ior < 1) read
+// from the inverse tables at 1 / ior. The lookups agree with the glass rule
+// within the 16^3 tables' interpolation error there.
+TEST(EngineFileTest, CyclesHeaderServesItsKernelLookups) {
+  if (!Have("c++")) GTEST_SKIP() << "no C++ compiler";
+  if (!PresetBuilt(FindPreset("cycles"))) GTEST_SKIP() << "cycles needs glass (BRDFBAKE_MODELS)";
+  const std::string dir = Scratch("cycles");
+  const BakedPreset b = WritePreset("cycles", dir);
+  WriteText(dir + "/use.cc",
+            "#include <algorithm>\n#include <cmath>\n#include <cstdio>\n#include \"ggx_tables.h\"\n"
+            "static_assert(sizeof(table_ggx_E) == 1024 * sizeof(float), \"E\");\n"
+            "static_assert(sizeof(table_ggx_Eavg) == 32 * sizeof(float), \"E_avg\");\n"
+            "static_assert(sizeof(table_ggx_glass_E) == 4096 * sizeof(float), \"glass E\");\n"
+            "static_assert(sizeof(table_ggx_glass_inv_E) == 4096 * sizeof(float), \"inv E\");\n"
+            "static_assert(sizeof(table_ggx_glass_Eavg) == 256 * sizeof(float), \"glass E_avg\");\n"
+            "static_assert(sizeof(table_ggx_glass_inv_Eavg) == 256 * sizeof(float), \"inv E_avg\");\n"
+            "static float Row(const float* t, float x, int n) {\n"
+            "  x = std::clamp(x, 0.0f, 1.0f) * float(n - 1);\n"
+            "  const int i = std::min(int(x), n - 2);\n"
+            "  return t[i] + (x - float(i)) * (t[i + 1] - t[i]);\n}\n"
+            "static float Read2(const float* t, float x, float y, int nx, int ny) {\n"
+            "  y = std::clamp(y, 0.0f, 1.0f) * float(ny - 1);\n"
+            "  const int j = std::min(int(y), ny - 2);\n"
+            "  const float a = Row(t + j * nx, x, nx), b = Row(t + (j + 1) * nx, x, nx);\n"
+            "  return a + (y - float(j)) * (b - a);\n}\n"
+            "static float Read3(const float* t, float x, float y, float z) {\n"
+            "  z = std::clamp(z, 0.0f, 1.0f) * 15.0f;\n"
+            "  const int k = std::min(int(z), 14);\n"
+            "  const float a = Read2(t + 256 * k, x, y, 16, 16), b = Read2(t + 256 * (k + 1), x, y, 16, 16);\n"
+            "  return a + (z - float(k)) * (b - a);\n}\n"
+            "int main() {\n"
+            "  const float r = 0.5f, mu = 0.5f;\n"
+            "  for (float ior : {1.5f, 1.0f / 1.5f}) {\n"
+            "    const bool inside = ior < 1.0f;\n"
+            "    const float eta = inside ? 1.0f / ior : ior, z = std::sqrt((eta - 1.0f) / (eta + 1.0f));\n"
+            "    std::printf(\"%.9g\\n\", double(Read3(inside ? table_ggx_glass_inv_E : table_ggx_glass_E, r, mu, z)));\n"
+            "    std::printf(\"%.9g\\n\", double(Read2(inside ? table_ggx_glass_inv_Eavg : table_ggx_glass_Eavg, r, z, 16, 16)));\n"
+            "  }\n"
+            "  for (float v : table_ggx_glass_inv_E) std::printf(\"%.9g\\n\", double(v));\n}\n");
+  int status = 0;
+  Shell("c++ -std=c++17 -Wall -Wextra -Werror -o " + dir + "/use " + dir + "/use.cc", dir, &status);
+  ASSERT_EQ(status, 0) << Slurp(dir + "/err.txt");
+  const std::vector<double> v = Numbers(Shell(dir + "/use", dir, &status));
+  ASSERT_EQ(status, 0);
+  ASSERT_EQ(v.size(), 4 + 4096u);
+  // The arrays as the preset arranged them (table 4: the inverse E).
+  for (size_t i = 0; i < 4096; ++i) ASSERT_EQ(float(v[4 + i]), float(b.images[4].values[i])) << i;
+  // The exact values at roughness 0.5 (alpha 0.25), NoV 0.5, ior 1.5 and
+  // inside (eta = 1 / 1.5).
+  for (const bool inside : {false, true}) {
+    BakeSpec s;
+    s.model.kind = ModelKind::kGgxGlass;
+    s.model.ior = inside ? 1 / 1.5 : 1.5;
+    const double e = IntegrateTexel(s, 0.5, 0.5).e, e_avg = IntegrateEavg(s, 0.5).value;
+    const double lookup_e = v[inside ? 2 : 0], lookup_avg = v[inside ? 3 : 1];
+    EXPECT_NEAR(lookup_e, e, 2e-3) << (inside ? "inside" : "outside");
+    EXPECT_NEAR(lookup_avg, e_avg, 2e-3) << (inside ? "inside" : "outside");
+    std::printf("cycles lookup at r 0.5, NoV 0.5, eta %.4f: E %.6f (exact %.6f), E_avg %.6f (exact %.6f)\n",
+                s.model.ior, lookup_e, e, lookup_avg, e_avg);
+  }
 }
 
 uint32_t U32(const std::string& s, size_t at) {

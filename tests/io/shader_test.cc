@@ -186,7 +186,7 @@ std::vector<Case> AllCases() {
   std::vector<Case> cases;
   for (const Case& c : {PresetCase("three", 0), PresetCase("filament", 0), PresetCase("hdrp", 0),
                         PresetCase("bevy", 0), PresetCase("materialx", 0), PresetCase("cycles", 0),
-                        PresetCase("cycles", 1), PresetCase("godot", 0), PresetCase("unreal", 0),
+                        PresetCase("cycles", 1), PresetCase("cycles", 2), PresetCase("godot", 0), PresetCase("unreal", 0),
                         PresetCase("enterprise-pbr", 0), PresetCase("enterprise-pbr", 1)}) {
     if (PresetBuilt(FindPreset(c.preset))) cases.push_back(c);
   }
@@ -390,6 +390,11 @@ double PointValue(const Axis& a, std::mt19937_64& rng, int* entry) {
     return 1.5 + std::exp(std::log(0.05) + uni(rng) * std::log(2e7));
   }
   const double lo = a.min, hi = a.max;
+  if (a.warp == Warp::kFresnelZ && std::isinf(hi)) {
+    // An ior axis to inf (z = 1): z uniform, sometimes below the axis.
+    const double z = 0.999 * uni(rng), ior = (1 + z * z) / (1 - z * z);
+    return pick < 0.45 ? lo - 0.2 * uni(rng) : ior;
+  }
   if (pick < 0.45) return lo - 0.2 * (hi - lo + 1) * uni(rng);
   if (pick < 0.5) return hi + 0.2 * (hi - lo + 1) * uni(rng);
   return lo + (hi - lo) * uni(rng);

@@ -35,7 +35,7 @@ inline double TextureCoordinate(const Axis& a, double p) {
   if (a.size == 1) return 0.5;
   double t;
   if (a.warp == Warp::kFresnelZ) {
-    auto z = [](double ior) { return std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
     t = std::clamp((z(p) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0);
   } else if (a.warp == Warp::kTail) {
     auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
