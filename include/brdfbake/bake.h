@@ -23,7 +23,13 @@ namespace brdfbake {
 
 // kSelNorm: the integral over the sphere of the squared ellipsoidal lobe
 // (model sel, [TokuyoshiHarada]) over alpha_x x alpha_y (sel_norm.h).
-enum class TableKind { kE, kEavg, kDfg, kSelNorm };
+// kGenSchlickS, kGenSchlickIorS (model ggx): the factor s of the
+// generalized Schlick Fresnel F = mix(F0, F90, s) over a GGX reflection
+// lobe ([Cycles]; rules/glass/gen_schlick.h), over mu x roughness x the
+// Schlick exponent (s_h = (1 - wo.h)^exponent) or x ior (s_h = (F(ior,
+// wo.h) - F0) / (1 - F0), the dielectric shape): Cycles'
+// table_ggx_gen_schlick_s and table_ggx_gen_schlick_ior_s.
+enum class TableKind { kE, kEavg, kDfg, kSelNorm, kGenSchlickS, kGenSchlickIorS };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kHalfPi = 1.5707963267948966;
@@ -37,7 +43,11 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // ior = (1 + z^2) / (1 - z^2) (the coordinate Cycles looks its glass
 // tables up with, [Cycles]; E changes about evenly in it, and the whole
 // range from ior 1 (z = 0) to 100 (z = 0.99) fits one axis).
-enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ };
+// kSchlickZ is the exponent axis's warp (gen_schlick_s): z = 5 / (exponent
+// + 5) linear in t between z(min) and z(max) (exponent = inf is z = 0), and
+// exponent = 5 (1 - z) / z: Cycles' lookup coordinate, z = 1/2 at Schlick's
+// 5. The axis may run either way (Cycles' runs from inf down to 0).
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -112,6 +122,13 @@ struct BakeSpec {
   // internal reflection; the axis keeps the medium's ior.
   bool inverse = false;
   bool Glass() const { return model.kind == ModelKind::kGgxGlass; }
+  // gen_schlick_s: the third axis, the Schlick exponent (the default is
+  // Cycles': z = 5 / (exponent + 5) = k / 15 from exponent inf to 0, baked
+  // at z in [1e-4, 0.99], exponent 0.0505 to 49995). gen_schlick_ior_s
+  // takes the ior axis (in [1, 100], or to inf with a clamp).
+  Axis exponent{"exponent", 16, kInfinity, 0.0, Warp::kSchlickZ, Placement::kEdges, 5 * 0.01 / 0.99,
+                5 * (1 - 1e-4) / 1e-4};
+  bool GenSchlick() const { return table == TableKind::kGenSchlickS || table == TableKind::kGenSchlickIorS; }
   // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
   // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over
   // mu x phi_o x roughness x anisotropy, E_avg over roughness x anisotropy.

@@ -20,8 +20,9 @@
 namespace brdfbake {
 
 // What an output channel holds.
-enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kZero, kOne };
-const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "0", "1"
+// kS: the factor s of a gen_schlick table.
+enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kS, kZero, kOne };
+const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "s", "0", "1"
 
 const char* PixelTypeName(PixelType p);  // float, half, unorm16, unorm8
 

@@ -30,6 +30,7 @@
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
 #include "rules/ggx/azimuthal.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
+#include "rules/glass/gen_schlick.h"
 #include "rules/glass/glass_albedo.h"
 #include "rules/sel/sel_norm.h"
 #include "rules/sheen/sheen_albedo.h"
@@ -47,6 +48,8 @@ const char* TableName(TableKind t) {
     case TableKind::kEavg: return "E_avg";
     case TableKind::kDfg: return "dfg";
     case TableKind::kSelNorm: return "sel_norm";
+    case TableKind::kGenSchlickS: return "gen_schlick_s";
+    case TableKind::kGenSchlickIorS: return "gen_schlick_ior_s";
   }
   return "E";
 }
@@ -57,6 +60,7 @@ const char* WarpName(Warp w) {
     case Warp::kSqrt: return "sqrt";
     case Warp::kTail: return "tail";
     case Warp::kFresnelZ: return "fresnel-z";
+    case Warp::kSchlickZ: return "schlick-z";
   }
   return "linear";
 }
@@ -78,8 +82,11 @@ TableKind ParseTable(const std::string& s) {
   if (s == "E_avg") return TableKind::kEavg;
   if (s == "dfg") return TableKind::kDfg;
   if (s == "sel_norm") return TableKind::kSelNorm;
-  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg or sel_norm)" +
-      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm"}, {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}}));
+  if (s == "gen_schlick_s") return TableKind::kGenSchlickS;
+  if (s == "gen_schlick_ior_s") return TableKind::kGenSchlickIorS;
+  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or gen_schlick_ior_s)" +
+      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s"},
+                 {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}, {"gen_schlick", "gen_schlick_s"}}));
 }
 Warp ParseWarp(const std::string& s) {
   if (s == "linear") return Warp::kLinear;
@@ -87,8 +94,9 @@ Warp ParseWarp(const std::string& s) {
   if (s == "sqrt") return Warp::kSqrt;
   if (s == "tail") return Warp::kTail;
   if (s == "fresnel-z") return Warp::kFresnelZ;
-  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, or "
-      "fresnel-z for the ior axis)");
+  if (s == "schlick-z") return Warp::kSchlickZ;
+  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, "
+      "fresnel-z for the ior axis, or schlick-z for the exponent axis)");
 }
 Placement ParsePlacement(const std::string& s) {
   if (s == "centers") return Placement::kCenters;
@@ -127,6 +135,14 @@ double Axis::ValueAt(double fi) const {
     const double z = (1 - t) * z_of(min) + t * z_of(max), z2 = z * z;
     return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
   }
+  if (warp == Warp::kSchlickZ) {
+    // z = 5 / (exponent + 5) linear in t (z = 0 is exponent = inf).
+    auto z_of = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
+    if (t == 0) return min;
+    if (t == 1) return max;
+    const double z = (1 - t) * z_of(min) + t * z_of(max);
+    return z > 0 ? 5 * (1 - z) / z : kInfinity;
+  }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
@@ -147,6 +163,13 @@ std::string Axis::ToJson() const {
   if (warp == Warp::kTail) {
     j["map"] = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
                "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
+    nlohmann::json values = nlohmann::json::array();
+    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
+    j["values"] = values;
+  }
+  if (warp == Warp::kSchlickZ) {
+    j["map"] = "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent = 5 (1 - z) / z; "
+               "z = 0 is exponent = inf";
     nlohmann::json values = nlohmann::json::array();
     for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
     j["values"] = values;
@@ -192,6 +215,19 @@ void ValidateBakeSpec(const BakeSpec& spec) {
         std::string(IntegratorName(spec.integrator)) + ")");
   }
   if (spec.inverse && !glass) Bad("--inverse: only ggx-glass has an inside (light leaving the medium)");
+  const bool gen_schlick = spec.GenSchlick();
+  if (gen_schlick) {
+    const std::string table = TableName(spec.table);
+    if (m != ModelKind::kGgx) {
+      Bad("--model: " + table + " is the Fresnel factor of a GGX reflection lobe (give --model ggx; got '" +
+          spec.model.name() + "')");
+    }
+    if (spec.integrator != IntegratorKind::kQuadrature) {
+      Bad("--integrator: " + table + " tables are baked with the quadrature only (got " +
+          IntegratorName(spec.integrator) + ")");
+    }
+    if (spec.complement) Bad("--complement: " + table + " stores s itself");
+  }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
     Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
@@ -236,8 +272,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   for (const Axis* a : axes) {
     if (a->warp == Warp::kTail) Bad("--warp: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
-    if (a->warp == Warp::kFresnelZ) {
-      Bad("--warp: fresnel-z is the ior axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
+    if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
+      Bad("--warp: " + std::string(WarpName(a->warp)) + " is the " +
+          (a->warp == Warp::kFresnelZ ? "ior" : "exponent") + " axis's warp (the " + a->name +
+          " axis takes linear, square or sqrt)");
     }
     if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (a->placement == Placement::kEdges && a->size < 2) {
@@ -274,7 +312,28 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           ":" + ExactText(g.max) + ")");
     }
   }
-  if (glass) {
+  if (spec.table == TableKind::kGenSchlickS) {
+    const Axis& a = spec.exponent;
+    if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
+    if (a.placement == Placement::kEdges && a.size < 2) {
+      Bad("--size: edges placement needs at least 2 entries per axis");
+    }
+    if (a.warp != Warp::kSchlickZ && a.warp != Warp::kLinear) {
+      Bad("--warp: the exponent axis takes schlick-z (z = 5 / (exponent + 5), the default) or linear (got " +
+          std::string(WarpName(a.warp)) + ")");
+    }
+    // Either direction with schlick-z (Cycles' runs from inf down to 0);
+    // every value baked must be finite: inf needs a clamp.
+    const bool ordered = a.size == 1 || a.min != a.max;
+    const bool increasing = a.warp == Warp::kLinear ? a.min < a.max || a.size == 1 : true;
+    const bool finite = std::isfinite(std::min(std::max(a.min, a.max), a.clamp_max));
+    if (!(a.min >= 0) || !(a.max >= 0) || !ordered || !increasing || !finite ||
+        !(a.clamp_min >= 0 && a.clamp_min <= a.clamp_max)) {
+      Bad("--range: the exponent axis must satisfy 0 <= min, max <= inf, min != max (inf with the "
+          "schlick-z warp and a clamp; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
+    }
+  }
+  if (glass || spec.table == TableKind::kGenSchlickIorS) {
     const Axis& a = spec.ior;
     if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
     if (a.placement == Placement::kEdges && a.size < 2) {
@@ -485,6 +544,32 @@ TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
   return v;
 }
 
+// gen_schlick_s / gen_schlick_ior_s: the factor s at one texel by the
+// visible-normal rule of rules/glass/gen_schlick.h; below alpha 1e-4 the
+// mirror, whose one half vector is the normal: s = s_h(mu).
+TexelEstimate GenSchlickTexel(const BakeSpec& spec, double alpha, double mu, const GenSchlickShape& shape) {
+  TexelEstimate v;
+  const double m = std::max(mu, kMuMin);
+  if (alpha < kMinAlpha<double>) {
+    v.e = GenSchlickWeight(shape, m);
+    return v;
+  }
+  const RuleResult r = GenSchlickFactor(alpha, shape, m, spec.tolerance, spec.EffectiveSamples());
+  v.e = r.value;
+  v.err_e = r.error;
+  return v;
+}
+
+// The shape of s_h in slice k of a gen_schlick table: the exponent axis'
+// value or the dielectric shape at the ior axis' value, each clamped.
+GenSchlickShape GenSchlickSlice(const BakeSpec& spec, int k) {
+  if (spec.table == TableKind::kGenSchlickS) {
+    const Axis& a = spec.exponent;
+    return {std::clamp(a.Value(k), a.clamp_min, a.clamp_max), 1.0};
+  }
+  return {-1.0, std::min(spec.ior.Value(k), spec.ior.clamp_max)};
+}
+
 TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texel_seed) {
   const ModelKind m = spec.model.kind;
   if (m == ModelKind::kGgxGlass) return GlassTexel(spec, alpha, mu);
@@ -540,6 +625,16 @@ std::string ModelJson(const BakeSpec& spec) {
     return j.dump();
   }
   j["alpha"] = "roughness^2";
+  if (spec.GenSchlick()) {
+    j["definition"] = "isotropic GGX reflection lobe; s averages s_h(wo.h) over its visible normals "
+                      "([Heitz18] eq. 3), reflections below the surface counting 0 ([Cycles]'s "
+                      "generalized Schlick tables)";
+    j[spec.table == TableKind::kGenSchlickS ? "exponent" : "ior"] =
+        spec.table == TableKind::kGenSchlickS ? "the exponent axis (brdfbake.axes): s_h = (1 - wo.h)^exponent"
+                                              : "the ior axis (brdfbake.axes): s_h = clamp((F(ior, wo.h) - "
+                                                "F0) / (1 - F0), 0, 1)";
+    return j.dump();
+  }
   if (spec.Glass()) {
     j["definition"] = "rough dielectric over isotropic GGX ([Walter07]): reflection weighted by the "
                       "exact unpolarized dielectric Fresnel F(eta, wo.h), refraction by 1 - F with "
@@ -607,6 +702,18 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak of g, "
                  "worst pieces bisected; the tolerance applies to G",
                  "sum of |K15 - G7| of both rules");
+        break;
+      }
+      if (spec.GenSchlick()) {
+        describe("the visible normals of wo in the stretched configuration of [Heitz18]: polar "
+                 "angles (theta, phi) about the view on the projected lune, each ray cut where the "
+                 "reflection reaches the horizon (and, for an exponent above 40, at wo.h = 40 / "
+                 "exponent, beyond which (1 - wo.h)^exponent < e^-40; src/rules/glass/gen_schlick.h)",
+                 "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
+                 "Gauss-Kronrod 15 on pieces graded towards the curves and the lune's edge (double "
+                 "scalar code)",
+                 "3 x the sum over the phi pieces of |K15 - G7|, plus the rays' own sums carried "
+                 "through the Kronrod weights");
         break;
       }
       if (spec.Glass()) {
@@ -777,6 +884,8 @@ std::string IntegratorJson(const BakeSpec& spec) {
     j["smallest_alpha"] = "alpha < 1e-6 is evaluated at 1e-6";
   } else if (spec.Glass()) {
     j["smooth"] = "alpha < 1e-4 is the smooth interface: E = 1";
+  } else if (spec.GenSchlick()) {
+    j["mirror"] = "alpha < 1e-4 is a mirror: s = s_h(mu)";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
     j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
   }
@@ -1256,12 +1365,26 @@ int64_t TexelCount(const BakeSpec& spec) {
     const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
     return spec.table == TableKind::kEavg ? rs : rs * spec.mu.size * spec.phi.size;
   }
-  const int64_t slices = spec.Glass() ? spec.ior.size : spec.HasGammaAxis() ? spec.gamma.size : 1;
+  const int64_t slices = spec.Glass() || spec.table == TableKind::kGenSchlickIorS ? spec.ior.size
+                         : spec.table == TableKind::kGenSchlickS                ? spec.exponent.size
+                         : spec.HasGammaAxis()                                  ? spec.gamma.size
+                                                                                : 1;
   return slices * (spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
                                                   : int64_t(spec.mu.size) * spec.roughness.size);
 }
 
-const char* Definition(const std::string& meaning, bool glass) {
+const char* Definition(const std::string& meaning, const BakeSpec& spec) {
+  const bool glass = spec.Glass();
+  if (meaning == "s" && spec.table == TableKind::kGenSchlickS) {
+    return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over the visible normals h of a GGX "
+           "reflection lobe (r the reflection): the generalized Schlick Fresnel is mix(F0, F90, s); no "
+           "masking weight";
+  }
+  if (meaning == "s") {
+    return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, 1) 1{r.z > 0} dh over the "
+           "visible normals h of a GGX reflection lobe, F the exact dielectric Fresnel, F0 = ((ior - 1) / "
+           "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking weight";
+  }
   if (glass && meaning == "E") {
     return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
            "the rough dielectric, Fresnel included: reflection plus refraction";
@@ -1354,6 +1477,12 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       slice_specs[k].model.ior = spec.inverse ? 1 / ior : ior;
     }
   }
+  // gen_schlick per exponent or ior slice (GenSchlickSlice).
+  if (spec.GenSchlick()) {
+    t.axes.push_back(spec.table == TableKind::kGenSchlickS ? spec.exponent : spec.ior);
+    t.height *= t.axes.back().size;
+    slice_specs.assign(size_t(t.axes.back().size), spec);
+  }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel) {
     t.axes = {spec.alpha_x, spec.alpha_y};
@@ -1381,7 +1510,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     }
   }
   std::vector<std::string> meanings;
-  if (spec.table == TableKind::kE) {
+  if (spec.GenSchlick()) {
+    meanings = {"s"};
+  } else if (spec.table == TableKind::kE) {
     meanings = {spec.complement ? "1-E" : "E"};
   } else if (eavg) {
     meanings = {spec.complement ? "1-E_avg" : "E_avg"};
@@ -1403,7 +1534,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
         name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
       }
       if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
-      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec.Glass()), {}, {}, {}});
+      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec), {}, {}, {}});
     }
     if (spec.error_channel) {
       // In the table's layer when it has one (dfg., sel.): a reader that
@@ -1413,7 +1544,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       const std::string name = spec.table == TableKind::kDfg ? "dfg." + n + "_error"
                                : sel                         ? "sel." + n + "_error"
                                                              : "error";
-      t.channels.push_back({name, "error", Definition("error", false), {}, {}, {}});
+      t.channels.push_back({name, "error", Definition("error", spec), {}, {}, {}});
     }
     for (Channel& c : t.channels) {
       c.values.resize(size_t(total));
@@ -1495,9 +1626,10 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       } else {
         const int ry = y % ax_r.size, z = y / ax_r.size;
         const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
-        v = Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+        v = spec.GenSchlick() ? GenSchlickTexel(spec, r * r, mu, GenSchlickSlice(spec, z))
+                              : Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       }
-      if (spec.table == TableKind::kE) {
+      if (spec.table == TableKind::kE || spec.GenSchlick()) {
         const double e = std::clamp(v.e, 0.0, e_max);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;
         error[idx] = v.err_e;

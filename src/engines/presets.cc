@@ -185,8 +185,9 @@ std::vector<Preset> MakePresets() {
     // and clamped at 1e-4; ggx_Eavg over r; float C arrays.
     Preset c{"cycles",
              "Cycles' table_ggx_E (32x32, x = roughness, y = NoV, edges, both clamped at 1e-4), "
-             "table_ggx_Eavg (32) and the glass E (16x16x16 over roughness, NoV, z = F0^(1/4)) and "
-             "E_avg (16x16), entering and leaving, float C arrays in one header",
+             "table_ggx_Eavg (32), the glass E (16x16x16 over roughness, NoV, z = F0^(1/4)) and "
+             "E_avg (16x16), entering and leaving, and the generalized Schlick factors gen_schlick_ior_s "
+             "and gen_schlick_s (16x16x16), float C arrays in one header",
              {},
              "ggx_tables.h"};
     BakeSpec e = Spec(TableKind::kE, 32, 32, Placement::kEdges);
@@ -220,6 +221,21 @@ std::vector<Preset> MakePresets() {
       g.mu.clamp_min = 0;
       c.tables.push_back(Entry(g, Layout({{"E_avg", Source::kEavg}}, PixelType::kFloat), Container::kHeader, "",
                                stem + "Eavg"));
+    }
+    // The generalized Schlick factors (16x16x16, x = r, y = NoV, slices
+    // over z): table_ggx_gen_schlick_ior_s over the same z = F0^(1/4) as
+    // the glass tables, table_ggx_gen_schlick_s over z = 5 / (exponent +
+    // 5) = k / 15, exponent inf to 0, baked within z in [1e-4, 0.99] (the
+    // exponent axis' default).
+    for (const TableKind kind : {TableKind::kGenSchlickIorS, TableKind::kGenSchlickS}) {
+      BakeSpec g = Spec(kind, 16, 16, Placement::kEdges);
+      g.mu.clamp_min = g.roughness.clamp_min = 1e-4;
+      g.ior.size = 16;
+      g.ior.max = kInfinity;
+      g.ior.clamp_max = 1.9801 / 0.0199;
+      g.tolerance = 1e-6;
+      c.tables.push_back(Entry(g, Layout({{"s", Source::kS}}, PixelType::kFloat, true), Container::kHeader, "",
+                               std::string("table_ggx_") + TableName(kind)));
     }
     p.push_back(c);
   }

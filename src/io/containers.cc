@@ -54,6 +54,7 @@ struct SourceReader {
   const Channel* one_minus_eavg = FindMeaning(t, "1-E_avg");
   const Channel* scale = FindMeaning(t, "dfg.scale");
   const Channel* bias = FindMeaning(t, "dfg.bias");
+  const Channel* gen_schlick = FindMeaning(t, "s");
 
   bool Has(Source s) const {
     switch (s) {
@@ -63,6 +64,7 @@ struct SourceReader {
       case Source::kOneMinusEavg: return one_minus_eavg || eavg;
       case Source::kScale: return scale != nullptr;
       case Source::kBias: return bias != nullptr;
+      case Source::kS: return gen_schlick != nullptr;
       case Source::kZero:
       case Source::kOne: return true;
     }
@@ -86,6 +88,7 @@ struct SourceReader {
       case Source::kOneMinusEavg: return one_minus_eavg ? one_minus_eavg->values[i] : 1.0 - eavg->values[i];
       case Source::kScale: return scale->values[i];
       case Source::kBias: return bias->values[i];
+      case Source::kS: return gen_schlick->values[i];
       case Source::kZero: return 0.0;
       case Source::kOne: return 1.0;
     }
@@ -99,6 +102,7 @@ Source SourceOfMeaning(const std::string& m) {
   if (m == "E_avg") return Source::kEavg;
   if (m == "1-E_avg") return Source::kOneMinusEavg;
   if (m == "dfg.scale") return Source::kScale;
+  if (m == "s") return Source::kS;
   return Source::kBias;
 }
 
@@ -387,6 +391,7 @@ const char* SourceName(Source s) {
     case Source::kOneMinusEavg: return "1-E_avg";
     case Source::kScale: return "dfg.scale";
     case Source::kBias: return "dfg.bias";
+    case Source::kS: return "s";
     case Source::kZero: return "0";
     case Source::kOne: return "1";
   }
@@ -609,7 +614,10 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
       {"brdfbake.table", im.table_name.empty() ? std::string(TableName(t.spec.table)) : im.table_name},
       {"brdfbake.model", t.model_json},
       {"brdfbake.masking", MaskingName(t.spec.masking)},
-      {"brdfbake.fresnel", !im.fresnel.empty() ? im.fresnel : t.spec.Glass() ? "dielectric" : "one"},
+      {"brdfbake.fresnel", !im.fresnel.empty()   ? im.fresnel
+                           : t.spec.Glass()      ? "dielectric"
+                           : t.spec.GenSchlick() ? "generalized Schlick: mix(F0, F90, s)"
+                                                 : "one"},
       {"brdfbake.axes", axes.dump()},
       {"brdfbake.layout", layout},
       {"brdfbake.channels", channels.dump()},

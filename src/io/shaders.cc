@@ -27,7 +27,7 @@ std::string Lit(double v) {
 // The shader's parameter for a table axis.
 std::string ParameterName(const Axis& a) {
   if (a.name == "mu") return "NoV";
-  return a.name;  // roughness, phi_o, anisotropy, gamma, ior
+  return a.name;  // roughness, phi_o, anisotropy, gamma, ior, exponent
 }
 
 // One axis' texture coordinate in [0, 1] from its physical value, as
@@ -50,6 +50,12 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
     auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
     const double lo = z(a.min), hi = z(a.max);
     x = "(sqrt(abs(" + value + " - 1.0) / (" + value + " + 1.0)) - " + Lit(lo) + ") / " + Lit(hi - lo);
+  } else if (a.warp == Warp::kSchlickZ) {
+    // z = 5 / (exponent + 5) linear in t between the axis' ends (bake.h;
+    // z = 0 at exponent = inf).
+    auto z = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
+    const double lo = z(a.min), hi = z(a.max);
+    x = "(5.0 / (" + value + " + 5.0) - " + Lit(lo) + ") / " + Lit(hi - lo);
   } else {
     x = "(" + value + " - " + Lit(a.min) + ") / " + Lit(a.max - a.min);
   }
@@ -205,6 +211,9 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   if (formed) {
     type = syn.f1();
     result = "s.x";
+  } else if (t.spec.GenSchlick()) {
+    type = syn.f1();
+    result = get("s");
   } else if (dfg) {
     type = syn.f2();
     std::string scale = get("dfg.scale"), bias = get("dfg.bias"), e = get("E");

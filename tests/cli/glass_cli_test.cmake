@@ -97,6 +97,31 @@ string(FIND "${glsl}" "sqrt(abs(ior - 1.0) / (ior + 1.0))" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "glass.glsl does not invert the fresnel-z warp:\n${glsl}")
 endif()
+# The generalized Schlick factor s over an exponent or an ior axis: the
+# slices named in the summary, the schlick-z warp inverted by the lookup,
+# and what it refuses.
+run_tool(TRUE out err bake --table gen_schlick_s --size 3x3x4 --tolerance 1e-5 -o "${OUT}/gs.h" --shader glsl)
+if(NOT out MATCHES "wrote .*gen_schlick_s ggx 3x12 \\(4 exponent slices of 3 rows\\)")
+  message(FATAL_ERROR "bake --table gen_schlick_s: '${out}'")
+endif()
+file(READ "${OUT}/gs.glsl" glsl)
+string(FIND "${glsl}" "5.0 / (exponent + 5.0)" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "gs.glsl does not invert the schlick-z warp:\n${glsl}")
+endif()
+run_tool(TRUE out err bake --table gen_schlick_ior_s --size 3x3x2 --range ior=1.2:2 --tolerance 1e-5
+         -o "${OUT}/gsi.exr")
+if(NOT out MATCHES "wrote .*gen_schlick_ior_s ggx 3x6 \\(2 ior slices of 3 rows\\)")
+  message(FATAL_ERROR "bake --table gen_schlick_ior_s: '${out}'")
+endif()
+expect_error_matching("--model: gen_schlick_s is the Fresnel factor of a GGX" bake --table gen_schlick_s
+                      --model beckmann -o "${OUT}/bad.exr")
+expect_error_matching("--range: the exponent axis" bake --table gen_schlick_s --range exponent=inf:0
+                      --warp exponent=linear -o "${OUT}/bad.exr")
+expect_error_matching("--range: no exponent axis" bake --table gen_schlick_ior_s --range exponent=1:2
+                      -o "${OUT}/bad.exr")
+expect_error_matching("--complement" bake --table gen_schlick_s --complement -o "${OUT}/bad.exr")
+expect_error_matching("--size" bake --table gen_schlick_s --size 8x8 -o "${OUT}/bad.exr")
 file(GLOB leftovers "${OUT}/bad*" "${OUT}/.brdfbake-*")
 if(leftovers)
   message(FATAL_ERROR "files left behind: ${leftovers}")

@@ -186,7 +186,7 @@ std::vector<Case> AllCases() {
   std::vector<Case> cases;
   for (const Case& c : {PresetCase("three", 0), PresetCase("filament", 0), PresetCase("hdrp", 0),
                         PresetCase("bevy", 0), PresetCase("materialx", 0), PresetCase("cycles", 0),
-                        PresetCase("cycles", 1), PresetCase("cycles", 2), PresetCase("godot", 0), PresetCase("unreal", 0),
+                        PresetCase("cycles", 1), PresetCase("cycles", 2), PresetCase("cycles", 7), PresetCase("godot", 0), PresetCase("unreal", 0),
                         PresetCase("enterprise-pbr", 0), PresetCase("enterprise-pbr", 1)}) {
     if (PresetBuilt(FindPreset(c.preset))) cases.push_back(c);
   }
@@ -257,6 +257,7 @@ std::vector<double> ModelLookup(const Table& t, const Image& im, const std::vect
     const double scale = sc >= 0 ? s[sc] : s[e] - bias;
     return {scale, bias};
   }
+  if (t.spec.GenSchlick()) return {s[find("s")]};
   const bool eavg = t.spec.table == TableKind::kEavg;
   const int direct = find(eavg ? "E_avg" : "E");
   return {direct >= 0 ? s[direct] : 1 - s[find(eavg ? "1-E_avg" : "1-E")]};
@@ -390,6 +391,11 @@ double PointValue(const Axis& a, std::mt19937_64& rng, int* entry) {
     return 1.5 + std::exp(std::log(0.05) + uni(rng) * std::log(2e7));
   }
   const double lo = a.min, hi = a.max;
+  if (a.warp == Warp::kSchlickZ) {
+    // The exponent: z = 5 / (exponent + 5) uniform, sometimes below 0.
+    const double z = 0.001 + 0.998 * uni(rng);
+    return pick < 0.45 ? -0.2 * uni(rng) : 5 * (1 - z) / z;
+  }
   if (a.warp == Warp::kFresnelZ && std::isinf(hi)) {
     // An ior axis to inf (z = 1): z uniform, sometimes below the axis.
     const double z = 0.999 * uni(rng), ior = (1 + z * z) / (1 - z * z);
@@ -455,10 +461,10 @@ void CheckResults(const Case& c, const Baked& b, const Points& p, const std::vec
         flat += stride * size_t(p.entries[i][k]);
         stride *= size_t(t.axes[k].size);
       }
-      // dfg: (scale, bias); E, E_avg: the value (1 - a stored complement).
+      // dfg: (scale, bias); E, E_avg, s: the value (1 - a stored complement).
       for (const Channel& ch : t.channels) {
         if (ch.meaning == "dfg.scale" || ch.meaning == "dfg.bias" || ch.meaning == "E" ||
-            ch.meaning == "E_avg") {
+            ch.meaning == "E_avg" || ch.meaning == "s") {
           stored.push_back(ch.values[flat]);
         }
         if (ch.meaning == "1-E" || ch.meaning == "1-E_avg") stored.push_back(1 - ch.values[flat]);

@@ -5,9 +5,9 @@
 // independent integration over the half vector (tests/reference/
 // reference_albedo.h, tanh-sinh over theta_h and the arc of valid
 // azimuths, sharing no code with the rule, which integrates over the
-// visible normals' lune), its claimed error bounding the true error; and
-// against Cycles' shipped gen_schlick tables
-// (tests/data/cycles_glass_tables.json) within their Monte Carlo noise.
+// visible normals' lune), its claimed error bounding the true error.
+// Cycles' shipped gen_schlick tables are compared with the cycles preset's
+// in tests/bake/glass_table_test.cc.
 
 #include "rules/glass/gen_schlick.h"
 
@@ -16,8 +16,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "brdfbake/models/ggx.h"
@@ -104,62 +102,6 @@ TEST(GenSchlickTest, ClaimsBoundTheErrorOverAGrid) {
     }
   }
   std::printf("worst true error / claim %.3g\n", worst);
-}
-
-// Cycles' axes (cycles_glass_tables.json): r = clamp(i/15, 1e-4, 1),
-// alpha = r^2; mu = clamp(j/15, 1e-4, 1); z = clamp(k/15, 1e-4, 0.99),
-// the exponent 5 (1 - z) / z or the ior (1 + z^2) / (1 - z^2) (F0 = z^4).
-// Both are within the tables' noise of ours, which is 1e-4 to 1e-3 (2^20
-// samples each).
-// Roughness 0 is Cycles' smooth path: s = s_h(mu).
-TEST(GenSchlickTest, MatchesCyclesShippedTablesWithinTheirNoise) {
-  std::ifstream in(std::string(BRDFBAKE_TEST_DATA) + "/cycles_glass_tables.json");
-  ASSERT_TRUE(in) << "missing cycles_glass_tables.json";
-  const nlohmann::json j = nlohmann::json::parse(in);
-  for (const char* name : {"table_ggx_gen_schlick_s", "table_ggx_gen_schlick_ior_s"}) {
-    const bool ior_mode = std::string(name).find("ior") != std::string::npos;
-    const auto& data = j.at(name).at("data");
-    double sum2 = 0, worst = 0;
-    int n = 0;
-    for (int k = 0; k < 16; ++k) {
-      // The parameters in float, as the generator forms them: at k = 0 the
-      // ior (1 + 1e-8) / (1 - 1e-8) rounds to 1, whose s is 0 (in double
-      // it is 0.146 at the smooth path's grazing texel).
-      const float z = std::clamp(k / 15.0f, 1e-4f, 0.99f);
-      const float sqrt_f0 = z * z;
-      GenSchlickShape shape;
-      if (ior_mode) {
-        shape = {-1, double((1.0f + sqrt_f0) / (1.0f - sqrt_f0))};
-      } else {
-        shape = {double(5.0f * ((1.0f - z) / z)), 1};
-      }
-      // Every texel of every third slice, and the grazing and normal rows
-      // of the others.
-      for (int jj = 0; jj < 16; ++jj) {
-        if (k % 3 != 0 && jj != 0 && jj != 15) continue;
-        const double mu = std::clamp(jj / 15.0, 1e-4, 1.0);
-        for (int i = 0; i < 16; ++i) {
-          const double r = std::clamp(i / 15.0, 1e-4, 1.0);
-          const double ours = i == 0 ? GenSchlickWeight(shape, mu)
-                                     : GenSchlickFactor(r * r, shape, mu, 1e-6, 4000).value;
-          const double theirs = data[k][jj][i].get<double>();
-          const double d = std::abs(ours - theirs);
-          sum2 += d * d;
-          ++n;
-          worst = std::max(worst, d);
-        }
-      }
-    }
-    const double rms = std::sqrt(sum2 / n);
-    std::printf("%s: %d texels, RMS %.3g, max %.3g\n", name, n, rms, worst);
-    // Measured: gen_schlick_s RMS 3.6e-5, max 1.5e-3 (exponent 0.0505, r
-    // 1/15, mu 1, where ours converged to 1e-10 is 0.561056 and Cycles'
-    // float Monte Carlo 0.559516: (1 - wo.h)^0.05 rises steeply where
-    // the narrow lobe's h meets wo); gen_schlick_ior_s RMS 1.2e-6, max
-    // 1.2e-5 (its 6 printed decimals).
-    EXPECT_LT(rms, ior_mode ? 1e-5 : 1e-4) << name;
-    EXPECT_LT(worst, ior_mode ? 1e-4 : 2e-3) << name;
-  }
 }
 
 }  // namespace

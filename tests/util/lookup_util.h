@@ -30,12 +30,16 @@ double TextureBilinear(const At& at, int width, int height, double u, double v) 
 
 // The texture coordinate (in [0, 1]) at which axis `a` holds the value p.
 // The tail warp (gamma) is log-linear in u = (gamma - 1.5) / (gamma - 0.5);
-// the fresnel-z warp (ior) linear in z = sqrt(|ior - 1| / (ior + 1)).
+// the fresnel-z warp (ior) linear in z = sqrt(|ior - 1| / (ior + 1)), the
+// schlick-z warp (exponent) in z = 5 / (exponent + 5).
 inline double TextureCoordinate(const Axis& a, double p) {
   if (a.size == 1) return 0.5;
   double t;
   if (a.warp == Warp::kFresnelZ) {
     auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    t = std::clamp((z(p) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0);
+  } else if (a.warp == Warp::kSchlickZ) {
+    auto z = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
     t = std::clamp((z(p) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0);
   } else if (a.warp == Warp::kTail) {
     auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };

@@ -431,7 +431,9 @@ struct BakeOptions {
   void Add(CLI::App* a, bool report) {
     app = a;
     for_report = report;
-    app->add_option("--table,-t", table, "E | E_avg | dfg | sel_norm (with --model sel)");
+    app->add_option("--table,-t", table,
+                    "E | E_avg | dfg | sel_norm (with --model sel) | gen_schlick_s, gen_schlick_ior_s (the "
+                    "generalized Schlick factor s of GGX over mu x roughness x exponent or ior)");
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
                     "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm) | "
@@ -451,17 +453,20 @@ struct BakeOptions {
                         (report ? "16" : "32") + "); std without --gamma: WxHxD (E_avg: NxD) adds D "
                         "gamma slices over [1.501, inf]; ggx-aniso: mu x phi_o x roughness x anisotropy "
                         "(E_avg: roughness x anisotropy); ellipsoid: mu x phi_o; sel_norm: alpha_x x alpha_y; "
-                        "ggx-glass: mu x roughness x ior, default 32x32x32 (E_avg: roughness x ior)");
+                        "ggx-glass: mu x roughness x ior, default 32x32x32 (E_avg: roughness x ior); gen_schlick_s, "
+                        "gen_schlick_ior_s: mu x roughness x exponent or ior, default 16x16x16");
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
                     "(the gamma axis: gamma=tail, its only warp; the ior axis: ior=fresnel-z, the "
-                    "default, or ior=linear)")
+                    "default, or ior=linear; the exponent axis: exponent=schlick-z, the default, or "
+                    "exponent=linear)")
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
                     "gamma=min:max within [1.500001, inf], default 1.501:inf; phi_o in radians within "
                     "[0, pi/2] (ggx-aniso) or [0, 2 pi] (ellipsoid); ior=min:max within [1, 100], "
-                    "default 1:3 (ggx-glass)");
+                    "default 1:3 (ggx-glass); exponent=min:max, either way, default inf:0 (Cycles': z = 5 / "
+                    "(exponent + 5) = k / 15, baked within [0.0505, 49995])");
     app->add_option("--placement", placement, "edges | centers (texel centres for GPU bilinear)")
         ->capture_default_str();
     app->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
@@ -584,8 +589,9 @@ struct BakeOptions {
                                ? 0
                                : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const size_t plain = eavg ? 1 : 2;
+    const bool gen_schlick = spec.GenSchlick();
     if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso &&
-        spec.model.kind != brdfbake::ModelKind::kGgxGlass) {
+        spec.model.kind != brdfbake::ModelKind::kGgxGlass && !gen_schlick) {
       Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
           " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
     }
@@ -621,6 +627,17 @@ struct BakeOptions {
         spec.alpha_x.size = n[0];
         spec.alpha_y.size = n[1];
       }
+    } else if (gen_schlick) {
+      // mu x roughness x exponent (or ior).
+      const std::vector<int> n = !Given(app, "--size")
+                                     ? std::vector<int>{16, 16, 16}
+                                     : ParseSize(size, 3,
+                                                 spec.table == brdfbake::TableKind::kGenSchlickS
+                                                     ? "WxHxD (mu x roughness x exponent, e.g. 16x16x16)"
+                                                     : "WxHxD (mu x roughness x ior, e.g. 16x16x16)");
+      spec.mu.size = n[0];
+      spec.roughness.size = n[1];
+      (spec.table == brdfbake::TableKind::kGenSchlickS ? spec.exponent : spec.ior).size = n[2];
     } else if (glass) {
       // E: mu x roughness x ior; E_avg: roughness x ior.
       const std::vector<int> n =
@@ -677,6 +694,7 @@ struct BakeOptions {
     }
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
     spec.mu.placement = spec.roughness.placement = spec.gamma.placement = spec.ior.placement = pl;
+    spec.exponent.placement = pl;
     spec.phi.placement = spec.anisotropy.placement = pl;
     spec.alpha_x.placement = spec.alpha_y.placement = pl;
     // Per-axis settings: "value" for every axis of the table but gamma, or
@@ -694,7 +712,8 @@ struct BakeOptions {
     }
     std::vector<brdfbake::Axis*> named = axes;
     if (gamma_axis) named.push_back(&spec.gamma);
-    if (glass) named.push_back(&spec.ior);
+    if (glass || spec.table == brdfbake::TableKind::kGenSchlickIorS) named.push_back(&spec.ior);
+    if (spec.table == brdfbake::TableKind::kGenSchlickS) named.push_back(&spec.exponent);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
                         const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
       std::vector<std::string> seen;
@@ -716,13 +735,18 @@ struct BakeOptions {
                                    (gamma_axis ? " or gamma" : "");
             if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
             if (glass) expected = eavg ? "roughness or ior" : "mu, roughness or ior";
+            if (gen_schlick) {
+              expected = spec.table == brdfbake::TableKind::kGenSchlickS ? "mu, roughness or exponent"
+                                                                         : "mu, roughness or ior";
+            }
             if (sel) expected = "alpha_x or alpha_y";
             if (ellipsoid) expected = eavg ? "none (E_avg is one value)" : "mu or phi_o";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
                      ? std::string("no gamma axis (std without --gamma and a third --size entry has one)")
-                 : name == "ior" ? std::string("no ior axis (only ggx-glass has one)")
+                 : name == "ior" ? std::string("no ior axis (only ggx-glass and gen_schlick_ior_s have one)")
+                 : name == "exponent" ? std::string("no exponent axis (only gen_schlick_s has one)")
                                  : "unknown axis '" + name + "' (expected " + expected + ")"));
           }
         }
@@ -832,6 +856,10 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
   if (table.spec.Glass() && table.spec.table == brdfbake::TableKind::kE) {
     dims += " (" + std::to_string(table.spec.ior.size) + " ior slices of " +
             std::to_string(h / table.spec.ior.size) + " rows" + (table.spec.inverse ? ", inverse" : "") + ")";
+  }
+  if (table.spec.GenSchlick()) {
+    const brdfbake::Axis& a = table.axes.back();
+    dims += " (" + std::to_string(a.size) + " " + a.name + " slices of " + std::to_string(h / a.size) + " rows)";
   }
   std::printf("wrote %s: %s %s %s, %s integrator, baked in %.3f s, max abs error %.2e\n",
               OneLine(path).c_str(), what.c_str(), table.spec.model.name(), dims.c_str(),
