@@ -39,6 +39,8 @@ struct ProbeOptions {
   // materials' range within a wider engine axis): the cells that overlap
   // it, and its ends.
   double roughness_min = -kInfinity, roughness_max = kInfinity;
+  // The same along the ior axis (ggx-glass).
+  double ior_min = -kInfinity, ior_max = kInfinity;
 };
 
 struct ProbeResult {

@@ -25,6 +25,11 @@ bool MajorAxis(const Axis& a) { return a.name == "mu" || a.name == "roughness"; 
 // for the linear, square and sqrt warps: where a table is not smooth.
 double IndexOf(const Axis& a, double v) {
   double t = a.max > a.min ? std::clamp((v - a.min) / (a.max - a.min), 0.0, 1.0) : 0.5;
+  if (a.warp == Warp::kFresnelZ) {
+    // z = sqrt(|ior - 1| / (ior + 1)) linear in t (bake.h), 1 at ior = inf.
+    auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
+    t = z(a.max) > z(a.min) ? std::clamp((z(v) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0) : 0.5;
+  }
   if (a.warp == Warp::kSquare) t = std::sqrt(t);
   if (a.warp == Warp::kSqrt) t = t * t;
   return a.placement == Placement::kCenters ? t * a.size - 0.5 : t * (a.size - 1);
@@ -115,25 +120,30 @@ std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptio
     }
     AddMirrorCut(t.axes[size_t(kr)], strengths, &pos[size_t(kr)]);
   }
-  if (kr >= 0 && t.axes[size_t(kr)].size > 1 && (o.roughness_min > -kInfinity || o.roughness_max < kInfinity)) {
-    const Axis& ar = t.axes[size_t(kr)];
+  // Only the lookups within [vmin, vmax] along the axis `name`.
+  auto restrict = [&](const char* name, double vmin, double vmax, int probes) {
+    const int ka = AxisIndex(t, name);
+    if (ka < 0 || t.axes[size_t(ka)].size <= 1 || !(vmin > -kInfinity || vmax < kInfinity)) return;
+    const Axis& ar = t.axes[size_t(ka)];
     const int n = ar.size;
-    const double lo = IndexOf(ar, std::max(o.roughness_min, ar.min)), hi = IndexOf(ar, std::min(o.roughness_max, ar.max));
+    const double lo = IndexOf(ar, std::max(vmin, ar.min)), hi = IndexOf(ar, std::min(vmax, ar.max));
     std::vector<double> within;
-    for (double f : pos[size_t(kr)]) {
+    for (double f : pos[size_t(ka)]) {
       if (f >= lo && f <= hi) within.push_back(f);
     }
     // The midpoints of (up to `probes` of) the cells that overlap the range.
     const int c0 = std::clamp(int(std::floor(lo)), 0, n - 2), c1 = std::clamp(int(std::floor(hi)), 0, n - 2);
-    const int cells = c1 - c0 + 1, k = std::min(cells, o.probes);
+    const int cells = c1 - c0 + 1, k = std::min(cells, probes);
     for (int i = 0; i < k; ++i) {
       const double f = c0 + i * cells / k + 0.5;
       if (f >= lo && f <= hi) within.push_back(f);
     }
     within.push_back(lo);
     within.push_back(hi);
-    pos[size_t(kr)] = within;
-  }
+    pos[size_t(ka)] = within;
+  };
+  restrict("roughness", o.roughness_min, o.roughness_max, o.probes);
+  restrict("ior", o.ior_min, o.ior_max, o.minor_probes);
   return pos;
 }
 
@@ -165,7 +175,7 @@ std::vector<double> ExactTableValues(const Table& t, const std::vector<double>& 
   }
   if (s.Glass()) {
     // The slice's eta, as Bake sets it: ior, or 1 / ior inside the medium.
-    const double ior = value("ior", s.ior.min);
+    const double ior = std::min(value("ior", s.ior.min), s.ior.clamp_max);
     one.model.ior = s.inverse ? 1 / ior : ior;
   }
   // The stored range: [0, 1], or unbounded above for the lobes that do

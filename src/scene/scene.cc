@@ -37,6 +37,21 @@
 namespace brdfbake {
 namespace {
 
+// The tables a preset's engine samples, each once: "E, E_avg, ggx-glass
+// E, ..." (another model than GGX named before its table).
+std::string PresetTablesText(const Preset& preset) {
+  std::vector<std::string> names;
+  for (const PresetTable& pt : preset.tables) {
+    const ModelKind m = pt.spec.model.kind;
+    std::string name = TableName(pt.spec.table);
+    if (m != ModelKind::kGgx) name = std::string(pt.spec.model.name()) + " " + name;
+    if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  }
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
 std::string Num(double v) {
   char buf[40];
   std::snprintf(buf, sizeof(buf), "%.4g", v);
@@ -267,13 +282,14 @@ Scene LoadToml(const std::string& path) {
   }
   if (!s.engine.preset.empty()) {
     // The engine must sample one of the scene's tables.
-    std::string kinds;
     bool any = false;
     for (const PresetTable& pt : FindPreset(s.engine.preset).tables) {
-      kinds += std::string(kinds.empty() ? "" : ", ") + TableName(pt.spec.table);
       any |= std::find(s.engine.tables.begin(), s.engine.tables.end(), pt.spec.table) != s.engine.tables.end();
     }
-    if (!any) Bad(path + ": [engine]: field 'tables': engine preset '" + s.engine.preset + "' samples " + kinds + " only");
+    if (!any) {
+      Bad(path + ": [engine]: field 'tables': engine preset '" + s.engine.preset + "' samples " +
+          PresetTablesText(FindPreset(s.engine.preset)) + " only");
+    }
   }
   const toml::node* mats = root.get("material");
   if (!mats) Bad(path + ": no [[material]] entries");
@@ -777,16 +793,25 @@ constexpr double kSheenMinNoV = 1e-4;
 ModelKind EngineModel(ModelKind group_model) {
   return group_model == ModelKind::kCharlie ? ModelKind::kCharlie : ModelKind::kGgx;
 }
+// The groups of the transmissive materials' glass tables: light entering
+// the medium (eta = ior), and for a volume also leaving it (eta = 1 / ior).
+constexpr const char* kGlassGroup = "ggx-glass";
+constexpr const char* kGlassInverseGroup = "ggx-glass_inverse";
+bool IsGlassGroup(const std::string& g) { return g == kGlassGroup || g == kGlassInverseGroup; }
+
 ModelKind EngineModel(const std::string& group) {
-  return group == kSheenGroup ? ModelKind::kCharlie : ModelKind::kGgx;
+  return group == kSheenGroup ? ModelKind::kCharlie : IsGlassGroup(group) ? ModelKind::kGgxGlass : ModelKind::kGgx;
 }
 
-// The preset's table of a kind for the engine's model: GGX, or the Charlie
+// The preset's table of a kind for the engine's model: GGX, the Charlie
 // sheen with a masking visibility (conty-kulla, or the engine's variant of
-// it); nullptr if it has none.
-const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx) {
+// it), or ggx-glass entering or (`inverse`) leaving the medium; nullptr if
+// it has none.
+const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx,
+                               bool inverse = false) {
   for (const PresetTable& pt : preset.tables) {
     if (pt.spec.table != kind || pt.spec.model.kind != model || pt.over != PresetTable::Over::kNone) continue;
+    if (pt.spec.inverse != inverse) continue;
     if (model == ModelKind::kCharlie && !SheenHasLambda(pt.spec.model.visibility)) continue;
     return &pt;
   }
@@ -845,15 +870,10 @@ std::vector<TableKind> SheenKinds(const Scene& scene) {
   return kinds;
 }
 
-// The groups of the transmissive materials' glass tables: light entering
-// the medium (eta = ior), and for a volume also leaving it (eta = 1 / ior).
-constexpr const char* kGlassGroup = "ggx-glass";
-constexpr const char* kGlassInverseGroup = "ggx-glass_inverse";
-bool IsGlassGroup(const std::string& g) { return g == kGlassGroup || g == kGlassInverseGroup; }
-
 // The glass groups' table kinds: E and E_avg among the scene's tables (a
 // dielectric's Fresnel is inside its E: no dfg split), whatever the
-// preset (no engine preset ships glass tables: they are brdfbake's own).
+// preset (the engine's own glass tables where it ships them, brdfbake's
+// own files otherwise).
 std::vector<TableKind> GlassKinds(const Scene& scene) {
   std::vector<TableKind> kinds;
   const bool any = std::any_of(scene.materials.begin(), scene.materials.end(),
@@ -876,7 +896,11 @@ struct Slot {
 
 // The slot of a planned table of `group`.
 Slot SlotOf(const Scene& scene, TableKind kind, const std::string& group, bool anisotropic) {
-  bool generic = anisotropic || IsGlassGroup(group);
+  bool generic = anisotropic;
+  if (IsGlassGroup(group)) {
+    generic = scene.engine.preset.empty() || !EngineTable(FindPreset(scene.engine.preset), kind, ModelKind::kGgxGlass,
+                                                          group == kGlassInverseGroup);
+  }
   if (group == kSheenGroup && !scene.engine.preset.empty()) {
     generic = !EngineTable(FindPreset(scene.engine.preset), kind, ModelKind::kCharlie);
   }
@@ -907,10 +931,14 @@ Preset ScenePreset(const Scene& scene, const std::vector<Slot>& slots, const std
     const Slot& slot = slots[i];
     PresetTable t;
     const ModelKind model = EngineModel(slot.group);
-    const PresetTable* et = slot.generic ? nullptr : EngineTable(engine, slot.kind, model);
+    const PresetTable* et =
+        slot.generic ? nullptr : EngineTable(engine, slot.kind, model, slot.group == kGlassInverseGroup);
     if (et) {
       t = *et;
-      if (slot.group != (model == ModelKind::kCharlie ? kSheenGroup : "ggx")) {
+      const bool own_group = model == ModelKind::kCharlie    ? slot.group == kSheenGroup
+                             : model == ModelKind::kGgxGlass ? true
+                                                             : slot.group == "ggx";
+      if (!own_group) {
         if (!t.file.empty()) {
           const std::filesystem::path f(t.file);
           t.file = f.stem().string() + "_" + slot.group + f.extension().string();
@@ -1359,6 +1387,31 @@ class Planner {
     return spec;
   }
 
+  // The engine's own glass table of `kind` (entering, or leaving the
+  // medium), or nullptr.
+  const PresetTable* GlassEngine(TableKind kind, bool inverse) const {
+    return preset_ ? EngineTable(*preset_, kind, ModelKind::kGgxGlass, inverse) : nullptr;
+  }
+
+  // The engine's glass table as it ships (its axes, size, tolerance and
+  // layout), its lookup error probed over the materials' roughness and ior
+  // range only.
+  PlannedTable PlanEngineGlass(const PresetTable& et, const GlassBox& b, const std::string& label) const {
+    ProbeOptions probe;
+    probe.probes = 8;
+    probe.minor_probes = 4;
+    probe.roughness_min = b.rmin;
+    probe.roughness_max = b.rmax;
+    probe.ior_min = b.ior_min;
+    probe.ior_max = b.ior_max;
+    const ImageLayout l = et.layout;
+    const BakeSpec spec = et.spec;
+    PlannedTable p = Climb({{spec.mu.size, spec.mu.warp}}, [&](const Rung&) { return spec; },
+                           [l](const Table&) { return l; }, probe, 0.0, scene_.engine.error_target, label, progress_);
+    p.size_fixed = et.size_fixed;
+    return p;
+  }
+
   // The smallest rung that meets the target: E up to the size limit and
   // 2^15 texels (a glass texel is a two-dimensional integral, thousands of
   // rays), mu square only (linear was 5 to 15 times worse at every size
@@ -1561,9 +1614,8 @@ void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
     if (c == Container::kPng) Bad("--format png: a scene's tables are written as exr, header, js, ktx2, dds or inc");
   }
   if (!e.preset.empty() && SceneKinds(*scene).empty()) {
-    std::string kinds;
-    for (const PresetTable& pt : FindPreset(e.preset).tables) kinds += std::string(kinds.empty() ? "" : ", ") + TableName(pt.spec.table);
-    Bad("engine preset '" + e.preset + "' samples " + kinds + ", none of the scene's tables");
+    Bad("engine preset '" + e.preset + "' samples " + PresetTablesText(FindPreset(e.preset)) +
+        ", none of the scene's tables");
   }
 }
 
@@ -1716,13 +1768,18 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
     if (glass_kinds.empty()) {
       d += "; the engine samples no E or E_avg table, so no glass table is baked";
     } else {
-      d += ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), over the materials' ior range "
-           "only, the ior axis in z = F0^(1/4)";
+      bool own = planner.preset() != nullptr;
+      for (TableKind k : glass_kinds) own &= planner.GlassEngine(k, false) != nullptr;
+      d += own ? ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), the ior axis in z = F0^(1/4)"
+               : ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), over the materials' ior range "
+                 "only, the ior axis in z = F0^(1/4)";
       d += volume ? "; a volume (KHR_materials_volume) also lets light leave the medium: the inverse tables "
                     "(eta = 1 / ior, total internal reflection beyond the critical angle)"
                   : "; thin-walled (no KHR_materials_volume): light only enters, eta = ior";
       if (planner.preset()) {
-        d += "; engine preset '" + scene.engine.preset + "' ships no glass table: brdfbake's own EXR files";
+        d += own ? "; engine preset '" + scene.engine.preset + "' ships its own glass tables: those, at the "
+                       "engine's axes and size, their lookup error measured over the materials' range"
+                 : "; engine preset '" + scene.engine.preset + "' ships no glass table: brdfbake's own EXR files";
       }
     }
     d += "; its specular reflection looks up the isotropic GGX tables as the opaque materials do";
@@ -1731,7 +1788,10 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       if (inverse && !volume) continue;
       const std::string group = inverse ? kGlassInverseGroup : kGlassGroup;
       for (TableKind k : glass_kinds) {
-        PlannedTable p = planner.PlanGlass(planner.GlassBase(k, box, inverse), std::string(TableName(k)) + " " + group);
+        const std::string label = std::string(TableName(k)) + " " + group;
+        const PresetTable* et = planner.GlassEngine(k, inverse);
+        PlannedTable p = et ? planner.PlanEngineGlass(*et, box, label)
+                            : planner.PlanGlass(planner.GlassBase(k, box, inverse), label);
         p.group = group;
         for (const SceneMaterial* m : glass) {
           if (!inverse || m->volume) p.materials.push_back(m->name);

@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include "brdfbake/presets.h"
 #include "brdfbake/scene.h"
 #include "util/file_util.h"
 #include "util/scene_util.h"
@@ -121,6 +122,47 @@ TEST(SceneGlassTest, GltfTransmissionGetsTheGlassTablesOverItsIorRange) {
   const std::vector<std::string> possible = SceneOutputFiles(s, dir + "/out");
   for (const std::string& f : files) {
     EXPECT_NE(std::find(possible.begin(), possible.end(), f), possible.end()) << f;
+  }
+}
+
+// Under a preset whose engine ships glass tables (cycles), the transmissive
+// materials get those, at the engine's axes and size (16^3, ior to inf),
+// written into the engine's header with its names; the plan measures their
+// lookup error over the materials' range.
+TEST(SceneGlassTest, EngineGlassTablesServeUnderCycles) {
+  if (!ModelBuilt(ModelKind::kGgxGlass)) GTEST_SKIP() << "glass is not built (BRDFBAKE_MODELS)";
+  const std::string dir = Scratch("cycles");
+  WriteText(dir + "/g.gltf", kGlassGltf);
+  Scene s = LoadScene(dir + "/g.gltf");
+  ApplySceneOverrides(&s, {{"--preset", "cycles"}});
+  s.engine.error_target = 0.08;
+  const ScenePlan plan = PlanScene(s);
+  const Preset& cycles = FindPreset("cycles");
+  int glass = 0;
+  for (const PlannedTable& p : plan.tables) {
+    if (p.spec.model.kind != ModelKind::kGgxGlass) continue;
+    ++glass;
+    EXPECT_EQ(p.file, "ggx_tables.h");
+    EXPECT_TRUE(p.size_fixed);
+    EXPECT_EQ(p.spec.ior.size, 16);
+    EXPECT_EQ(p.spec.ior.max, kInfinity);
+    EXPECT_EQ(p.spec.roughness.size, 16);
+    bool engine = false;
+    for (const PresetTable& pt : cycles.tables) {
+      engine |= pt.spec.model.kind == ModelKind::kGgxGlass && pt.spec.table == p.spec.table &&
+                pt.spec.inverse == p.spec.inverse;
+    }
+    EXPECT_TRUE(engine) << TableName(p.spec.table) << (p.spec.inverse ? " inverse" : "");
+  }
+  EXPECT_EQ(glass, 4) << PlanText(s, plan);
+  const std::string decisions = Joined(plan.decisions);
+  EXPECT_NE(decisions.find("engine preset 'cycles' ships its own glass tables"), std::string::npos) << decisions;
+  std::filesystem::create_directories(dir + "/out");
+  WriteScenePlan(s, plan, dir + "/out");
+  const std::string header = test::Slurp(dir + "/out/ggx_tables.h");
+  for (const char* want : {"table_ggx_E[", "table_ggx_glass_E[4096]", "table_ggx_glass_Eavg[256]",
+                           "table_ggx_glass_inv_E[4096]", "table_ggx_glass_inv_Eavg[256]"}) {
+    EXPECT_NE(header.find(want), std::string::npos) << want;
   }
 }
 
