@@ -66,6 +66,9 @@ struct Report {
 using ReportLog = std::function<void(const std::string&)>;
 
 Report RunReport(const ReportSpec& spec, const ReportLog& log = nullptr);
+// The checks RunReport makes first (throws std::invalid_argument, one
+// line), for a caller to make before it creates any output.
+void ValidateReportSpec(const ReportSpec& spec);
 
 // The isotropic GGX width a collapse gives for alpha_t, alpha_b and the
 // view's azimuth phi_o from the tangent: "geometric-mean" sqrt(alpha_t

@@ -1728,6 +1728,7 @@ EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double a
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed) {
   ValidateBakeSpec(spec);
+  if (spec.GenSchlick()) Bad(std::string("one texel of ") + TableName(spec.table) + " needs its slice: bake the table");
   const TexelEstimate v = Texel(spec, AlphaFromRoughness(roughness), mu, Mix64(spec.seed ^ texel_seed));
   return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
 }

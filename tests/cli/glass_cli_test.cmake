@@ -122,6 +122,8 @@ expect_error_matching("--range: no exponent axis" bake --table gen_schlick_ior_s
                       -o "${OUT}/bad.exr")
 expect_error_matching("--complement" bake --table gen_schlick_s --complement -o "${OUT}/bad.exr")
 expect_error_matching("--size" bake --table gen_schlick_s --size 8x8 -o "${OUT}/bad.exr")
+expect_error_matching("report: gen_schlick_s has one integrator" report --table gen_schlick_s --size 4x4x4
+                      -o "${OUT}/bad.csv")
 file(GLOB leftovers "${OUT}/bad*" "${OUT}/.brdfbake-*")
 if(leftovers)
   message(FATAL_ERROR "files left behind: ${leftovers}")

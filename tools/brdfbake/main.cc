@@ -1092,7 +1092,8 @@ int RunReportCommand(const BakeOptions& opts, int repeats, double reference_tole
   }
   rs.reference_tolerance = reference_tolerance;
   if (rs.repeats < 1 || rs.repeats > 100) Bad("--repeats must be in [1, 100]");
-  // The directory is made and checked before the work starts.
+  // The request is checked, then the directory made, before the work.
+  brdfbake::ValidateReportSpec(rs);
   MakeOutputDirectory(opts.output);
   const bool aniso = rs.table.Anisotropic();
   const std::vector<const char*> files =
