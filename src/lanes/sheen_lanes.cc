@@ -17,6 +17,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "kernels/math_f64-inl.h"
 #include "kernels/sheen-inl.h"
 #include "lanes/lanes_common-inl.h"
 
@@ -27,8 +28,12 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // ScalarCharlieNodes with a piece's 15 nodes in lanes (the 16th at the
 // piece's centre, of weight 0) and its Kronrod and Gauss sums in lanes:
-// cos, exp, expm1 and log by Highway's (a few ulp in double), Lambda(NoL)
-// by CharlieLogLambda of kernels/sheen-inl.h, Lambda(mu) once per texel.
+// expm1 and log by Highway's (a few ulp in double), the arcs' cos(phi_h)
+// and Lambda's two exponentials by CosF64ZeroToPi and ExpF64Unguarded
+// (kernels/math_f64-inl.h, within 5e-16 and 3e-16 relative: the
+// phi_h nodes lie in [0, pi], the exponents within +-250), Lambda(NoL) as
+// CharlieLogLambda of kernels/sheen-inl.h computes it, Lambda(mu) once
+// per texel.
 // In z = NoL^power, z is the x^p of Lambda's L(x) = a / (1 + b x^p) + d x
 // + e (CharlieLPower is the fit's p), and every NoL there is below 1/2
 // (Lambda's lower branch), so L takes z itself.
@@ -187,7 +192,7 @@ struct SimdCharlieNodes {
     HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch],
         jns[16 * kCharlieBatch], jds[16 * kCharlieBatch], ls[16 * kCharlieBatch];
     for (size_t i = 0; i < n_phi; i += N) {
-      const V y = hn::MulAdd(t.r, hn::Cos(d, hn::Load(d, xs + i)), t.p);
+      const V y = hn::MulAdd(t.r, CosF64ZeroToPi(d, hn::Load(d, xs + i)), t.p);
       hn::Store(y, d, ys + i);
       hn::Store(hn::Sub(hn::Mul(t.two_c, y), t.mu), d, nols + i);
       hn::Store(one, d, jns + i);
@@ -235,16 +240,16 @@ struct SimdCharlieNodes {
         const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
         const auto low = hn::Lt(nl, half);
         const V w = hn::IfThenElse(low, nl, hn::Sub(one, nl));
-        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), hn::Exp(d, hn::Mul(c.p, hn::Load(d, ls + i))));
+        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i))));
         const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
-        hn::Store(hn::Exp(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
+        hn::Store(ExpF64Unguarded(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
       }
       for (size_t i = n_phi; i < n; i += N) {
         const V nol = hn::Load(d, nols + i);
         const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
         const V log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e),
                                      hn::Div(c.a, hn::MulAdd(c.b, hn::Load(d, xs + i), one)));
-        hn::Store(hn::Exp(d, log_lambda), d, ls + i);
+        hn::Store(ExpF64Unguarded(d, log_lambda), d, ls + i);
       }
     }
     for (size_t i = 0; i < n; i += N) {
