@@ -6,6 +6,7 @@
 // kernels/sheen-inl.h that the float batch API runs too.
 
 #include <algorithm>
+#include <cfloat>
 #include <cstddef>
 
 #include "lanes/quadrature_simd.h"
@@ -44,8 +45,9 @@ struct SimdCharlieNodes {
   double mu;
   double lambda_mu;  // conty-kulla: Lambda(mu)
 
-  // ScalarCharlieNodes::Outer in lanes: Highway's Sin, Cos, Acos, Log1p,
-  // Log and Exp, D by CharlieDCos2.
+  // ScalarCharlieNodes::Outer in lanes: CosF64ZeroToPi (theta_h lies in
+  // [0, 3 pi / 4]), Highway's Sin, Acos, Log1p, Log and Exp, D by
+  // CharlieDCos2.
   void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -57,7 +59,7 @@ struct SimdCharlieNodes {
     for (size_t i = 0; i < 16; i += N) {
       const V x = hn::Load(d, in + i);
       const V th = hn::Mul(theta_max, hn::NegMulAdd(x, x, one));
-      const V cv = hn::Cos(d, th), sv_th = hn::Sin(d, th);
+      const V cv = CosF64ZeroToPi(d, th), sv_th = hn::Sin(d, th);
       const V w = hn::Mul(hn::Mul(CharlieDCos2(d, c, hn::Mul(cv, cv)), sv_th),
                           hn::Mul(hn::Set(d, 2 * o.theta_max), x));
       const V p = hn::Mul(mu, cv), r = hn::Mul(s_mu, sv_th), two_c = hn::Add(cv, cv);
@@ -189,8 +191,8 @@ struct SimdCharlieNodes {
                         double nol_scale) const {
     const size_t N = hn::Lanes(d);
     const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
-    HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch],
-        jns[16 * kCharlieBatch], jds[16 * kCharlieBatch], ls[16 * kCharlieBatch];
+    HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch], jns[16 * kCharlieBatch], jds[16 * kCharlieBatch],
+        ls[16 * kCharlieBatch], ws[16 * kCharlieBatch];
     for (size_t i = 0; i < n_phi; i += N) {
       const V y = hn::MulAdd(t.r, CosF64ZeroToPi(d, hn::Load(d, xs + i)), t.p);
       hn::Store(y, d, ys + i);
@@ -229,17 +231,24 @@ struct SimdCharlieNodes {
     // in phi, and in z, z itself (every NoL there is below 1/2).
     if (!c.neubelt) {
       const V half = hn::Set(d, 0.5);
-      for (size_t i = 0; i < n_phi; i += N) {
-        const V nol = hn::Load(d, nols + i);
-        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
-        const V w = hn::IfThenElse(hn::Lt(nl, half), nl, hn::Sub(one, nl));
-        hn::Store(hn::Log(d, hn::IfThenElse(hn::Gt(w, zero), w, one)), d, ls + i);
-      }
+      // w with the branch in its sign (+ below 1/2, - from 1/2 on, where
+      // w = 1 - NoL may be 0), and log w: a w below DBL_MIN is taken as
+      // DBL_MIN, whose x^p (p > 0.16: below 1e-51, so that 1 + b x^p
+      // rounds to 1 for both) leaves L unchanged, and the log needs no
+      // subnormal case (Highway's impl::Log without it; the same values
+      // for normal w).
       for (size_t i = 0; i < n_phi; i += N) {
         const V nol = hn::Load(d, nols + i);
         const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
         const auto low = hn::Lt(nl, half);
         const V w = hn::IfThenElse(low, nl, hn::Sub(one, nl));
+        hn::Store(hn::IfThenElse(low, w, hn::Neg(w)), d, ws + i);
+        hn::Store(hn::impl::Log<DF64, V, false>(d, hn::Max(w, hn::Set(d, DBL_MIN))), d, ls + i);
+      }
+      for (size_t i = 0; i < n_phi; i += N) {
+        const V sw = hn::Load(d, ws + i);
+        const auto low = hn::Gt(sw, zero);
+        const V w = hn::Abs(sw);
         const V xp = hn::IfThenElseZero(hn::Gt(w, zero), ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i))));
         const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
         hn::Store(ExpF64Unguarded(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
