@@ -6,6 +6,7 @@
 // kernels/sheen-inl.h that the float batch API runs too.
 
 #include <algorithm>
+#include <cfloat>
 #include <cstddef>
 
 #include "lanes/quadrature_simd.h"
@@ -17,6 +18,7 @@
 #include <hwy/highway.h>
 #include <hwy/contrib/math/math-inl.h>
 
+#include "kernels/math_f64-inl.h"
 #include "kernels/sheen-inl.h"
 #include "lanes/lanes_common-inl.h"
 
@@ -27,8 +29,12 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // ScalarCharlieNodes with a piece's 15 nodes in lanes (the 16th at the
 // piece's centre, of weight 0) and its Kronrod and Gauss sums in lanes:
-// cos, exp, expm1 and log by Highway's (a few ulp in double), Lambda(NoL)
-// by CharlieLogLambda of kernels/sheen-inl.h, Lambda(mu) once per texel.
+// expm1 and log by Highway's (a few ulp in double), the arcs' cos(phi_h)
+// and Lambda's two exponentials by CosF64ZeroToPi and ExpF64Unguarded
+// (kernels/math_f64-inl.h, within 5e-16 and 3e-16 relative: the
+// phi_h nodes lie in [0, pi], the exponents within +-250), Lambda(NoL) as
+// CharlieLogLambda of kernels/sheen-inl.h computes it, Lambda(mu) once
+// per texel.
 // In z = NoL^power, z is the x^p of Lambda's L(x) = a / (1 + b x^p) + d x
 // + e (CharlieLPower is the fit's p), and every NoL there is below 1/2
 // (Lambda's lower branch), so L takes z itself.
@@ -39,8 +45,9 @@ struct SimdCharlieNodes {
   double mu;
   double lambda_mu;  // conty-kulla: Lambda(mu)
 
-  // ScalarCharlieNodes::Outer in lanes: Highway's Sin, Cos, Acos, Log1p,
-  // Log and Exp, D by CharlieDCos2.
+  // ScalarCharlieNodes::Outer in lanes: CosF64ZeroToPi (theta_h lies in
+  // [0, 3 pi / 4]), Highway's Sin, Acos, Log1p, Log and Exp, D by
+  // CharlieDCos2.
   void Outer(const CharlieOuterSetup& o, const double* sv, CharlieOuterNodes* out) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -52,7 +59,7 @@ struct SimdCharlieNodes {
     for (size_t i = 0; i < 16; i += N) {
       const V x = hn::Load(d, in + i);
       const V th = hn::Mul(theta_max, hn::NegMulAdd(x, x, one));
-      const V cv = hn::Cos(d, th), sv_th = hn::Sin(d, th);
+      const V cv = CosF64ZeroToPi(d, th), sv_th = hn::Sin(d, th);
       const V w = hn::Mul(hn::Mul(CharlieDCos2(d, c, hn::Mul(cv, cv)), sv_th),
                           hn::Mul(hn::Set(d, 2 * o.theta_max), x));
       const V p = hn::Mul(mu, cv), r = hn::Mul(s_mu, sv_th), two_c = hn::Add(cv, cv);
@@ -184,10 +191,10 @@ struct SimdCharlieNodes {
                         double nol_scale) const {
     const size_t N = hn::Lanes(d);
     const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
-    HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch],
-        jns[16 * kCharlieBatch], jds[16 * kCharlieBatch], ls[16 * kCharlieBatch];
+    HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch], jns[16 * kCharlieBatch], jds[16 * kCharlieBatch],
+        ls[16 * kCharlieBatch], ws[16 * kCharlieBatch];
     for (size_t i = 0; i < n_phi; i += N) {
-      const V y = hn::MulAdd(t.r, hn::Cos(d, hn::Load(d, xs + i)), t.p);
+      const V y = hn::MulAdd(t.r, CosF64ZeroToPi(d, hn::Load(d, xs + i)), t.p);
       hn::Store(y, d, ys + i);
       hn::Store(hn::Sub(hn::Mul(t.two_c, y), t.mu), d, nols + i);
       hn::Store(one, d, jns + i);
@@ -224,27 +231,34 @@ struct SimdCharlieNodes {
     // in phi, and in z, z itself (every NoL there is below 1/2).
     if (!c.neubelt) {
       const V half = hn::Set(d, 0.5);
-      for (size_t i = 0; i < n_phi; i += N) {
-        const V nol = hn::Load(d, nols + i);
-        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
-        const V w = hn::IfThenElse(hn::Lt(nl, half), nl, hn::Sub(one, nl));
-        hn::Store(hn::Log(d, hn::IfThenElse(hn::Gt(w, zero), w, one)), d, ls + i);
-      }
+      // w with the branch in its sign (+ below 1/2, - from 1/2 on, where
+      // w = 1 - NoL may be 0), and log w: a w below DBL_MIN is taken as
+      // DBL_MIN, whose x^p (p > 0.16: below 1e-51, so that 1 + b x^p
+      // rounds to 1 for both) leaves L unchanged, and the log needs no
+      // subnormal case (Highway's impl::Log without it; the same values
+      // for normal w).
       for (size_t i = 0; i < n_phi; i += N) {
         const V nol = hn::Load(d, nols + i);
         const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
         const auto low = hn::Lt(nl, half);
         const V w = hn::IfThenElse(low, nl, hn::Sub(one, nl));
-        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), hn::Exp(d, hn::Mul(c.p, hn::Load(d, ls + i))));
+        hn::Store(hn::IfThenElse(low, w, hn::Neg(w)), d, ws + i);
+        hn::Store(hn::impl::Log<DF64, V, false>(d, hn::Max(w, hn::Set(d, DBL_MIN))), d, ls + i);
+      }
+      for (size_t i = 0; i < n_phi; i += N) {
+        const V sw = hn::Load(d, ws + i);
+        const auto low = hn::Gt(sw, zero);
+        const V w = hn::Abs(sw);
+        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i))));
         const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
-        hn::Store(hn::Exp(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
+        hn::Store(ExpF64Unguarded(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
       }
       for (size_t i = n_phi; i < n; i += N) {
         const V nol = hn::Load(d, nols + i);
         const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
         const V log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e),
                                      hn::Div(c.a, hn::MulAdd(c.b, hn::Load(d, xs + i), one)));
-        hn::Store(hn::Exp(d, log_lambda), d, ls + i);
+        hn::Store(ExpF64Unguarded(d, log_lambda), d, ls + i);
       }
     }
     for (size_t i = 0; i < n; i += N) {

@@ -8,7 +8,8 @@
 // [1e-8, 30], uniformly over [0, 30], at the subnormal and overflow edges,
 // and at a = 0, negative a, +-inf and NaN, and against its scalar twin
 // BeckmannNdf<double>::UnitLambda; erfcx(a) over [0, 12] and [1e-10,
-// 1e150]. Each check asserts the bound documented
+// 1e150]; exp(x) over [-700, 700] without a range guard; cos(x) over [0,
+// pi]. Each check asserts the bound documented
 // beside the kernel and prints the observed maximum.
 
 #include <algorithm>
@@ -176,6 +177,63 @@ inline const std::vector<Ref>& ErfcxRefs() {
   return refs;
 }
 
+// exp(x): x uniform over [-700, 700] and over [-40, 40] (the sheen
+// Lambda's exponents), with random low bits, plus the ends and ties of
+// the reduction (x = (k + 1/2) ln 2).
+inline const std::vector<double>& ExpUnguardedArgs() {
+  static const std::vector<double> args = [] {
+    std::vector<double> v;
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> jitter(0.0, 1.0);
+    const int kN = 30000;
+    for (int i = 0; i <= kN; ++i) v.push_back(-700.0 + 1400.0 * (i + jitter(rng)) / kN);
+    for (int i = 0; i <= kN; ++i) v.push_back(-40.0 + 80.0 * (i + jitter(rng)) / kN);
+    for (double e : {-700.0, 700.0, 0.0, -0.0, 1e-300, -1e-300, 1e-17}) v.push_back(e);
+    for (int k = -20; k <= 20; ++k) v.push_back((k + 0.5) * 0.69314718055994531);
+    return v;
+  }();
+  return args;
+}
+
+inline const std::vector<Ref>& ExpUnguardedRefs() {
+  static const std::vector<Ref> refs = [] {
+    std::vector<Ref> r;
+    for (double x : ExpUnguardedArgs()) r.push_back(ToRef(exp(Big(x))));
+    return r;
+  }();
+  return refs;
+}
+
+// cos(x): x uniform over [0, pi] with random low bits, within 1e-6 of pi/2
+// (where cos vanishes), near 0 and pi, and the ends.
+inline const std::vector<double>& CosArgs() {
+  static const std::vector<double> args = [] {
+    std::vector<double> v;
+    std::mt19937_64 rng(19);
+    std::uniform_real_distribution<double> jitter(0.0, 1.0);
+    const double pi = 3.141592653589793;
+    const int kN = 50000;
+    for (int i = 0; i < kN; ++i) v.push_back(pi * (i + jitter(rng)) / kN);
+    for (int i = 0; i < 5000; ++i) v.push_back(0.5 * pi + 2e-6 * (jitter(rng) - 0.5));
+    for (int i = 0; i < 5000; ++i) v.push_back(std::pow(10.0, -12.0 * jitter(rng)));
+    for (int i = 0; i < 5000; ++i) v.push_back(pi - std::pow(10.0, -12.0 * jitter(rng)));
+    for (double e : {0.0, pi, 0.5 * pi, std::nextafter(0.5 * pi, 0.0), std::nextafter(0.5 * pi, 4.0), 1e-300}) {
+      v.push_back(e);
+    }
+    return v;
+  }();
+  return args;
+}
+
+inline const std::vector<Ref>& CosRefs() {
+  static const std::vector<Ref> refs = [] {
+    std::vector<Ref> r;
+    for (double x : CosArgs()) r.push_back(ToRef(cos(Big(x))));
+    return r;
+  }();
+  return refs;
+}
+
 }  // namespace simd_math_f64_test
 }  // namespace brdfbake
 
@@ -205,6 +263,10 @@ constexpr double kExpNegSqRel = 3.3e-16;   // ExpNegSquareF64
 constexpr double kLambdaRel = 1.5e-15;     // BeckmannLambdaF64
 constexpr double kLambdaBound = 2e-15;
 constexpr double kErfcxRel = 1e-15;       // ErfcxF64
+constexpr double kExpRel = 3e-16;         // ExpF64Unguarded
+constexpr double kCosRel = 5e-16;         // CosF64ZeroToPi: rel |cos| + kCosAbs
+constexpr double kCosAbs = 1e-32;
+constexpr double kCosAbsMax = 5e-16;
 constexpr double kSubnormalUlp = 4.9406564584124654e-324;
 
 void CheckExpNegSquareF64() {
@@ -303,6 +365,41 @@ void CheckErfcxF64() {
               hwy::TargetName(HWY_TARGET), worst, worst_a, kErfcxRel, as.size());
 }
 
+void CheckExpF64Unguarded() {
+  const std::vector<double>& xs = simd_math_f64_test::ExpUnguardedArgs();
+  const std::vector<Ref>& refs = simd_math_f64_test::ExpUnguardedRefs();
+  const auto got = MapF64(xs, [](auto d, auto v) { return ExpF64Unguarded(d, v); });
+  double worst = 0, worst_x = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    const double rel = AbsErr(got[i], refs[i]) / refs[i].hi;
+    ASSERT_LE(rel, kExpRel) << "exp x=" << xs[i] << " got " << got[i] << " ref " << refs[i].hi;
+    if (rel > worst) worst = rel, worst_x = xs[i];
+  }
+  std::printf("%s: ExpF64Unguarded max rel error %.3g at x=%.17g (bound %.2g, %zu points)\n",
+              hwy::TargetName(HWY_TARGET), worst, worst_x, kExpRel, xs.size());
+}
+
+void CheckCosF64ZeroToPi() {
+  const std::vector<double>& xs = simd_math_f64_test::CosArgs();
+  const std::vector<Ref>& refs = simd_math_f64_test::CosRefs();
+  const auto got = MapF64(xs, [](auto d, auto v) { return CosF64ZeroToPi(d, v); });
+  double worst_abs = 0, worst_rel = 0, worst_x = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    const double err = AbsErr(got[i], refs[i]);
+    ASSERT_LE(err, kCosRel * std::abs(refs[i].hi) + kCosAbs)
+        << "cos x=" << xs[i] << " got " << got[i] << " ref " << refs[i].hi;
+    ASSERT_LE(err, kCosAbsMax) << "cos x=" << xs[i];
+    worst_abs = std::max(worst_abs, err);
+    if (refs[i].hi != 0 && err / std::abs(refs[i].hi) > worst_rel) {
+      worst_rel = err / std::abs(refs[i].hi), worst_x = xs[i];
+    }
+  }
+  std::printf(
+      "%s: CosF64ZeroToPi max abs error %.3g (bound %.2g), max rel error %.3g at x=%.17g "
+      "(bound %.2g + %.0e, %zu points)\n",
+      hwy::TargetName(HWY_TARGET), worst_abs, kCosAbsMax, worst_rel, worst_x, kCosRel, kCosAbs, xs.size());
+}
+
 }  // namespace
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
@@ -314,5 +411,7 @@ HWY_BEFORE_TEST(SimdMathF64Test);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckExpNegSquareF64);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckBeckmannLambdaF64);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckErfcxF64);
+HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckExpF64Unguarded);
+HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckCosF64ZeroToPi);
 }  // namespace brdfbake
 #endif
