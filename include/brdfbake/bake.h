@@ -17,6 +17,7 @@
 #include "brdfbake/estimate.h"
 #include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/models/dielectric.h"
 #include "brdfbake/pixel_type.h"
 
 namespace brdfbake {
@@ -37,7 +38,11 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // ior = (1 + z^2) / (1 - z^2) (the coordinate Cycles looks its glass
 // tables up with, [Cycles]; E changes about evenly in it, and the whole
 // range from ior 1 (z = 0) to 100 (z = 0.99) fits one axis).
-enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ };
+// kTwoSided is an ior axis over both sides of an interface (edges, an even
+// size N = 2H, min < 1 < max): entries 0 to H - 1 hold eta < 1 with 1 / eta
+// linear from 1 / min down to 1, entries H to N - 1 eta linear from 1 up to
+// max; both middle entries are 1 (OpenPBR's layout, [OpenPbrBsdf]).
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kTwoSided };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -108,6 +113,9 @@ struct BakeSpec {
   // inverse tables): each slice is baked at eta = 1 / ior < 1, with total
   // internal reflection; the axis keeps the medium's ior.
   bool inverse = false;
+  // ggx-glass: which lobes E counts (models/dielectric.h): reflection plus
+  // refraction (the default), the reflection alone or the refraction alone.
+  DielectricPart part = DielectricPart::kBoth;
   bool Glass() const { return model.kind == ModelKind::kGgxGlass; }
   // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
   // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over

@@ -57,6 +57,7 @@ const char* WarpName(Warp w) {
     case Warp::kSqrt: return "sqrt";
     case Warp::kTail: return "tail";
     case Warp::kFresnelZ: return "fresnel-z";
+    case Warp::kTwoSided: return "two-sided";
   }
   return "linear";
 }
@@ -87,8 +88,9 @@ Warp ParseWarp(const std::string& s) {
   if (s == "sqrt") return Warp::kSqrt;
   if (s == "tail") return Warp::kTail;
   if (s == "fresnel-z") return Warp::kFresnelZ;
+  if (s == "two-sided") return Warp::kTwoSided;
   Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, or "
-      "fresnel-z for the ior axis)");
+      "fresnel-z or two-sided for the ior axis)");
 }
 Placement ParsePlacement(const std::string& s) {
   if (s == "centers") return Placement::kCenters;
@@ -127,6 +129,15 @@ double Axis::ValueAt(double fi) const {
     const double z = (1 - t) * z_of(min) + t * z_of(max), z2 = z * z;
     return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
   }
+  if (warp == Warp::kTwoSided) {
+    // The fractional index u (edges, N = 2H): 1 / eta linear from 1 / min
+    // at u = 0 to 1 at H - 1, eta linear from 1 at H to max at N - 1.
+    const double u = placement == Placement::kEdges ? fi : t * (size - 1);
+    const double h = size / 2;
+    if (u <= h - 1) return 1 / (1 + (1 / min - 1) * ((h - 1 - u) / (h - 1)));
+    if (u >= h) return 1 + (max - 1) * ((u - h) / (h - 1));
+    return 1;
+  }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
@@ -148,6 +159,14 @@ std::string Axis::ToJson() const {
                "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
     nlohmann::json values = nlohmann::json::array();
     for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
+    j["values"] = values;
+  }
+  if (warp == Warp::kTwoSided) {
+    j["map"] =
+        "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
+        "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
+    nlohmann::json values = nlohmann::json::array();
+    for (int i = 0; i < size; ++i) values.push_back(Value(i));
     j["values"] = values;
   }
   if (warp == Warp::kFresnelZ) {
@@ -191,6 +210,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
         std::string(IntegratorName(spec.integrator)) + ")");
   }
   if (spec.inverse && !glass) Bad("--inverse: only ggx-glass has an inside (light leaving the medium)");
+  if (spec.part != DielectricPart::kBoth && !glass) {
+    Bad("--part: only ggx-glass has reflection and refraction parts (got --part " +
+        std::string(DielectricPartName(spec.part)) + ")");
+  }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
     Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
@@ -279,12 +302,23 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     if (a.placement == Placement::kEdges && a.size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
     }
-    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear) {
-      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default) or linear (got " +
+    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {
+      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default), linear or two-sided (got " +
           std::string(WarpName(a.warp)) + ")");
     }
+    if (a.warp == Warp::kTwoSided) {
+      if (a.placement != Placement::kEdges || a.size < 4 || a.size % 2 != 0) {
+        Bad("--size: a two-sided ior axis has edges placement and an even size of at least 4 (got " +
+            std::to_string(a.size) + ", " + PlacementName(a.placement) + ")");
+      }
+      if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) || !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
+        Bad("--range: a two-sided ior axis must satisfy 0.01 <= min < 1 < max <= 100 (got " + ExactText(a.min) + ":" +
+            ExactText(a.max) + ")");
+      }
+      if (spec.inverse) Bad("--inverse: a two-sided ior axis holds both sides already");
+    }
     const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
-    if (!(a.min >= 1) || !(a.max <= kMaxFresnelIndex) || !ordered) {
+    if (a.warp != Warp::kTwoSided && (!(a.min >= 1) || !(a.max <= kMaxFresnelIndex) || !ordered)) {
       Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
           "eta = 1/ior: --inverse; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
@@ -462,19 +496,18 @@ TexelEstimate SheenQuadrature(const BakeSpec& spec, double alpha, double mu) {
 
 // ggx-glass: E of reflection plus refraction by the visible-normal rule
 // of rules/glass/glass_albedo.h at eta = spec.model.ior; below alpha 1e-4
-// the smooth interface, whose E is exactly 1.
+// the smooth interface, whose E is exactly 1 (its reflection F(eta, mu),
+// its refraction 1 - F).
 TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
   TexelEstimate v;
   if (alpha < kMinAlpha<double>) {
-    v.e = 1;
+    v.e = SmoothGlassAlbedo(spec.model.ior, mu, spec.part).value;
     return v;
   }
   const double m = std::max(mu, kMuMin);
   const int n = spec.EffectiveSamples();
-  const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m,
-                                                   spec.tolerance, n)
-                                 : GlassAlbedo(alpha, spec.model.ior, spec.masking, m,
-                                               spec.tolerance, n);
+  const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part)
+                                 : GlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part);
   v.e = r.value;
   v.err_e = r.error;
   return v;
@@ -544,6 +577,16 @@ std::string ModelJson(const BakeSpec& spec) {
                               "internal reflection beyond the critical angle)"
                             : "ior: the view outside, light entering the medium";
     j["ior"] = "the ior axis (brdfbake.axes)";
+    if (spec.ior.warp == Warp::kTwoSided) {
+      j["eta"] =
+          "ior: the view outside the medium for ior >= 1, inside it for ior < 1 (total internal "
+          "reflection beyond the critical angle)";
+    }
+    if (spec.part != DielectricPart::kBoth) {
+      j["part"] = spec.part == DielectricPart::kReflection
+                      ? "reflection: the reflection lobe alone, weighted by F (the energy the interface reflects)"
+                      : "transmission: the refraction lobe alone, weighted by 1 - F";
+    }
     return j.dump();
   }
   if (spec.model.kind == ModelKind::kCharlie) {
@@ -756,9 +799,9 @@ std::string IntegratorJson(const BakeSpec& spec) {
                    "pieces [0, 1/4], [1/4, 1], the worst bisected until the error estimate "
                    "meets the tolerance; E at each node from the integrator above; error: "
                    "sum of |K15 - G7| plus the propagated E error";
-      if (spec.Glass() && spec.inverse) {
+      if (spec.Glass() && (spec.inverse || spec.ior.warp == Warp::kTwoSided)) {
         j["E_avg"] = j["E_avg"].get<std::string>() +
-                     "; each slice also cut at the critical cosine sqrt(1 - eta^2) (s = its "
+                     "; each slice with eta < 1 also cut at the critical cosine sqrt(1 - eta^2) (s = its "
                      "square root), the pieces on either side mapped quadratically towards it";
       }
     } else {
@@ -771,7 +814,10 @@ std::string IntegratorJson(const BakeSpec& spec) {
   if (spec.model.kind == ModelKind::kCharlie) {
     j["smallest_alpha"] = "alpha < 1e-6 is evaluated at 1e-6";
   } else if (spec.Glass()) {
-    j["smooth"] = "alpha < 1e-4 is the smooth interface: E = 1";
+    j["smooth"] = spec.part == DielectricPart::kBoth ? "alpha < 1e-4 is the smooth interface: E = 1"
+                  : spec.part == DielectricPart::kReflection
+                      ? "alpha < 1e-4 is the smooth interface: E = F(eta, mu)"
+                      : "alpha < 1e-4 is the smooth interface: E = 1 - F(eta, mu)";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
     j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
   }
@@ -1208,7 +1254,9 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
     return {r.value, r.error};
   }
   if (spec.integrator == IntegratorKind::kQuadrature) {
-    if (spec.Glass() && spec.model.ior < 1 && alpha >= kMinAlpha<double>) return GlassEavg(spec, alpha);
+    if (spec.Glass() && spec.model.ior < 1 && (alpha >= kMinAlpha<double> || spec.part != DielectricPart::kBoth)) {
+      return GlassEavg(spec, alpha);
+    }
     return AdaptiveEavg([&](double mu) { return Texel(spec, alpha, mu, 0); }, spec.tolerance,
                         StdEavgGrading(spec));
   }
@@ -1256,7 +1304,15 @@ int64_t TexelCount(const BakeSpec& spec) {
                                                   : int64_t(spec.mu.size) * spec.roughness.size);
 }
 
-const char* Definition(const std::string& meaning, bool glass) {
+const char* Definition(const std::string& meaning, bool glass, DielectricPart part = DielectricPart::kBoth) {
+  if (glass && meaning == "E" && part == DielectricPart::kReflection) {
+    return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
+           "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
+  }
+  if (glass && meaning == "E" && part == DielectricPart::kTransmission) {
+    return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
+           "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
+  }
   if (glass && meaning == "E") {
     return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
            "the rough dielectric, Fresnel included: reflection plus refraction";
@@ -1398,7 +1454,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
         name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
       }
       if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
-      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec.Glass()), {}, {}, {}});
+      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec.Glass(), spec.part), {}, {}, {}});
     }
     if (spec.error_channel) {
       // In the table's layer when it has one (dfg., sel.): a reader that
