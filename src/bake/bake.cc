@@ -800,8 +800,9 @@ std::string IntegratorJson(const BakeSpec& spec) {
                    "meets the tolerance; E at each node from the integrator above; error: "
                    "sum of |K15 - G7| plus the propagated E error";
       if (spec.Glass() && (spec.inverse || spec.ior.warp == Warp::kTwoSided)) {
-        j["E_avg"] = j["E_avg"].get<std::string>() +
-                     "; each slice with eta < 1 also cut at the critical cosine sqrt(1 - eta^2) (s = its "
+        j["E_avg"] = j["E_avg"].get<std::string>() + "; each slice" +
+                     (spec.inverse ? "" : " with eta < 1") +
+                     " also cut at the critical cosine sqrt(1 - eta^2) (s = its "
                      "square root), the pieces on either side mapped quadratically towards it";
       }
     } else {
