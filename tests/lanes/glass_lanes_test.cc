@@ -155,7 +155,7 @@ TEST(GlassLanesTest, AgreesWithTheScalarReferenceOnEveryTarget) {
 // and texel by texel, with the same bounds as the sum: both sides of the
 // interface, next to the critical cosine of eta = 1/1.5 (0.745356),
 // grazing and tiny roughness, both maskings.
-TEST(GlassLanesTest, PartsAgreeWithTheScalarReferenceOnEveryTarget) {
+TEST(GlassLanesTest, EachPartAgreesWithTheScalarReferenceOnEveryTarget) {
   const double etas[] = {0.4, 1 / 1.5, 1.0, 1.5, 2.5};
   const double alphas[] = {1e-4, 0.04, 0.3, 1.0};
   const double mus[] = {1e-7, 1e-3, 0.3, 0.745356, 1.0};

@@ -100,7 +100,7 @@ TEST(GlassAlbedoTest, AgreesWithIndependentIntegration) {
 // and across the two-sided ior axis's range (0.4 to 2.5). Each part's
 // claim bounds its true error, and the parts add up to the sum's value
 // within the claims.
-TEST(GlassAlbedoTest, PartsAgreeWithIndependentIntegration) {
+TEST(GlassAlbedoTest, EachPartAgreesWithIndependentIntegration) {
   struct PartCase {
     double alpha, eta, mu;
     Masking masking;
