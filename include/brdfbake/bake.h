@@ -17,6 +17,7 @@
 #include "brdfbake/estimate.h"
 #include "brdfbake/model.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/models/dielectric.h"
 #include "brdfbake/pixel_type.h"
 
 namespace brdfbake {
@@ -47,7 +48,11 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // + 5) linear in t between z(min) and z(max) (exponent = inf is z = 0), and
 // exponent = 5 (1 - z) / z: Cycles' lookup coordinate, z = 1/2 at Schlick's
 // 5. The axis may run either way (Cycles' runs from inf down to 0).
-enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ };
+// kTwoSided is an ior axis over both sides of an interface (edges, an even
+// size N = 2H, min < 1 < max): entries 0 to H - 1 hold eta < 1 with 1 / eta
+// linear from 1 / min down to 1, entries H to N - 1 eta linear from 1 up to
+// max; both middle entries are 1 (OpenPBR's layout, [OpenPbrBsdf]).
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ, kTwoSided };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -121,6 +126,9 @@ struct BakeSpec {
   // inverse tables): each slice is baked at eta = 1 / ior < 1, with total
   // internal reflection; the axis keeps the medium's ior.
   bool inverse = false;
+  // ggx-glass: which lobes E counts (models/dielectric.h): reflection plus
+  // refraction (the default), the reflection alone or the refraction alone.
+  DielectricPart part = DielectricPart::kBoth;
   bool Glass() const { return model.kind == ModelKind::kGgxGlass; }
   // gen_schlick_s: the third axis, the Schlick exponent (the default is
   // Cycles': z = 5 / (exponent + 5) = k / 15 from exponent inf to 0, baked

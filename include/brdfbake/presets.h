@@ -21,6 +21,7 @@ enum class EngineForm {
   kGeneric,              // brdfbake's container as it is
   kThreeDfgModule,       // three.js src/renderers/shaders/DFGLUTData.js: export getDFGLUT()
   kEnterprisePbrHeader,  // Enterprise PBR res/pbrlut.hpp: extern arrays, PBRLUT_IMPLEMENTATION
+  kOpenPbrEnergyArrays,  // OpenPBR impl/data/openpbr_energy_arrays.h: unorm16 OpenPBR_*_Array
 };
 
 struct PresetTable {

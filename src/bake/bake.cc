@@ -61,6 +61,7 @@ const char* WarpName(Warp w) {
     case Warp::kTail: return "tail";
     case Warp::kFresnelZ: return "fresnel-z";
     case Warp::kSchlickZ: return "schlick-z";
+    case Warp::kTwoSided: return "two-sided";
   }
   return "linear";
 }
@@ -95,8 +96,9 @@ Warp ParseWarp(const std::string& s) {
   if (s == "tail") return Warp::kTail;
   if (s == "fresnel-z") return Warp::kFresnelZ;
   if (s == "schlick-z") return Warp::kSchlickZ;
+  if (s == "two-sided") return Warp::kTwoSided;
   Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, "
-      "fresnel-z for the ior axis, or schlick-z for the exponent axis)");
+      "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent axis)");
 }
 Placement ParsePlacement(const std::string& s) {
   if (s == "centers") return Placement::kCenters;
@@ -143,6 +145,15 @@ double Axis::ValueAt(double fi) const {
     const double z = (1 - t) * z_of(min) + t * z_of(max);
     return z > 0 ? 5 * (1 - z) / z : kInfinity;
   }
+  if (warp == Warp::kTwoSided) {
+    // The fractional index u (edges, N = 2H): 1 / eta linear from 1 / min
+    // at u = 0 to 1 at H - 1, eta linear from 1 at H to max at N - 1.
+    const double u = placement == Placement::kEdges ? fi : t * (size - 1);
+    const double h = size / 2;
+    if (u <= h - 1) return 1 / (1 + (1 / min - 1) * ((h - 1 - u) / (h - 1)));
+    if (u >= h) return 1 + (max - 1) * ((u - h) / (h - 1));
+    return 1;
+  }
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
@@ -172,6 +183,14 @@ std::string Axis::ToJson() const {
                "z = 0 is exponent = inf";
     nlohmann::json values = nlohmann::json::array();
     for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
+    j["values"] = values;
+  }
+  if (warp == Warp::kTwoSided) {
+    j["map"] =
+        "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
+        "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
+    nlohmann::json values = nlohmann::json::array();
+    for (int i = 0; i < size; ++i) values.push_back(Value(i));
     j["values"] = values;
   }
   if (warp == Warp::kFresnelZ) {
@@ -227,6 +246,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           IntegratorName(spec.integrator) + ")");
     }
     if (spec.complement) Bad("--complement: " + table + " stores s itself");
+  }
+  if (spec.part != DielectricPart::kBoth && !glass) {
+    Bad("--part: only ggx-glass has reflection and refraction parts (got --part " +
+        std::string(DielectricPartName(spec.part)) + ")");
   }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
@@ -339,19 +362,35 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     if (a.placement == Placement::kEdges && a.size < 2) {
       Bad("--size: edges placement needs at least 2 entries per axis");
     }
-    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear) {
-      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default) or linear (got " +
+    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {
+      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default), linear or two-sided (got " +
           std::string(WarpName(a.warp)) + ")");
+    }
+    if (a.warp == Warp::kTwoSided) {
+      if (a.placement != Placement::kEdges || a.size < 4 || a.size % 2 != 0) {
+        Bad("--size: a two-sided ior axis has edges placement and an even size of at least 4 (got " +
+            std::to_string(a.size) + ", " + PlacementName(a.placement) + ")");
+      }
+      if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) || !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
+        Bad("--range: a two-sided ior axis must satisfy 0.01 <= min < 1 < max <= 100 (got " + ExactText(a.min) + ":" +
+            ExactText(a.max) + ")");
+      }
+      if (spec.inverse) Bad("--inverse: a two-sided ior axis holds both sides already");
     }
     const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
     // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
-    // clamp of at most 100 bakes its last slices.
+    // clamp of at most 100 bakes its last slices; a two-sided axis holds
+    // both sides of the interface.
     const double top = std::min(a.max, a.clamp_max);
-    if (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max)) {
+    if (a.warp != Warp::kTwoSided &&
+        (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max))) {
       Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
           "eta = 1/ior: --inverse; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
     if (std::isinf(a.max) && a.warp != Warp::kFresnelZ) Bad("--range: an ior axis to inf needs the fresnel-z warp");
+    if (spec.table == TableKind::kGenSchlickIorS && a.warp == Warp::kTwoSided) {
+      Bad("--warp: gen_schlick_ior_s is over ior >= 1 (the dielectric shape outside the medium): no two-sided axis");
+    }
   }
   if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");
   if (spec.integrator == IntegratorKind::kQuadrature && spec.samples > 4096) {
@@ -526,19 +565,18 @@ TexelEstimate SheenQuadrature(const BakeSpec& spec, double alpha, double mu) {
 
 // ggx-glass: E of reflection plus refraction by the visible-normal rule
 // of rules/glass/glass_albedo.h at eta = spec.model.ior; below alpha 1e-4
-// the smooth interface, whose E is exactly 1.
+// the smooth interface, whose E is exactly 1 (its reflection F(eta, mu),
+// its refraction 1 - F).
 TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
   TexelEstimate v;
   if (alpha < kMinAlpha<double>) {
-    v.e = 1;
+    v.e = SmoothGlassAlbedo(spec.model.ior, mu, spec.part).value;
     return v;
   }
   const double m = std::max(mu, kMuMin);
   const int n = spec.EffectiveSamples();
-  const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m,
-                                                   spec.tolerance, n)
-                                 : GlassAlbedo(alpha, spec.model.ior, spec.masking, m,
-                                               spec.tolerance, n);
+  const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part)
+                                 : GlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part);
   v.e = r.value;
   v.err_e = r.error;
   return v;
@@ -644,6 +682,16 @@ std::string ModelJson(const BakeSpec& spec) {
                               "internal reflection beyond the critical angle)"
                             : "ior: the view outside, light entering the medium";
     j["ior"] = "the ior axis (brdfbake.axes)";
+    if (spec.ior.warp == Warp::kTwoSided) {
+      j["eta"] =
+          "ior: the view outside the medium for ior >= 1, inside it for ior < 1 (total internal "
+          "reflection beyond the critical angle)";
+    }
+    if (spec.part != DielectricPart::kBoth) {
+      j["part"] = spec.part == DielectricPart::kReflection
+                      ? "reflection: the reflection lobe alone, weighted by F (the energy the interface reflects)"
+                      : "transmission: the refraction lobe alone, weighted by 1 - F";
+    }
     return j.dump();
   }
   if (spec.model.kind == ModelKind::kCharlie) {
@@ -868,9 +916,10 @@ std::string IntegratorJson(const BakeSpec& spec) {
                    "pieces [0, 1/4], [1/4, 1], the worst bisected until the error estimate "
                    "meets the tolerance; E at each node from the integrator above; error: "
                    "sum of |K15 - G7| plus the propagated E error";
-      if (spec.Glass() && spec.inverse) {
-        j["E_avg"] = j["E_avg"].get<std::string>() +
-                     "; each slice also cut at the critical cosine sqrt(1 - eta^2) (s = its "
+      if (spec.Glass() && (spec.inverse || spec.ior.warp == Warp::kTwoSided)) {
+        j["E_avg"] = j["E_avg"].get<std::string>() + "; each slice" +
+                     (spec.inverse ? "" : " with eta < 1") +
+                     " also cut at the critical cosine sqrt(1 - eta^2) (s = its "
                      "square root), the pieces on either side mapped quadratically towards it";
       }
     } else {
@@ -883,7 +932,10 @@ std::string IntegratorJson(const BakeSpec& spec) {
   if (spec.model.kind == ModelKind::kCharlie) {
     j["smallest_alpha"] = "alpha < 1e-6 is evaluated at 1e-6";
   } else if (spec.Glass()) {
-    j["smooth"] = "alpha < 1e-4 is the smooth interface: E = 1";
+    j["smooth"] = spec.part == DielectricPart::kBoth ? "alpha < 1e-4 is the smooth interface: E = 1"
+                  : spec.part == DielectricPart::kReflection
+                      ? "alpha < 1e-4 is the smooth interface: E = F(eta, mu)"
+                      : "alpha < 1e-4 is the smooth interface: E = 1 - F(eta, mu)";
   } else if (spec.GenSchlick()) {
     j["mirror"] = "alpha < 1e-4 is a mirror: s = s_h(mu)";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
@@ -1322,7 +1374,9 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
     return {r.value, r.error};
   }
   if (spec.integrator == IntegratorKind::kQuadrature) {
-    if (spec.Glass() && spec.model.ior < 1 && alpha >= kMinAlpha<double>) return GlassEavg(spec, alpha);
+    if (spec.Glass() && spec.model.ior < 1 && (alpha >= kMinAlpha<double> || spec.part != DielectricPart::kBoth)) {
+      return GlassEavg(spec, alpha);
+    }
     return AdaptiveEavg([&](double mu) { return Texel(spec, alpha, mu, 0); }, spec.tolerance,
                         StdEavgGrading(spec));
   }
@@ -1384,6 +1438,14 @@ const char* Definition(const std::string& meaning, const BakeSpec& spec) {
     return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, 1) 1{r.z > 0} dh over the "
            "visible normals h of a GGX reflection lobe, F the exact dielectric Fresnel, F0 = ((ior - 1) / "
            "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking weight";
+  }
+  if (glass && meaning == "E" && spec.part == DielectricPart::kReflection) {
+    return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
+           "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
+  }
+  if (glass && meaning == "E" && spec.part == DielectricPart::kTransmission) {
+    return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
+           "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
   }
   if (glass && meaning == "E") {
     return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "

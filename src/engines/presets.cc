@@ -348,6 +348,53 @@ std::vector<Preset> MakePresets() {
     }
     p.push_back(e);
   }
+  {
+    // OpenPBR (adobe/openpbr-bsdf, [OpenPbrBsdf]): impl/data/openpbr_energy_arrays.h,
+    // seven unorm16 arrays [ior][alpha][cos_theta] (cos_theta fastest) of
+    // 32 entries per axis, every axis at edges: cos_theta = i / 31, alpha =
+    // (j / 31)^2 (the lookup's index is sqrt(alpha) 31), and ior on the
+    // two-sided axis (0.4 to 1 in 1 / ior, then 1 to 2.5). Separable
+    // masking G1(wi) G1(wo), as its BSDF. Stored complements 1 - E:
+    //   IdealDielectric*: reflection plus refraction (ggx-glass, both);
+    //   OpaqueDielectric*: the reflection alone (ggx-glass, reflection);
+    //   IdealMetal*: GGX with F = 1, over alpha and cos_theta (over alpha).
+    // The ReflectionRatio array is not baked: the header #includes the
+    // engine's own data file for it (docs/engines.md says why).
+    Preset o{"openpbr",
+             "OpenPBR's openpbr_energy_arrays.h: 1 - E and 1 - E_avg of the rough dielectric (reflection plus "
+             "refraction; reflection alone) over ior x alpha x cos_theta and of the F = 1 conductor, 32 per axis "
+             "at edges, separable masking, unorm16 arrays; the reflection ratio kept from OpenPBR's data file",
+             {},
+             "openpbr_energy_arrays.h",
+             EngineForm::kOpenPbrEnergyArrays};
+    auto spec = [](TableKind table, ModelKind kind, DielectricPart part) {
+      BakeSpec s = Spec(table, 32, 32, Placement::kEdges);
+      s.model.kind = kind;
+      s.masking = Masking::kSeparable;
+      s.complement = true;
+      s.part = part;
+      s.ior = Axis{"ior", 32, 0.4, 2.5, Warp::kTwoSided, Placement::kEdges};
+      s.tolerance = 1e-6;  // below the unorm16 step, 1.5e-5
+      return s;
+    };
+    for (const auto& [sym, table, kind, part] :
+         {std::tuple{"OpenPBR_IdealDielectricEnergyComplement_Array", TableKind::kE, ModelKind::kGgxGlass,
+                     DielectricPart::kBoth},
+          std::tuple{"OpenPBR_IdealDielectricAverageEnergyComplement_Array", TableKind::kEavg, ModelKind::kGgxGlass,
+                     DielectricPart::kBoth},
+          std::tuple{"OpenPBR_OpaqueDielectricEnergyComplement_Array", TableKind::kE, ModelKind::kGgxGlass,
+                     DielectricPart::kReflection},
+          std::tuple{"OpenPBR_OpaqueDielectricAverageEnergyComplement_Array", TableKind::kEavg, ModelKind::kGgxGlass,
+                     DielectricPart::kReflection},
+          std::tuple{"OpenPBR_IdealMetalEnergyComplement_Array", TableKind::kE, ModelKind::kGgx, DielectricPart::kBoth},
+          std::tuple{"OpenPBR_IdealMetalAverageEnergyComplement_Array", TableKind::kEavg, ModelKind::kGgx,
+                     DielectricPart::kBoth}}) {
+      const Source source = table == TableKind::kE ? Source::kOneMinusE : Source::kOneMinusEavg;
+      o.tables.push_back(
+          Entry(spec(table, kind, part), Layout({{"1-E", source}}, PixelType::kUnorm16), Container::kHeader, "", sym));
+    }
+    p.push_back(o);
+  }
   // The sizes the engines' code fixes (PresetTable::size_fixed).
   for (Preset& preset : p) {
     for (PresetTable& pt : preset.tables) {
@@ -467,6 +514,65 @@ std::string EnterprisePbrHeader(const Preset& preset, const std::vector<Table>& 
   return "// Enterprise PBR's lookup tables, baked by brdfbake " + std::string(BRDFBAKE_VERSION) +
          ". Do not edit: bake again instead.\n" + notes + "#ifndef PBRLUT_HPP\n#define PBRLUT_HPP\n" + decl +
          "#endif\n\n#ifdef PBRLUT_IMPLEMENTATION\n\n" + defs + "#endif\n";
+}
+
+// OpenPBR's impl/data/openpbr_energy_arrays.h: under the same guard and
+// settings as the engine's file (array mode only, OPENPBR_USE_TEXTURE_LUTS
+// = 0), OpenPBR_EnergyTableElement from the interop layer's 16- or 32-bit
+// unsigned type, and each table as OPENPBR_CONSTEXPR_GLOBAL
+// OpenPBR_EnergyTableElement NAME[OpenPBR_EnergyTableSize^rank], the
+// unorm16 codes (value = code / 65535) in the order [ior][alpha][cos_theta],
+// cos_theta fastest. The reflection ratio, which brdfbake does not bake,
+// #includes the engine's own data file, after the ideal dielectric's
+// average, in the engine's order.
+std::string OpenPbrEnergyArrays(const Preset& preset, const std::vector<Table>& tables,
+                                const std::vector<Image>& images) {
+  std::string notes, arrays;
+  for (size_t k = 0; k < preset.tables.size(); ++k) {
+    const Image& im = images[k];
+    const std::string& sym = preset.tables[k].symbol;
+    if (im.pixel != PixelType::kUnorm16 || im.channels != 1) Bad("openpbr_energy_arrays.h holds unorm16 codes");
+    notes += ConventionComment(tables[k], im, preset.name, ("// " + sym + ": ").c_str());
+    const size_t n = im.bits16.size();
+    int rank = 1;
+    for (size_t m = 32; m < n; m *= 32) ++rank;
+    std::string dims = "OpenPBR_EnergyTableSize";
+    for (int r = 1; r < rank; ++r) dims += " * OpenPBR_EnergyTableSize";
+    arrays += "OPENPBR_CONSTEXPR_GLOBAL OpenPBR_EnergyTableElement " + sym + "[" + dims + "] = {\n";
+    for (size_t i = 0; i < n; ++i) {
+      arrays += (i % 32 == 0 ? "    " : " ") + std::to_string(im.bits16[i]) + (i + 1 < n ? "," : "");
+      if (i % 32 == 31 || i + 1 == n) arrays += "\n";
+    }
+    arrays += "};\n\n";
+    if (sym == "OpenPBR_IdealDielectricAverageEnergyComplement_Array") {
+      arrays +=
+          "// Not baked by brdfbake: OpenPBR's own reflection ratio (its generator's rule for the split is not "
+          "published).\n"
+          "OPENPBR_CONSTEXPR_GLOBAL OpenPBR_EnergyTableElement OpenPBR_IdealDielectricReflectionRatio_Array"
+          "[OpenPBR_EnergyTableSize * OpenPBR_EnergyTableSize] = {\n"
+          "#include \"openpbr_ideal_dielectric_reflection_ratio_data.h\"\n};\n\n";
+    }
+  }
+  return "// OpenPBR's energy compensation tables (impl/data/openpbr_energy_arrays.h), baked by brdfbake " +
+         std::string(BRDFBAKE_VERSION) +
+         ". Do not edit: bake again instead.\n"
+         "// Every value is code / 65535; each array is [ior][alpha][cos_theta] with cos_theta fastest.\n" +
+         notes +
+         "\n#ifndef OPENPBR_ENERGY_ARRAYS_H\n#define OPENPBR_ENERGY_ARRAYS_H\n\n"
+         "#include \"../../openpbr_settings.h\"\n\n"
+         "#if !OPENPBR_USE_TEXTURE_LUTS\n\n"
+         "#include \"../../openpbr_data_constants.h\"\n\n"
+         "#ifndef OPENPBR_ENERGY_TABLES_USE_UINT16\n"
+         "#error \"openpbr_energy_arrays.h needs OPENPBR_ENERGY_TABLES_USE_UINT16 from an OpenPBR interop header\"\n"
+         "#endif\n"
+         "#if OPENPBR_ENERGY_TABLES_USE_UINT16\n"
+         "#ifndef OPENPBR_UINT16\n#error \"openpbr_energy_arrays.h needs OPENPBR_UINT16 from the interop layer\"\n"
+         "#endif\n#define OpenPBR_EnergyTableElement OPENPBR_UINT16\n"
+         "#else\n"
+         "#ifndef OPENPBR_UINT32\n#error \"openpbr_energy_arrays.h needs OPENPBR_UINT32 from the interop layer\"\n"
+         "#endif\n#define OpenPBR_EnergyTableElement OPENPBR_UINT32\n"
+         "#endif\n\n" +
+         arrays + "#endif  // !OPENPBR_USE_TEXTURE_LUTS\n\n#endif  // OPENPBR_ENERGY_ARRAYS_H\n";
 }
 
 // The container a run writes table `pt` as: the preset's own, or --format
@@ -620,6 +726,10 @@ void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vec
     if (f.table < 0) {
       if (preset.header_form == EngineForm::kEnterprisePbrHeader) {
         WriteFileAtomically(f.path, EnterprisePbrHeader(preset, tables, images));
+        continue;
+      }
+      if (preset.header_form == EngineForm::kOpenPbrEnergyArrays) {
+        WriteFileAtomically(f.path, OpenPbrEnergyArrays(preset, tables, images));
         continue;
       }
       std::vector<std::pair<const Table*, const Image*>> arrays;

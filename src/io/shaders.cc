@@ -56,6 +56,17 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
     auto z = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
     const double lo = z(a.min), hi = z(a.max);
     x = "(5.0 / (" + value + " + 5.0) - " + Lit(lo) + ") / " + Lit(hi - lo);
+  } else if (a.warp == Warp::kTwoSided) {
+    // The fractional index (bake.h): below 1, H - 1 - (1 / ior - 1) (H -
+    // 1) / (1 / min - 1); from 1 up, H + (ior - 1) (H - 1) / (max - 1);
+    // picked by step(), which the three languages share.
+    const double h = a.size / 2;
+    const std::string below =
+        "(" + Lit(h - 1) + " - (1.0 / " + value + " - 1.0) * " + Lit((h - 1) / (1 / a.min - 1)) + ")";
+    const std::string above = "(" + Lit(h) + " + (" + value + " - 1.0) * " + Lit((h - 1) / (a.max - 1)) + ")";
+    const std::string s = "step(1.0, " + value + ")";
+    x = "mix(" + below + ", " + above + ", " + s + ") / " + Lit(a.size - 1);
+    if (hlsl) x = "lerp(" + below + ", " + above + ", " + s + ") / " + Lit(a.size - 1);
   } else {
     x = "(" + value + " - " + Lit(a.min) + ") / " + Lit(a.max - a.min);
   }

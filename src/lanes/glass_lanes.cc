@@ -49,13 +49,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 // from the reference by the rounding of these terms only: a few ulp of
 // the largest term, more next to the critical angle, where F has an
 // infinite slope in c (tests/lanes/glass_lanes_test.cc bounds the
-// albedos of both paths against each other on every target).
+// albedos of both paths against each other on every target). `part`
+// drops the refraction or the reflection term, as the reference does.
 struct SimdGlassNodes {
   using V = hn::Vec<DF64>;
   const GlassFrame* frame;
   bool separable;
   double g1o_inv;  // 1 + Lambda(wo) (height-correlated); unused when separable
   double lambda_o;
+  DielectricPart part = DielectricPart::kBoth;
 
   void operator()(const GlassRay& ray, const double* theta, double* v) const {
     const DF64 d;
@@ -77,6 +79,9 @@ struct SimdGlassNodes {
       const V lambda = hn::Div(p, hn::Mul(hn::Set(d, 2.0), hn::MulAdd(z, hn::Sqrt(hn::Add(z2, p)), z2)));
       return separable ? hn::Div(one, hn::Add(one, lambda)) : hn::Div(g1o, hn::Add(one_lo, lambda));
     };
+    // All lanes true or all false: the part's terms.
+    const auto keep_r = hn::Ne(hn::Set(d, part == DielectricPart::kTransmission ? 0.0 : 1.0), zero);
+    const auto keep_t = hn::Ne(hn::Set(d, part == DielectricPart::kReflection ? 0.0 : 1.0), zero);
     for (size_t i = 0; i < 16; i += N) {
       const V th = hn::Load(d, in + i);
       const V ct = hn::Cos(d, th), st = hn::Sin(d, th);
@@ -103,7 +108,7 @@ struct SimdGlassNodes {
       // Reflection r = 2 c h - wo (wo = (so, 0, mu)).
       const V two_c = hn::Add(c, c);
       const V rx = hn::MulSub(two_c, hx, so), ry = hn::Mul(two_c, hy), rz = hn::MulSub(two_c, hz, mu);
-      const auto r_ok = hn::And(hn::Gt(rz, zero), hn::Gt(fr, zero));
+      const auto r_ok = hn::And(hn::And(hn::Gt(rz, zero), hn::Gt(fr, zero)), keep_r);
       const V rz_safe = hn::IfThenElse(r_ok, rz, one);
       const V pr = hn::Mul(alpha2, hn::MulAdd(rx, rx, hn::Mul(ry, ry)));
       V w = hn::IfThenElseZero(r_ok, hn::Mul(fr, g2_over_g1(pr, rz_safe)));
@@ -113,7 +118,7 @@ struct SimdGlassNodes {
       const V k = hn::Sub(hn::Mul(c, inv_eta), hn::Sqrt(hn::Max(ct2, zero)));
       const V tx = hn::MulSub(k, hx, hn::Mul(so, inv_eta)), ty = hn::Mul(k, hy);
       const V tz = hn::MulSub(k, hz, hn::Mul(mu, inv_eta));
-      const auto t_ok = hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero));
+      const auto t_ok = hn::And(hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero)), keep_t);
       const V tz_safe = hn::IfThenElse(t_ok, hn::Neg(tz), one);
       const V pt = hn::Mul(alpha2, hn::MulAdd(tx, tx, hn::Mul(ty, ty)));
       w = hn::Add(w, hn::IfThenElseZero(t_ok, hn::Mul(hn::Sub(one, fr), g2_over_g1(pt, tz_safe))));
@@ -123,23 +128,23 @@ struct SimdGlassNodes {
   }
 };
 
-RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol,
-                      int max_pieces) {
+RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                      DielectricPart part) {
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
   const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
   const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
-  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
   return GlassAlbedoWith(frame, tol, max_pieces, nodes);
 }
 
-void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi,
-                const double* theta, double* v) {
+void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi, const double* theta, double* v,
+                DielectricPart part) {
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
   const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
   const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
-  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
   nodes(GlassRay{std::cos(phi), std::sin(phi)}, theta, v);
 }
 
@@ -151,16 +156,16 @@ HWY_AFTER_NAMESPACE();
 namespace brdfbake {
 
 HWY_EXPORT(GlassTexel);
-RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
-                           int max_pieces) {
-  if (alpha == 0) return SmoothGlassAlbedo();
-  return HWY_DYNAMIC_DISPATCH(GlassTexel)(alpha, eta, masking, mu, tol, max_pieces);
+RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                           DielectricPart part) {
+  if (alpha == 0) return SmoothGlassAlbedo(eta, mu, part);
+  return HWY_DYNAMIC_DISPATCH(GlassTexel)(alpha, eta, masking, mu, tol, max_pieces, part);
 }
 
 HWY_EXPORT(GlassNodes);
-void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi,
-                         const double* theta, double* v) {
-  HWY_DYNAMIC_DISPATCH(GlassNodes)(alpha, eta, masking, mu, phi, theta, v);
+void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
+                         double* v, DielectricPart part) {
+  HWY_DYNAMIC_DISPATCH(GlassNodes)(alpha, eta, masking, mu, phi, theta, v, part);
 }
 
 }  // namespace brdfbake

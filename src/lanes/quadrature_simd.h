@@ -14,6 +14,7 @@
 
 #include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
+#include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/ggx.h"
 #include "brdfbake/models/std_ndf.h"
 #include "brdfbake/targets.h"
@@ -39,13 +40,14 @@ RuleResult SimdDisneyAlbedo(double r, double mu);
 RuleResult SimdDisneyEavg(double r);
 
 // GlassAlbedo (glass_albedo.h) from the parameters, each ray piece's 15
-// nodes in lanes; alpha = 0 is the smooth interface (E = 1).
-RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
-                           int max_pieces);
+// nodes in lanes; alpha = 0 is the smooth interface (E = 1; its
+// reflection F, its refraction 1 - F).
+RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                           DielectricPart part = DielectricPart::kBoth);
 // Its integrand at 15 angles theta along the ray phi (the values the
 // rule's ScalarGlassNodes gives), for the tests.
-void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi,
-                         const double* theta, double* v);
+void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
+                         double* v, DielectricPart part = DielectricPart::kBoth);
 
 // SelLobeIntegral (sel_norm.h) with the inner rule's nodes in lanes.
 SelIntegral SimdSelLobeIntegral(double alpha_x, double alpha_y, double tol);

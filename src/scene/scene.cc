@@ -811,7 +811,7 @@ const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind m
                                bool inverse = false) {
   for (const PresetTable& pt : preset.tables) {
     if (pt.spec.table != kind || pt.spec.model.kind != model || pt.over != PresetTable::Over::kNone) continue;
-    if (pt.spec.inverse != inverse) continue;
+    if (pt.spec.inverse != inverse || pt.spec.part != DielectricPart::kBoth) continue;
     if (model == ModelKind::kCharlie && !SheenHasLambda(pt.spec.model.visibility)) continue;
     return &pt;
   }

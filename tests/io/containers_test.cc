@@ -319,7 +319,8 @@ TEST(PresetTest, Khronos) {
 // another): header arrays, Filament's .inc, HDRP's edges remap.
 TEST(PresetTest, SizeFixedByTheEngine) {
   for (const Preset& p : Presets()) {
-    const bool fixed = p.name == "filament" || p.name == "cycles" || p.name == "enterprise-pbr" || p.name == "hdrp";
+    const bool fixed = p.name == "filament" || p.name == "cycles" || p.name == "enterprise-pbr" || p.name == "hdrp" ||
+                       p.name == "openpbr";
     for (const PresetTable& pt : p.tables) EXPECT_EQ(pt.size_fixed, fixed) << p.name << " " << pt.symbol;
   }
 }

@@ -58,9 +58,10 @@ double Adaptive(const F& f, std::vector<double> cuts, double lo, double hi, doub
 // E(mu) = integral over the sphere of BsdfCos(wi, wo), wo = (so, 0, mu):
 // for each hemisphere, x = |wi.z| outside and phi in [0, pi] inside (the
 // integrand is even in phi), both cut where the BSDF has a peak, a kink or
-// an edge.
+// an edge. `part` keeps the upper hemisphere (the reflection) or the lower
+// one (the refraction) alone.
 template <unsigned N>
-double ReferenceE(const GlassRef& m, double mu, double tol, double* err) {
+double ReferenceE(const GlassRef& m, double mu, double tol, double* err, DielectricPart part = DielectricPart::kBoth) {
   const double eta = m.eta(), alpha = m.ndf().alpha_x();
   const double so = std::sqrt((1 - mu) * (1 + mu));
   const Vec3<double> wo{so, 0, mu};
@@ -116,16 +117,18 @@ double ReferenceE(const GlassRef& m, double mu, double tol, double* err) {
     *err += e;
     return v;
   };
-  return hemisphere(true, x_above, cones_above) + hemisphere(false, x_below, cones_below);
+  const double up = part == DielectricPart::kTransmission ? 0.0 : hemisphere(true, x_above, cones_above);
+  return up + (part == DielectricPart::kReflection ? 0.0 : hemisphere(false, x_below, cones_below));
 }
 
 // The reference and its own error: the 61-point run, and its difference
 // from the 31-point run (Boost's |K - G| estimates are far too pessimistic
 // next to the square-root edges of the lobes for eta < 1).
-inline double ReferenceGlassE(const GlassRef& m, double mu, double tol, double* ref_err) {
+inline double ReferenceGlassE(const GlassRef& m, double mu, double tol, double* ref_err,
+                              DielectricPart part = DielectricPart::kBoth) {
   double e61 = 0, e31 = 0;
-  const double ref = ReferenceE<61>(m, mu, tol, &e61);
-  *ref_err = std::abs(ref - ReferenceE<31>(m, mu, tol, &e31));
+  const double ref = ReferenceE<61>(m, mu, tol, &e61, part);
+  *ref_err = std::abs(ref - ReferenceE<31>(m, mu, tol, &e31, part));
   return ref;
 }
 

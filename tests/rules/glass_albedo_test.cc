@@ -93,6 +93,106 @@ TEST(GlassAlbedoTest, AgreesWithIndependentIntegration) {
   std::printf("glass: max |rule - reference| / claim %.3g, reference error at most %.3g\n", worst, worst_ref);
 }
 
+// The reflection and the refraction alone (DielectricPart) against the
+// reference's upper and lower hemispheres, with OpenPBR's separable
+// masking and the default height-correlated one, at the hard texels:
+// grazing views, a narrow lobe, next to the critical cosine of eta < 1
+// and across the two-sided ior axis's range (0.4 to 2.5). Each part's
+// claim bounds its true error, and the parts add up to the sum's value
+// within the claims.
+TEST(GlassAlbedoTest, EachPartAgreesWithIndependentIntegration) {
+  struct PartCase {
+    double alpha, eta, mu;
+    Masking masking;
+  };
+  std::vector<PartCase> cases;
+  for (Masking mk : {Masking::kSeparable, Masking::kHeightCorrelated}) {
+    for (double eta : {2.5, 1.5, 1 / 1.5, 0.4}) {
+      for (double mu : {1e-3, 0.5, 1.0}) cases.push_back({0.3, eta, mu, mk});
+    }
+  }
+  // 1e-2 below the critical cosine of eta = 1/1.5 (above it the
+  // reference's refraction took over 15 minutes; the grid test below
+  // covers both sides against the converged rule).
+  cases.push_back({0.3, 1 / 1.5, std::sqrt(1 - 1 / 2.25) - 1e-2, Masking::kSeparable});
+  cases.push_back({1.0, 0.4, 0.1, Masking::kSeparable});
+  cases.push_back({0.05, 1.5, 0.5, Masking::kSeparable});
+  cases.push_back({0.05, 1 / 1.5, 0.1, Masking::kSeparable});
+  double worst = 0, worst_ref = 0;
+  for (const PartCase& c : cases) {
+    const Glass m(GgxNdf<double>(c.alpha), c.eta, c.masking, DielectricTransport::kImportance);
+    const RuleResult sum = GlassAlbedo(m, c.mu, 1e-7, 256);
+    double parts = 0, parts_err = 0;
+    for (DielectricPart part : {DielectricPart::kReflection, DielectricPart::kTransmission}) {
+      const RuleResult rule = GlassAlbedo(m, c.mu, 1e-7, 256, part);
+      double ref_err = 0;
+      const double ref = test::ReferenceGlassE(m, c.mu, 1e-7, &ref_err, part);
+      worst_ref = std::max(worst_ref, ref_err);
+      EXPECT_LE(ref_err, 1e-9) << DielectricPartName(part) << " alpha " << c.alpha << " eta " << c.eta << " mu "
+                               << c.mu;
+      const double d = std::abs(rule.value - ref);
+      worst = std::max(worst, d / rule.error);
+      std::printf("%s %s alpha %g eta %.4g mu %.6g: rule %.12f +- %.2g, reference %.12f +- %.2g\n",
+                  MaskingName(c.masking), DielectricPartName(part), c.alpha, c.eta, c.mu, rule.value, rule.error, ref,
+                  ref_err);
+      std::fflush(stdout);
+      EXPECT_LE(d, rule.error + ref_err) << DielectricPartName(part) << " alpha " << c.alpha << " eta " << c.eta
+                                         << " mu " << c.mu;
+      EXPECT_LE(rule.error, 1.5e-7);
+      parts += rule.value;
+      parts_err += rule.error;
+    }
+    EXPECT_LE(std::abs(parts - sum.value), parts_err + sum.error) << "alpha " << c.alpha << " eta " << c.eta;
+  }
+  std::printf("glass parts: max |rule - reference| / claim %.3g, reference error at most %.3g\n", worst, worst_ref);
+}
+
+// Each part at the table's tolerance against itself converged (1e-11),
+// over views on both sides of every critical cosine (where F reaches 1
+// with an infinite slope) and grazing ones, narrow to unit lobes, with
+// OpenPBR's separable masking: the claim bounds the difference.
+TEST(GlassAlbedoTest, PartsClaimsBoundTheErrorNearTheCriticalAngle) {
+  double worst = 0;
+  int n = 0;
+  for (double eta : {0.4, 1 / 1.5, 1 / 1.1, 1.1, 1.5, 2.5}) {
+    std::vector<double> mus = {1e-4, 0.02, 0.5, 1.0};
+    if (eta < 1) {
+      const double mc = std::sqrt((1 - eta) * (1 + eta));
+      for (double d : {-1e-2, -1e-4, 1e-4, 1e-2}) mus.push_back(mc + d);
+    }
+    for (double alpha : {0.0025, 0.05, 0.3, 1.0}) {
+      const Glass m(GgxNdf<double>(alpha), eta, Masking::kSeparable, DielectricTransport::kImportance);
+      for (double mu : mus) {
+        for (DielectricPart part : {DielectricPart::kReflection, DielectricPart::kTransmission}) {
+          const RuleResult a = GlassAlbedo(m, mu, 1e-7, 256, part);
+          const RuleResult b = GlassAlbedo(m, mu, 1e-11, 4096, part);
+          const double d = std::abs(a.value - b.value);
+          worst = std::max(worst, d / (a.error + b.error));
+          ++n;
+          EXPECT_LE(d, a.error + b.error) << DielectricPartName(part) << " alpha " << alpha << " eta " << eta
+                                          << " mu " << mu;
+          EXPECT_LE(a.error, 1.5e-7) << DielectricPartName(part) << " alpha " << alpha << " eta " << eta;
+        }
+      }
+    }
+  }
+  std::printf("glass parts grid: %d texels, max |E(1e-7) - E(1e-11)| / claims %.3g\n", n, worst);
+}
+
+// The smooth interface's parts are exact: F(eta, mu) and 1 - F.
+TEST(GlassAlbedoTest, SmoothPartsAreFresnel) {
+  for (double eta : {0.4, 1 / 1.5, 1.0, 1.5, 2.5}) {
+    for (double mu : {0.0, 0.3, 0.9, 1.0}) {
+      const double f = FresnelDielectric(eta, mu);
+      const RuleResult r = GlassAlbedo(0.0, eta, Masking::kSeparable, mu, 1e-7, 64, DielectricPart::kReflection);
+      const RuleResult t = GlassAlbedo(0.0, eta, Masking::kSeparable, mu, 1e-7, 64, DielectricPart::kTransmission);
+      EXPECT_EQ(r.value, f);
+      EXPECT_EQ(t.value, 1 - f);
+      EXPECT_EQ(r.error + t.error, 0.0);
+    }
+  }
+}
+
 // Over a grid of texels (alpha x mu x eta, with views next to the critical
 // angle of every eta < 1), the rule at the table's tolerance against
 // itself converged (1e-11): the claim bounds the difference everywhere.

@@ -425,6 +425,7 @@ struct BakeOptions {
   int samples = 0, threads = 0;
   double tolerance = brdfbake::BakeSpec().tolerance;
   bool complement = false, error_channel = false, inverse = false;
+  std::string part = "both";  // ggx-glass
   bool for_report = false;
   CLI::App* app = nullptr;
 
@@ -458,8 +459,8 @@ struct BakeOptions {
     app->add_option("--warp", warp,
                     "linear | square | sqrt, or per axis: mu=linear,roughness=square "
                     "(the gamma axis: gamma=tail, its only warp; the ior axis: ior=fresnel-z, the "
-                    "default, or ior=linear; the exponent axis: exponent=schlick-z, the default, or "
-                    "exponent=linear)")
+                    "default, ior=linear, or ior=two-sided for both sides of the interface on one axis; "
+                    "the exponent axis: exponent=schlick-z, the default, or exponent=linear)")
         ->capture_default_str();
     app->add_option("--range", range,
                     "axis ranges within [0, 1], e.g. mu=1e-4:1,roughness=0.05:1; "
@@ -506,6 +507,10 @@ struct BakeOptions {
     app->add_flag("--inverse", inverse,
                   "ggx-glass: light leaving the medium (the view inside it): each ior slice is baked at "
                   "eta = 1/ior, with total internal reflection (Cycles' inverse tables)");
+    app->add_option("--part", part,
+                    "ggx-glass: both (reflection plus refraction) | reflection (the energy the interface "
+                    "reflects, weighted by F) | transmission (the refraction alone, weighted by 1 - F)")
+        ->capture_default_str();
     app->add_option("-o,--output", output,
                     "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
                     "directory, default .)");
@@ -530,6 +535,13 @@ struct BakeOptions {
   brdfbake::BakeSpec Get() const {
     brdfbake::BakeSpec spec;
     if (!for_report) spec.inverse = inverse;
+    if (part == "reflection") {
+      spec.part = brdfbake::DielectricPart::kReflection;
+    } else if (part == "transmission") {
+      spec.part = brdfbake::DielectricPart::kTransmission;
+    } else if (part != "both") {
+      Bad("--part: unknown part '" + part + "' (expected both, reflection or transmission)");
+    }
     if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);
     spec.model.kind = brdfbake::ParseModelKind(model);
@@ -908,7 +920,7 @@ int RunPreset(const BakeOptions& opts) {
   // may be chosen.
   for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range",
                         "--placement", "--masking", "--pixel", "--complement", "--error-channel", "--integrator",
-                        "--samples", "--seed", "--symbol", "--channels", "--inverse"}) {
+                        "--samples", "--seed", "--symbol", "--channels", "--inverse", "--part"}) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": fixed by --preset " + preset.name);
   }
   const std::string dir = opts.output.empty() ? "." : opts.output;
@@ -970,7 +982,7 @@ int RunPreset(const BakeOptions& opts) {
 int RunSceneBake(const BakeOptions& opts) {
   for (const char* o : {"--table", "--model", "--gamma", "--visibility", "--size", "--warp", "--range", "--placement", "--masking",
                         "--complement", "--error-channel", "--integrator", "--samples", "--seed", "--tolerance",
-                        "--symbol", "--channels", "--inverse"}) {
+                        "--symbol", "--channels", "--inverse", "--part"}) {
     if (Given(opts.app, o)) {
       Bad(std::string(o) + ": a scene bake takes its settings from the scene file (the command line may override "
                            "--preset, --format, --pixel, --shader, --max-size and --error-target)");

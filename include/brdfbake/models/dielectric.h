@@ -94,6 +94,16 @@ inline const char* DielectricTransportName(DielectricTransport t) {
   return t == DielectricTransport::kRadiance ? "radiance" : "importance";
 }
 
+// Which scattering of the dielectric an albedo counts: reflection plus
+// refraction (the energy albedo), the reflection lobe alone (the energy a
+// rough dielectric reflects, weighted by F) or the refraction lobe alone
+// (weighted by 1 - F). Reflection plus refraction is their sum.
+enum class DielectricPart { kBoth, kReflection, kTransmission };
+
+inline const char* DielectricPartName(DielectricPart p) {
+  return p == DielectricPart::kBoth ? "both" : p == DielectricPart::kReflection ? "reflection" : "transmission";
+}
+
 template <typename T>
 T ClampDielectricEta(T eta) {
   return std::clamp(eta, T(kMinFresnelIndex), T(kMaxFresnelIndex));

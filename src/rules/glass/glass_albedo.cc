@@ -7,21 +7,21 @@
 
 namespace brdfbake {
 
-RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol,
-                       int max_pieces) {
+RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol, int max_pieces,
+                       DielectricPart part) {
   const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
   const Vec3<double> wo{frame.so, 0, frame.mu};
   const double lambda_o = bsdf.Lambda(wo);
-  const ScalarGlassNodes nodes{&bsdf, &frame, 1 + lambda_o, lambda_o};
+  const ScalarGlassNodes nodes{&bsdf, &frame, 1 + lambda_o, lambda_o, part};
   return GlassAlbedoWith(frame, tol, max_pieces, nodes);
 }
 
-RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
-                       int max_pieces) {
-  if (alpha == 0) return SmoothGlassAlbedo();
+RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                       DielectricPart part) {
+  if (alpha == 0) return SmoothGlassAlbedo(eta, mu, part);
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
-  return GlassAlbedo(bsdf, mu, tol, max_pieces);
+  return GlassAlbedo(bsdf, mu, tol, max_pieces, part);
 }
 
 }  // namespace brdfbake

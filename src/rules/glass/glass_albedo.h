@@ -48,6 +48,8 @@
 #ifndef BRDFBAKE_SRC_RULES_GLASS_GLASS_ALBEDO_H_
 #define BRDFBAKE_SRC_RULES_GLASS_GLASS_ALBEDO_H_
 
+#include <algorithm>
+
 #include "brdfbake/models/brdf.h"
 #include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/ggx.h"
@@ -60,21 +62,26 @@ namespace brdfbake {
 // absolute tolerance `tol`, at most `max_pieces` pieces over phi; mu is
 // taken at least 1e-7. At eta = 1 (no interface) the value is the limit
 // eta -> 1: the refraction straight through, weighted by G2 / G1(wo).
-RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol,
-                       int max_pieces);
+// `part` keeps the reflection or the refraction term of the bracket alone
+// (the rule, its cuts and pieces are the same; each part is as accurate as
+// the sum).
+RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol, int max_pieces,
+                       DielectricPart part = DielectricPart::kBoth);
 
-// The albedo of the smooth interface (alpha = 0): exactly 1, with no error.
-inline RuleResult SmoothGlassAlbedo() {
+// The albedo of the smooth interface (alpha = 0): exactly 1, with no
+// error; its reflection F(eta, mu) and its refraction 1 - F.
+inline RuleResult SmoothGlassAlbedo(double eta = 1, double mu = 1, DielectricPart part = DielectricPart::kBoth) {
   RuleResult out;
-  out.value = 1;
+  const double f = part == DielectricPart::kBoth ? 0 : FresnelDielectric(eta, std::clamp(mu, 0.0, 1.0));
+  out.value = part == DielectricPart::kBoth ? 1 : part == DielectricPart::kReflection ? f : 1 - f;
   out.pieces = 1;
   return out;
 }
 
 // The same from the parameters; alpha = 0 is the smooth interface
 // (SmoothGlassAlbedo; the rough model's smallest alpha is 1e-4).
-RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol,
-                       int max_pieces);
+RuleResult GlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                       DielectricPart part = DielectricPart::kBoth);
 
 }  // namespace brdfbake
 

@@ -96,12 +96,14 @@ struct GlassRay {
 };
 
 // The double reference's integrand cos(theta) sin(theta) W(h) at 15 angles
-// theta along a ray, W the bracket of glass_albedo.h.
+// theta along a ray, W the bracket of glass_albedo.h (or its reflection or
+// refraction term alone, `part`).
 struct ScalarGlassNodes {
   const RoughDielectric<double, GgxNdf<double>>* bsdf;
   const GlassFrame* frame;
   double g1o_inv;  // 1 / G1(wo) (separable) or 1 + Lambda(wo) (height-correlated)
   double lambda_o;
+  DielectricPart part = DielectricPart::kBoth;
   double Weight(const Vec3<double>& h) const {
     const GlassFrame& f = *frame;
     const Vec3<double> wo{f.so, 0, f.mu};
@@ -114,9 +116,9 @@ struct ScalarGlassNodes {
     };
     double w = 0;
     const Vec3<double> r = h * (2 * c) - wo;
-    if (r.z > 0 && fr > 0) w += fr * g2_over_g1(r);
+    if (r.z > 0 && fr > 0 && part != DielectricPart::kTransmission) w += fr * g2_over_g1(r);
     const double ct2 = 1 - (1 - c) * (1 + c) / (f.eta * f.eta);
-    if (ct2 > 0 && fr < 1) {
+    if (ct2 > 0 && fr < 1 && part != DielectricPart::kReflection) {
       const Vec3<double> t = wo * (-1 / f.eta) + h * (c / f.eta - std::sqrt(ct2));
       if (t.z < 0) w += (1 - fr) * g2_over_g1(t);
     }
