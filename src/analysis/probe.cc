@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "bake/warp_coordinates.h"
 #include "base/error.h"
 #include "brdfbake/models/slope_ndf.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
@@ -27,8 +28,8 @@ double IndexOf(const Axis& a, double v) {
   double t = a.max > a.min ? std::clamp((v - a.min) / (a.max - a.min), 0.0, 1.0) : 0.5;
   if (a.warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) linear in t (bake.h), 1 at ior = inf.
-    auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
-    t = z(a.max) > z(a.min) ? std::clamp((z(v) - z(a.min)) / (z(a.max) - z(a.min)), 0.0, 1.0) : 0.5;
+    const double lo = FresnelZOfIor(a.min), hi = FresnelZOfIor(a.max);
+    t = hi > lo ? std::clamp((FresnelZOfIor(v) - lo) / (hi - lo), 0.0, 1.0) : 0.5;
   }
   if (a.warp == Warp::kSquare) t = std::sqrt(t);
   if (a.warp == Warp::kSqrt) t = t * t;

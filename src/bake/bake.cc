@@ -21,6 +21,7 @@
 
 #include "base/error.h"
 #include "base/pixel.h"
+#include "bake/warp_coordinates.h"
 #include "base/text.h"
 #include "brdfbake/version.h"
 #include "lanes/quadrature_simd.h"
@@ -131,18 +132,16 @@ double Axis::ValueAt(double fi) const {
   if (warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) linear in t; the axis lies on one
     // side of 1 (ValidateBakeSpec), where ior(z) is monotonic.
-    auto z_of = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
     if (t == 0) return min;
     if (t == 1) return max;
-    const double z = (1 - t) * z_of(min) + t * z_of(max), z2 = z * z;
+    const double z = (1 - t) * FresnelZOfIor(min) + t * FresnelZOfIor(max), z2 = z * z;
     return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
   }
   if (warp == Warp::kSchlickZ) {
     // z = 5 / (exponent + 5) linear in t (z = 0 is exponent = inf).
-    auto z_of = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
     if (t == 0) return min;
     if (t == 1) return max;
-    const double z = (1 - t) * z_of(min) + t * z_of(max);
+    const double z = (1 - t) * SchlickZOfExponent(min) + t * SchlickZOfExponent(max);
     return z > 0 ? 5 * (1 - z) / z : kInfinity;
   }
   if (warp == Warp::kTwoSided) {
@@ -171,31 +170,32 @@ std::string Axis::ToJson() const {
   j["placement"] = PlacementName(placement);
   if (clamp_min > 0) j["clamp_min"] = clamp_min;
   if (clamp_max < kInfinity) j["clamp_max"] = clamp_max;
-  if (warp == Warp::kTail) {
-    j["map"] = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
-               "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
-    nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
-    j["values"] = values;
+  // The warps that are not a power of t state their map and list every
+  // entry's value.
+  const char* map = nullptr;
+  switch (warp) {
+    case Warp::kTail:
+      map = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
+            "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
+      break;
+    case Warp::kSchlickZ:
+      map = "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent = 5 (1 - z) / z; "
+            "z = 0 is exponent = inf";
+      break;
+    case Warp::kTwoSided:
+      map = "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
+            "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
+      break;
+    case Warp::kFresnelZ:
+      map = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
+            "ior = (1 + z^2) / (1 - z^2)";
+      break;
+    case Warp::kLinear:
+    case Warp::kSquare:
+    case Warp::kSqrt: break;
   }
-  if (warp == Warp::kSchlickZ) {
-    j["map"] = "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent = 5 (1 - z) / z; "
-               "z = 0 is exponent = inf";
-    nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
-    j["values"] = values;
-  }
-  if (warp == Warp::kTwoSided) {
-    j["map"] =
-        "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
-        "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
-    nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i) values.push_back(Value(i));
-    j["values"] = values;
-  }
-  if (warp == Warp::kFresnelZ) {
-    j["map"] = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
-               "ior = (1 + z^2) / (1 - z^2)";
+  if (map) {
+    j["map"] = map;
     nlohmann::json values = nlohmann::json::array();
     for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
     j["values"] = values;
@@ -216,6 +216,12 @@ int BakeSpec::EffectiveSamples() const {
 
 namespace {
 int64_t TexelCount(const BakeSpec& spec);  // below
+
+// Every axis: 1 to 8192 entries, at least 2 with edges placement.
+void CheckAxisSize(const Axis& a) {
+  if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
+  if (a.placement == Placement::kEdges && a.size < 2) Bad("--size: edges placement needs at least 2 entries per axis");
+}
 }  // namespace
 
 void ValidateBakeSpec(const BakeSpec& spec) {
@@ -300,10 +306,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           (a->warp == Warp::kFresnelZ ? "ior" : "exponent") + " axis's warp (the " + a->name +
           " axis takes linear, square or sqrt)");
     }
-    if (a->size < 1 || a->size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
-    if (a->placement == Placement::kEdges && a->size < 2) {
-      Bad("--size: edges placement needs at least 2 entries per axis");
-    }
+    CheckAxisSize(*a);
     // One entry may sit at one value (min = max), as the report's probes do.
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
     if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
@@ -323,10 +326,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     if (m != ModelKind::kStudentT) {
       Bad("--size: only std has a gamma axis (got model '" + std::string(spec.model.name()) + "')");
     }
-    if (g.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
-    if (g.placement == Placement::kEdges && g.size < 2) {
-      Bad("--size: edges placement needs at least 2 entries per axis");
-    }
+    CheckAxisSize(g);
     if (g.warp != Warp::kTail) Bad("--warp: the gamma axis takes the tail warp only");
     const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
     if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) || std::isinf(g.min) || !ordered) {
@@ -337,10 +337,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   if (spec.table == TableKind::kGenSchlickS) {
     const Axis& a = spec.exponent;
-    if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
-    if (a.placement == Placement::kEdges && a.size < 2) {
-      Bad("--size: edges placement needs at least 2 entries per axis");
-    }
+    CheckAxisSize(a);
     if (a.warp != Warp::kSchlickZ && a.warp != Warp::kLinear) {
       Bad("--warp: the exponent axis takes schlick-z (z = 5 / (exponent + 5), the default) or linear (got " +
           std::string(WarpName(a.warp)) + ")");
@@ -358,10 +355,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   }
   if (glass || spec.table == TableKind::kGenSchlickIorS) {
     const Axis& a = spec.ior;
-    if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
-    if (a.placement == Placement::kEdges && a.size < 2) {
-      Bad("--size: edges placement needs at least 2 entries per axis");
-    }
+    CheckAxisSize(a);
     if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {
       Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default), linear or two-sided (got " +
           std::string(WarpName(a.warp)) + ")");

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "bake/warp_coordinates.h"
 #include "base/error.h"
 #include "base/text.h"
 
@@ -47,14 +48,12 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
   } else if (a.warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) linear in t between the
     // axis' ends (bake.h).
-    auto z = [](double ior) { return std::isinf(ior) ? 1.0 : std::sqrt(std::abs(ior - 1) / (ior + 1)); };
-    const double lo = z(a.min), hi = z(a.max);
+    const double lo = FresnelZOfIor(a.min), hi = FresnelZOfIor(a.max);
     x = "(sqrt(abs(" + value + " - 1.0) / (" + value + " + 1.0)) - " + Lit(lo) + ") / " + Lit(hi - lo);
   } else if (a.warp == Warp::kSchlickZ) {
     // z = 5 / (exponent + 5) linear in t between the axis' ends (bake.h;
     // z = 0 at exponent = inf).
-    auto z = [](double e) { return std::isinf(e) ? 0.0 : 5 / (e + 5); };
-    const double lo = z(a.min), hi = z(a.max);
+    const double lo = SchlickZOfExponent(a.min), hi = SchlickZOfExponent(a.max);
     x = "(5.0 / (" + value + " + 5.0) - " + Lit(lo) + ") / " + Lit(hi - lo);
   } else if (a.warp == Warp::kTwoSided) {
     // The fractional index (bake.h): below 1, H - 1 - (1 / ior - 1) (H -

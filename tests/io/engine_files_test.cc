@@ -42,6 +42,7 @@ namespace brdfbake {
 namespace {
 
 using test::Have;
+using test::Numbers;
 using test::Slurp;
 using test::WriteText;
 
@@ -70,13 +71,6 @@ BakedPreset WritePreset(const std::string& name, const std::string& dir) {
 std::string Shell(const std::string& cmd, const std::string& dir, int* status) {
   *status = std::system((cmd + " > " + dir + "/out.txt 2> " + dir + "/err.txt").c_str());
   return Slurp(dir + "/out.txt");
-}
-
-std::vector<double> Numbers(const std::string& text) {
-  std::stringstream ss(text);
-  std::vector<double> v;
-  for (double x; ss >> x;) v.push_back(x);
-  return v;
 }
 
 // tests/js/node_modules, installed by `npm ci --prefix tests/js`.

@@ -36,6 +36,7 @@ namespace brdfbake {
 namespace {
 
 using test::Have;
+using test::Numbers;
 using test::Slurp;
 using test::WriteText;
 
@@ -208,13 +209,6 @@ int main() {
   }
 }
 )";
-}
-
-std::vector<double> Numbers(const std::string& text) {
-  std::stringstream ss(text);
-  std::vector<double> v;
-  for (double x; ss >> x;) v.push_back(x);
-  return v;
 }
 
 nlohmann::json Shipped() {

@@ -1,7 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// Files in tests: a scratch directory per test, whole-file reads and writes.
+// Files in tests: a scratch directory per test, whole-file reads and
+// writes, the numbers a test program prints.
 
 #ifndef BRDFBAKE_TESTS_UTIL_FILE_UTIL_H_
 #define BRDFBAKE_TESTS_UTIL_FILE_UTIL_H_
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -25,6 +27,14 @@ inline std::string Slurp(const std::string& path) {
 }
 
 inline void WriteText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The numbers in a text, in order (a test program's output).
+inline std::vector<double> Numbers(const std::string& text) {
+  std::stringstream ss(text);
+  std::vector<double> v;
+  for (double x; ss >> x;) v.push_back(x);
+  return v;
+}
 
 // An empty directory of its own under the test's temporary directory.
 inline std::string Scratch(const std::string& name) {
