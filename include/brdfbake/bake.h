@@ -1,9 +1,9 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The table baker (docs/format.md): directional albedo E(mu, r), its
-// cosine-weighted average E_avg(r) and the split-sum DFG terms, baked with a
-// choice of integrators, each estimating its own error per texel.
+// The table baker (docs/format.md): bakes the table a BakeSpec
+// (table_spec.h) describes, with a choice of integrators, each estimating
+// its own error per texel, and integrates single texels.
 
 #ifndef BRDFBAKE_BAKE_H_
 #define BRDFBAKE_BAKE_H_
@@ -16,174 +16,16 @@
 
 #include "brdfbake/estimate.h"
 #include "brdfbake/model.h"
-#include "brdfbake/models/brdf.h"
-#include "brdfbake/models/dielectric.h"
 #include "brdfbake/pixel_type.h"
+#include "brdfbake/table_spec.h"
 
 namespace brdfbake {
 
-// kSelNorm: the integral over the sphere of the squared ellipsoidal lobe
-// (model sel, [TokuyoshiHarada]) over alpha_x x alpha_y (sel_norm.h).
-// kGenSchlickS, kGenSchlickIorS (model ggx): the factor s of the
-// generalized Schlick Fresnel F = mix(F0, F90, s) over a GGX reflection
-// lobe ([Cycles]; rules/glass/gen_schlick.h), over mu x roughness x the
-// Schlick exponent (s_h = (1 - wo.h)^exponent) or x ior (s_h = (F(ior,
-// wo.h) - F0) / (1 - F0), the dielectric shape): Cycles'
-// table_ggx_gen_schlick_s and table_ggx_gen_schlick_ior_s.
-enum class TableKind { kE, kEavg, kDfg, kSelNorm, kGenSchlickS, kGenSchlickIorS };
-
-inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
-inline constexpr double kHalfPi = 1.5707963267948966;
-// kTail is the gamma axis's warp (STD over gamma, gamma in [1.500001, inf]):
-// u = (gamma - 1.5) / (gamma - 0.5) is log-linear in t,
-// u = u(min)^(1 - t) u(max)^t, so gamma = inf (u = 1) can end the axis and
-// the knee of E near gamma = 1.5 (E ~ z / (z + C), z = gamma - 1.5, with C
-// from 1e-4 to 0.1 across texels) gets slices at every scale of z.
-// kFresnelZ is the ior axis's default warp (ggx-glass): z = F0^(1/4) =
-// sqrt(|ior - 1| / (ior + 1)) is linear in t between z(min) and z(max), and
-// ior = (1 + z^2) / (1 - z^2) (the coordinate Cycles looks its glass
-// tables up with, [Cycles]; E changes about evenly in it, and the whole
-// range from ior 1 (z = 0) to 100 (z = 0.99) fits one axis).
-// kSchlickZ is the exponent axis's warp (gen_schlick_s): z = 5 / (exponent
-// + 5) linear in t between z(min) and z(max) (exponent = inf is z = 0), and
-// exponent = 5 (1 - z) / z: Cycles' lookup coordinate, z = 1/2 at Schlick's
-// 5. The axis may run either way (Cycles' runs from inf down to 0).
-// kTwoSided is an ior axis over both sides of an interface (edges, an even
-// size N = 2H, min < 1 < max): entries 0 to H - 1 hold eta < 1 with 1 / eta
-// linear from 1 / min down to 1, entries H to N - 1 eta linear from 1 up to
-// max; both middle entries are 1 (OpenPBR's layout, [OpenPbrBsdf]).
-enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ, kTwoSided };
-enum class Placement { kCenters, kEdges };
-
-// quadrature: Gauss-Legendre over the sampler's unit square with the horizon
-//   crossing located per line and the rule split there, refined along a
-//   ladder of node counts until two successive rules agree to a tolerance;
-//   error from the last two rules.
-// qmc: randomized quasi-Monte Carlo (Hammersley points with independent
-//   Cranley-Patterson rotations), visible-normal importance sampling; error
-//   from the spread of the replicas.
-// mc: plain Monte Carlo with visible-normal sampling; error from the sample
-//   variance.
-// engine: the settings engines use today, N Hammersley points (1024 by
-//   default) with NDF importance sampling of the half vector; its error is
-//   measured against the quadrature.
-enum class IntegratorKind { kQuadrature, kQmc, kMc, kEngine };
-
-const char* TableName(TableKind t);
-const char* WarpName(Warp w);
-const char* PlacementName(Placement p);
-const char* IntegratorName(IntegratorKind k);
-// Parsers throw std::invalid_argument naming the bad value.
-TableKind ParseTable(const std::string& s);
-Warp ParseWarp(const std::string& s);
-Placement ParsePlacement(const std::string& s);
-IntegratorKind ParseIntegrator(const std::string& s);
-
-struct Axis {
-  std::string name;  // "mu", "roughness" or "gamma"
-  int size = 32;
-  double min = 0, max = 1;
-  Warp warp = Warp::kLinear;
-  Placement placement = Placement::kEdges;
-  // The integrand is evaluated at max(value, clamp_min) (Cycles' tables
-  // clamp mu and roughness at 1e-4); 0 = no clamp.
-  double clamp_min = 0;
-  // ... and at most clamp_max (the ior axis only: Cycles' glass tables
-  // end at z = 1, ior = inf, baked at z = 0.99); inf = no clamp.
-  double clamp_max = kInfinity;
-
-  // docs/format.md: t = (i + 0.5) / N (centers) or i / (N - 1) (edges),
-  // value = min + (max - min) w(t); the tail warp maps t as its comment says.
-  double Value(int i) const { return ValueAt(i); }
-  // The same map at a fractional index (e.g. i + 0.5, a cell midpoint).
-  double ValueAt(double fi) const;
-  // Lists "values" (with "inf" for infinity) when the warp is tail.
-  std::string ToJson() const;
-};
-
-struct BakeSpec {
-  TableKind table = TableKind::kE;
-  ModelParams model;  // ggx, beckmann or std; alpha comes from the roughness axis
-  Masking masking = Masking::kHeightCorrelated;
-  IntegratorKind integrator = IntegratorKind::kQuadrature;
-  int samples = 0;  // max pieces of the theta_i rule (quadrature) or samples per texel; 0 = default
-  // quadrature: stop refining when two rules agree to this. 1e-7 is the
-  // precision of the float pixels the tables are stored in.
-  double tolerance = 1e-7;
-  uint64_t seed = 1;
-  Axis mu{"mu", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  Axis roughness{"roughness", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  // std only: a third axis over gamma (E and dfg: slices of mu x roughness;
-  // E_avg: rows over gamma), which then replaces model.gamma. size 0 = no
-  // gamma axis, the table is baked at model.gamma.
-  Axis gamma{"gamma", 0, 1.501, kInfinity, Warp::kTail, Placement::kEdges};
-  bool HasGammaAxis() const { return gamma.size > 0; }
-  // ggx-glass: the third axis (E: slices of mu x roughness; E_avg: rows
-  // over roughness), the relative index of refraction in [1, 100] of the
-  // medium below the view; it replaces model.ior.
-  Axis ior{"ior", 16, 1.0, 3.0, Warp::kFresnelZ, Placement::kEdges};
-  // ggx-glass: light leaving the medium (the view inside it, as Cycles'
-  // inverse tables): each slice is baked at eta = 1 / ior < 1, with total
-  // internal reflection; the axis keeps the medium's ior.
-  bool inverse = false;
-  // ggx-glass: which lobes E counts (models/dielectric.h): reflection plus
-  // refraction (the default), the reflection alone or the refraction alone.
-  DielectricPart part = DielectricPart::kBoth;
-  bool Glass() const { return model.kind == ModelKind::kGgxGlass; }
-  // gen_schlick_s: the third axis, the Schlick exponent (the default is
-  // Cycles': z = 5 / (exponent + 5) = k / 15 from exponent inf to 0, baked
-  // at z in [1e-4, 0.99], exponent 0.0505 to 49995). gen_schlick_ior_s
-  // takes the ior axis (in [1, 100], or to inf with a clamp).
-  Axis exponent{"exponent", 16, kInfinity, 0.0, Warp::kSchlickZ, Placement::kEdges, 5 * 0.01 / 0.99,
-                5 * (1 - 1e-4) / 1e-4};
-  bool GenSchlick() const { return table == TableKind::kGenSchlickS || table == TableKind::kGenSchlickIorS; }
-  // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
-  // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over
-  // mu x phi_o x roughness x anisotropy, E_avg over roughness x anisotropy.
-  // phi_o is the azimuth of wo from the tangent in radians; E is even in
-  // phi_o and symmetric about pi/2, so [0, pi/2] covers every azimuth.
-  Axis phi{"phi_o", 16, 0.0, kHalfPi, Warp::kLinear, Placement::kEdges};
-  Axis anisotropy{"anisotropy", 16, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  bool Anisotropic() const { return model.kind == ModelKind::kGgxAniso; }
-  // sel_norm: the lobe's widths, in [0, 1] (clamped below at 1e-4).
-  Axis alpha_x{"alpha_x", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  Axis alpha_y{"alpha_y", 32, 0.0, 1.0, Warp::kLinear, Placement::kEdges};
-  // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
-  // instead of the value, dfg adds it as a third channel.
-  bool complement = false;
-  bool error_channel = false;  // add a per-texel "error" channel
-  bool half = false;           // half pixels (default float)
-  int threads = 0;             // 0 = all cores, at most kMaxThreads
-  bool estimate_error = true;  // engine: measure the error against the quadrature
-  // quadrature: evaluate the integrand in double SIMD lanes (the best
-  // Highway target, or the one ForceTarget chose); false runs the double
-  // scalar reference of the same rule (`--target scalar`).
-  bool simd = true;
-
-  // Default samples for the integrator (the value used when samples == 0).
-  int EffectiveSamples() const;
-};
-
-inline constexpr int kMaxThreads = 1024;
-
-// Throws std::invalid_argument (one line, naming the bad input).
-void ValidateBakeSpec(const BakeSpec& spec);
-
-// Bytes of memory Bake() allocates for its outputs (checked before baking).
-size_t BakeOutputBytes(const BakeSpec& spec);
-// The values a bake of `spec` stores: texels times channels (with the
-// error channel).
-int64_t BakeOutputValues(const BakeSpec& spec);
-
-// Channel names sort into the intended order (OpenEXR stores channels
-// sorted by name), so a loader that takes channels by index gets
-//   E:     E (or 1-E), [error]
-//   E_avg: E_avg (or 1-E_avg), [error]
-//   dfg:   dfg.0_scale, dfg.1_bias, [dfg.2_1-E], [error]
+// One baked channel: its name, meaning and definition (ShapeOf) and values.
 struct Channel {
-  std::string name;        // EXR channel name
-  std::string meaning;     // E, 1-E, E_avg, 1-E_avg, dfg.scale, dfg.bias, error
-  std::string definition;  // one sentence, for the file header
+  std::string name;
+  Meaning meaning;
+  std::string definition;
   std::vector<double> values;  // the baked values (after the range clamp)
   std::vector<float> stored;   // the values rounded to the pixel type
   std::vector<uint16_t> half_bits;  // the same as IEEE half bits (half pixels only)
@@ -201,11 +43,6 @@ struct Table {
   std::string model_json;     // brdfbake.model
   std::string integrator_json;
 };
-
-// Stored values are clamped to the physical range: E, 1-E, E_avg and
-// 1-E_avg to [0, 1]; dfg.scale, dfg.bias >= 0 with scale + bias <= 1 in the
-// stored precision. Every claimed error covers the clamp.
-extern const char* const kStoredRange;
 
 // Progress callback: done, total (texels or rows).
 using ProgressFn = std::function<void(int64_t done, int64_t total)>;
@@ -250,9 +87,6 @@ EavgEstimate IntegrateBiasAvg(const BakeSpec& spec, double roughness);
 TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy,
                                   double mu, double phi_o);
 EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double anisotropy);
-
-// "axes fastest first: ..." and the axis map, for the brdfbake.layout attribute.
-extern const char* const kLayoutText;
 
 }  // namespace brdfbake
 

@@ -209,7 +209,7 @@ ProbeResult LookupError(const Table& t, const ProbeOptions& o) {
   const int kmu = AxisIndex(t, "mu");
   // The value channels, in order (the error channel, if any, is last).
   size_t nvalue = 0;
-  for (const Channel& c : t.channels) nvalue += c.meaning == "error" ? 0 : 1;
+  for (const Channel& c : t.channels) nvalue += c.meaning == Meaning::kError ? 0 : 1;
   std::vector<double> diff(size_t(points) * nvalue, 0.0);
   tbb::parallel_for(int64_t(0), points, [&](int64_t k) {
     // Point k: the first axis fastest.

@@ -24,7 +24,7 @@ void CompareTables(const Table& t, const Table& ref, double* max_err, double* rm
   double m = 0, s = 0;
   size_t n = 0;
   for (size_t c = 0; c < t.channels.size(); ++c) {
-    if (t.channels[c].meaning == "error") continue;
+    if (t.channels[c].meaning == Meaning::kError) continue;
     for (size_t i = 0; i < t.channels[c].values.size(); ++i) {
       const double d = t.channels[c].values[i] - ref.channels[c].values[i];
       m = std::max(m, std::abs(d));

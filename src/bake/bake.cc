@@ -43,367 +43,6 @@ namespace {
 
 }  // namespace
 
-const char* TableName(TableKind t) {
-  switch (t) {
-    case TableKind::kE: return "E";
-    case TableKind::kEavg: return "E_avg";
-    case TableKind::kDfg: return "dfg";
-    case TableKind::kSelNorm: return "sel_norm";
-    case TableKind::kGenSchlickS: return "gen_schlick_s";
-    case TableKind::kGenSchlickIorS: return "gen_schlick_ior_s";
-  }
-  return "E";
-}
-const char* WarpName(Warp w) {
-  switch (w) {
-    case Warp::kLinear: return "linear";
-    case Warp::kSquare: return "square";
-    case Warp::kSqrt: return "sqrt";
-    case Warp::kTail: return "tail";
-    case Warp::kFresnelZ: return "fresnel-z";
-    case Warp::kSchlickZ: return "schlick-z";
-    case Warp::kTwoSided: return "two-sided";
-  }
-  return "linear";
-}
-const char* PlacementName(Placement p) {
-  return p == Placement::kCenters ? "centers" : "edges";
-}
-const char* IntegratorName(IntegratorKind k) {
-  switch (k) {
-    case IntegratorKind::kQuadrature: return "quadrature";
-    case IntegratorKind::kQmc: return "qmc";
-    case IntegratorKind::kMc: return "mc";
-    case IntegratorKind::kEngine: return "engine";
-  }
-  return "quadrature";
-}
-
-TableKind ParseTable(const std::string& s) {
-  if (s == "E") return TableKind::kE;
-  if (s == "E_avg") return TableKind::kEavg;
-  if (s == "dfg") return TableKind::kDfg;
-  if (s == "sel_norm") return TableKind::kSelNorm;
-  if (s == "gen_schlick_s") return TableKind::kGenSchlickS;
-  if (s == "gen_schlick_ior_s") return TableKind::kGenSchlickIorS;
-  Bad("--table: unknown table '" + s + "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or gen_schlick_ior_s)" +
-      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s"},
-                 {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}, {"gen_schlick", "gen_schlick_s"}}));
-}
-Warp ParseWarp(const std::string& s) {
-  if (s == "linear") return Warp::kLinear;
-  if (s == "square") return Warp::kSquare;
-  if (s == "sqrt") return Warp::kSqrt;
-  if (s == "tail") return Warp::kTail;
-  if (s == "fresnel-z") return Warp::kFresnelZ;
-  if (s == "schlick-z") return Warp::kSchlickZ;
-  if (s == "two-sided") return Warp::kTwoSided;
-  Bad("--warp: unknown warp '" + s + "' (expected linear, square, sqrt, tail for the gamma axis, "
-      "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent axis)");
-}
-Placement ParsePlacement(const std::string& s) {
-  if (s == "centers") return Placement::kCenters;
-  if (s == "edges") return Placement::kEdges;
-  Bad("--placement: unknown placement '" + s + "' (expected centers or edges)");
-}
-IntegratorKind ParseIntegrator(const std::string& s) {
-  if (s == "quadrature") return IntegratorKind::kQuadrature;
-  if (s == "qmc") return IntegratorKind::kQmc;
-  if (s == "mc") return IntegratorKind::kMc;
-  if (s == "engine") return IntegratorKind::kEngine;
-  Bad("--integrator: unknown integrator '" + s + "' (expected quadrature, qmc, mc or engine)");
-}
-
-double Axis::ValueAt(double fi) const {
-  double t;
-  if (placement == Placement::kCenters) {
-    t = (fi + 0.5) / size;
-  } else {
-    t = size == 1 ? 0.0 : fi / (size - 1);
-  }
-  if (warp == Warp::kTail) {
-    // ln u linear in t between the ends; gamma = 1.5 + u / (1 - u), with
-    // 1 - u = -expm1(ln u) exact as u -> 1 (gamma -> inf).
-    auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
-    const double lu = (1 - t) * log_u(min) + t * log_u(max);
-    if (lu >= 0) return kInfinity;
-    return 1.5 + std::exp(lu) / -std::expm1(lu);
-  }
-  if (warp == Warp::kFresnelZ) {
-    // z = sqrt(|ior - 1| / (ior + 1)) linear in t; the axis lies on one
-    // side of 1 (ValidateBakeSpec), where ior(z) is monotonic.
-    if (t == 0) return min;
-    if (t == 1) return max;
-    const double z = (1 - t) * FresnelZOfIor(min) + t * FresnelZOfIor(max), z2 = z * z;
-    return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
-  }
-  if (warp == Warp::kSchlickZ) {
-    // z = 5 / (exponent + 5) linear in t (z = 0 is exponent = inf).
-    if (t == 0) return min;
-    if (t == 1) return max;
-    const double z = (1 - t) * SchlickZOfExponent(min) + t * SchlickZOfExponent(max);
-    return z > 0 ? 5 * (1 - z) / z : kInfinity;
-  }
-  if (warp == Warp::kTwoSided) {
-    // The fractional index u (edges, N = 2H): 1 / eta linear from 1 / min
-    // at u = 0 to 1 at H - 1, eta linear from 1 at H to max at N - 1.
-    const double u = placement == Placement::kEdges ? fi : t * (size - 1);
-    const double h = size / 2;
-    if (u <= h - 1) return 1 / (1 + (1 / min - 1) * ((h - 1 - u) / (h - 1)));
-    if (u >= h) return 1 + (max - 1) * ((u - h) / (h - 1));
-    return 1;
-  }
-  double w = t;
-  if (warp == Warp::kSquare) w = t * t;
-  if (warp == Warp::kSqrt) w = std::sqrt(t);
-  return min + (max - min) * w;
-}
-
-std::string Axis::ToJson() const {
-  nlohmann::json j;
-  j["name"] = name;
-  j["size"] = size;
-  auto number = [](double v) { return std::isinf(v) ? nlohmann::json("inf") : nlohmann::json(v); };
-  j["min"] = number(min);
-  j["max"] = number(max);
-  j["warp"] = WarpName(warp);
-  j["placement"] = PlacementName(placement);
-  if (clamp_min > 0) j["clamp_min"] = clamp_min;
-  if (clamp_max < kInfinity) j["clamp_max"] = clamp_max;
-  // The warps that are not a power of t state their map and list every
-  // entry's value.
-  const char* map = nullptr;
-  switch (warp) {
-    case Warp::kTail:
-      map = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
-            "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
-      break;
-    case Warp::kSchlickZ:
-      map = "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent = 5 (1 - z) / z; "
-            "z = 0 is exponent = inf";
-      break;
-    case Warp::kTwoSided:
-      map = "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
-            "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
-      break;
-    case Warp::kFresnelZ:
-      map = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
-            "ior = (1 + z^2) / (1 - z^2)";
-      break;
-    case Warp::kLinear:
-    case Warp::kSquare:
-    case Warp::kSqrt: break;
-  }
-  if (map) {
-    j["map"] = map;
-    nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
-    j["values"] = values;
-  }
-  return j.dump();
-}
-
-int BakeSpec::EffectiveSamples() const {
-  if (samples > 0) return samples;
-  switch (integrator) {
-    case IntegratorKind::kQuadrature: return 512;
-    case IntegratorKind::kQmc: return 4096;
-    case IntegratorKind::kMc: return 4096;
-    case IntegratorKind::kEngine: return 1024;
-  }
-  return 32;
-}
-
-namespace {
-int64_t TexelCount(const BakeSpec& spec);  // below
-
-// Every axis: 1 to 8192 entries, at least 2 with edges placement.
-void CheckAxisSize(const Axis& a) {
-  if (a.size < 1 || a.size > 8192) Bad("--size: each axis must have 1 to 8192 entries");
-  if (a.placement == Placement::kEdges && a.size < 2) Bad("--size: edges placement needs at least 2 entries per axis");
-}
-}  // namespace
-
-void ValidateBakeSpec(const BakeSpec& spec) {
-  const bool aniso = spec.Anisotropic();
-  const bool glass = spec.Glass();
-  ModelParams params = spec.model;
-  if (aniso) params.kind = ModelKind::kGgx;  // its widths come from the axes
-  if (glass) params.alpha_x = params.alpha_y = 1.0;  // from the roughness axis
-  ValidateModelParams(params);
-  const ModelKind m = spec.model.kind;
-  if (glass && spec.table != TableKind::kE && spec.table != TableKind::kEavg) {
-    Bad("--table: ggx-glass bakes E and E_avg (reflection plus refraction; no dfg)");
-  }
-  if (glass && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ggx-glass tables are baked with the quadrature only (got " +
-        std::string(IntegratorName(spec.integrator)) + ")");
-  }
-  if (spec.inverse && !glass) Bad("--inverse: only ggx-glass has an inside (light leaving the medium)");
-  const bool gen_schlick = spec.GenSchlick();
-  if (gen_schlick) {
-    const std::string table = TableName(spec.table);
-    if (m != ModelKind::kGgx) {
-      Bad("--model: " + table + " is the Fresnel factor of a GGX reflection lobe (give --model ggx; got '" +
-          spec.model.name() + "')");
-    }
-    if (spec.integrator != IntegratorKind::kQuadrature) {
-      Bad("--integrator: " + table + " tables are baked with the quadrature only (got " +
-          IntegratorName(spec.integrator) + ")");
-    }
-    if (spec.complement) Bad("--complement: " + table + " stores s itself");
-  }
-  if (spec.part != DielectricPart::kBoth && !glass) {
-    Bad("--part: only ggx-glass has reflection and refraction parts (got --part " +
-        std::string(DielectricPartName(spec.part)) + ")");
-  }
-  const bool sel = spec.table == TableKind::kSelNorm;
-  if (sel != (m == ModelKind::kSel)) {
-    Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model sel"
-            : "--model sel: its table is sel_norm (--table sel_norm)");
-  }
-  if (sel && (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
-    Bad("--table sel_norm: the quadrature only, without --complement");
-  }
-  const bool sheen = m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse;
-  if (sheen && spec.table == TableKind::kDfg) {
-    Bad("--table: " + std::string(spec.model.name()) +
-        " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse "
-        "channels are its E)");
-  }
-  if (sheen && spec.complement && spec.table == TableKind::kDfg) Bad("--complement: no dfg here");
-  const bool ellipsoid = m == ModelKind::kEllipsoid;
-  if (ellipsoid && spec.table == TableKind::kDfg) {
-    Bad("--table: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
-  }
-  if (ellipsoid && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ellipsoid tables are baked with the quadrature only");
-  }
-  if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso &&
-      !sel && !ellipsoid && !sheen && !glass) {
-    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie, "
-        "disney-diffuse and ggx-glass (got '" + std::string(spec.model.name()) + "')");
-  }
-  if (aniso && spec.table == TableKind::kDfg) Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
-  if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ggx-aniso tables are baked with the quadrature only");
-  }
-  std::vector<const Axis*> axes = {&spec.roughness};
-  if (spec.table != TableKind::kEavg) axes.insert(axes.begin(), &spec.mu);
-  if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
-  if (ellipsoid) {
-    axes.clear();
-    if (spec.table == TableKind::kE) axes = {&spec.mu, &spec.phi};
-  }
-  if (aniso) {
-    if (spec.table != TableKind::kEavg) axes.insert(axes.begin() + 1, &spec.phi);
-    axes.push_back(&spec.anisotropy);
-  }
-  for (const Axis* a : axes) {
-    if (a->warp == Warp::kTail) Bad("--warp: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
-    if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
-      Bad("--warp: " + std::string(WarpName(a->warp)) + " is the " +
-          (a->warp == Warp::kFresnelZ ? "ior" : "exponent") + " axis's warp (the " + a->name +
-          " axis takes linear, square or sqrt)");
-    }
-    CheckAxisSize(*a);
-    // One entry may sit at one value (min = max), as the report's probes do.
-    const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
-    if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
-    const bool angle = a->name == "phi_o";
-    const double upper = angle ? (ellipsoid ? 2 * kPi<double> : kHalfPi) : 1.0;
-    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 ||
-        a->max > upper * (1 + 1e-15)) {
-      std::ostringstream os;
-      os << "--range: the " << a->name << " axis must satisfy 0 <= min < max <= "
-         << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1") << " (got "
-         << a->min << ":" << a->max << ")";
-      Bad(os.str());
-    }
-  }
-  if (spec.HasGammaAxis()) {
-    const Axis& g = spec.gamma;
-    if (m != ModelKind::kStudentT) {
-      Bad("--size: only std has a gamma axis (got model '" + std::string(spec.model.name()) + "')");
-    }
-    CheckAxisSize(g);
-    if (g.warp != Warp::kTail) Bad("--warp: the gamma axis takes the tail warp only");
-    const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
-    if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) || std::isinf(g.min) || !ordered) {
-      Bad("--range: the gamma axis must satisfy " + ExactText(kMinStudentTGamma<double>) +
-          " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " + ExactText(g.min) +
-          ":" + ExactText(g.max) + ")");
-    }
-  }
-  if (spec.table == TableKind::kGenSchlickS) {
-    const Axis& a = spec.exponent;
-    CheckAxisSize(a);
-    if (a.warp != Warp::kSchlickZ && a.warp != Warp::kLinear) {
-      Bad("--warp: the exponent axis takes schlick-z (z = 5 / (exponent + 5), the default) or linear (got " +
-          std::string(WarpName(a.warp)) + ")");
-    }
-    // Either direction with schlick-z (Cycles' runs from inf down to 0);
-    // every value baked must be finite: inf needs a clamp.
-    const bool ordered = a.size == 1 || a.min != a.max;
-    const bool increasing = a.warp == Warp::kLinear ? a.min < a.max || a.size == 1 : true;
-    const bool finite = std::isfinite(std::min(std::max(a.min, a.max), a.clamp_max));
-    if (!(a.min >= 0) || !(a.max >= 0) || !ordered || !increasing || !finite ||
-        !(a.clamp_min >= 0 && a.clamp_min <= a.clamp_max)) {
-      Bad("--range: the exponent axis must satisfy 0 <= min, max <= inf, min != max (inf with the "
-          "schlick-z warp and a clamp; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
-    }
-  }
-  if (glass || spec.table == TableKind::kGenSchlickIorS) {
-    const Axis& a = spec.ior;
-    CheckAxisSize(a);
-    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {
-      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default), linear or two-sided (got " +
-          std::string(WarpName(a.warp)) + ")");
-    }
-    if (a.warp == Warp::kTwoSided) {
-      if (a.placement != Placement::kEdges || a.size < 4 || a.size % 2 != 0) {
-        Bad("--size: a two-sided ior axis has edges placement and an even size of at least 4 (got " +
-            std::to_string(a.size) + ", " + PlacementName(a.placement) + ")");
-      }
-      if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) || !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
-        Bad("--range: a two-sided ior axis must satisfy 0.01 <= min < 1 < max <= 100 (got " + ExactText(a.min) + ":" +
-            ExactText(a.max) + ")");
-      }
-      if (spec.inverse) Bad("--inverse: a two-sided ior axis holds both sides already");
-    }
-    const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
-    // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
-    // clamp of at most 100 bakes its last slices; a two-sided axis holds
-    // both sides of the interface.
-    const double top = std::min(a.max, a.clamp_max);
-    if (a.warp != Warp::kTwoSided &&
-        (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max))) {
-      Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
-          "eta = 1/ior: --inverse; got " + ExactText(a.min) + ":" + ExactText(a.max) + ")");
-    }
-    if (std::isinf(a.max) && a.warp != Warp::kFresnelZ) Bad("--range: an ior axis to inf needs the fresnel-z warp");
-    if (spec.table == TableKind::kGenSchlickIorS && a.warp == Warp::kTwoSided) {
-      Bad("--warp: gen_schlick_ior_s is over ior >= 1 (the dielectric shape outside the medium): no two-sided axis");
-    }
-  }
-  if (spec.samples < 0 || spec.samples > 1 << 24) Bad("--samples must be in [1, 16777216]");
-  if (spec.integrator == IntegratorKind::kQuadrature && spec.samples > 4096) {
-    Bad("--samples: the quadrature takes at most 4096 nodes per dimension");
-  }
-  if (spec.integrator == IntegratorKind::kQmc && spec.samples != 0 && spec.samples < 16) {
-    Bad("--samples: qmc needs at least 16 samples (8 replicas of 2)");
-  }
-  if (spec.threads < 0 || spec.threads > kMaxThreads) {
-    Bad("--threads must be in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores)");
-  }
-  if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance)) Bad("--tolerance must be a finite number >= 0");
-  // A table is one image of int width and height (a 3D or 4D table stacks
-  // its slices): at most 2^31 - 1 texels.
-  const int64_t texels = TexelCount(spec);
-  if (texels > int64_t(std::numeric_limits<int>::max())) {
-    Bad("--size: " + std::to_string(texels) + " texels exceed the 2147483647 a table holds");
-  }
-}
 
 namespace {
 
@@ -1397,103 +1036,8 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
   return {f, std::abs(f - c) + err_f};
 }
 
-namespace {
-
-int ValueChannels(const BakeSpec& spec) {
-  if (spec.table == TableKind::kSelNorm) return 2;
-  return spec.table == TableKind::kDfg ? (spec.complement ? 3 : 2) : 1;
-}
-
-int64_t TexelCount(const BakeSpec& spec) {
-  if (spec.model.kind == ModelKind::kEllipsoid) {
-    return spec.table == TableKind::kEavg ? 1 : int64_t(spec.mu.size) * spec.phi.size;
-  }
-  if (spec.table == TableKind::kSelNorm) return int64_t(spec.alpha_x.size) * spec.alpha_y.size;
-  if (spec.Anisotropic()) {
-    const int64_t rs = int64_t(spec.roughness.size) * spec.anisotropy.size;
-    return spec.table == TableKind::kEavg ? rs : rs * spec.mu.size * spec.phi.size;
-  }
-  const int64_t slices = spec.Glass() || spec.table == TableKind::kGenSchlickIorS ? spec.ior.size
-                         : spec.table == TableKind::kGenSchlickS                ? spec.exponent.size
-                         : spec.HasGammaAxis()                                  ? spec.gamma.size
-                                                                                : 1;
-  return slices * (spec.table == TableKind::kEavg ? int64_t(spec.roughness.size)
-                                                  : int64_t(spec.mu.size) * spec.roughness.size);
-}
-
-const char* Definition(const std::string& meaning, const BakeSpec& spec) {
-  const bool glass = spec.Glass();
-  if (meaning == "s" && spec.table == TableKind::kGenSchlickS) {
-    return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over the visible normals h of a GGX "
-           "reflection lobe (r the reflection): the generalized Schlick Fresnel is mix(F0, F90, s); no "
-           "masking weight";
-  }
-  if (meaning == "s") {
-    return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, 1) 1{r.z > 0} dh over the "
-           "visible normals h of a GGX reflection lobe, F the exact dielectric Fresnel, F0 = ((ior - 1) / "
-           "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking weight";
-  }
-  if (glass && meaning == "E" && spec.part == DielectricPart::kReflection) {
-    return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
-           "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
-  }
-  if (glass && meaning == "E" && spec.part == DielectricPart::kTransmission) {
-    return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
-           "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
-  }
-  if (glass && meaning == "E") {
-    return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
-           "the rough dielectric, Fresnel included: reflection plus refraction";
-  }
-  if (meaning == "E") return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
-  if (meaning == "1-E") return "1 - E(mu), computed in double before rounding";
-  if (meaning == "E_avg") return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
-  if (meaning == "1-E_avg") return "1 - E_avg, computed in double before rounding";
-  if (meaning == "sel.integral") {
-    return "N = integral over the sphere of the squared ellipsoidal lobe K ([TokuyoshiHarada]); K / N "
-           "integrates to 1; independent of the lobe's rotation";
-  }
-  if (meaning == "sel.ratio") return "N / (4 pi alpha_x alpha_y): 1 for alpha_x = alpha_y";
-  if (meaning == "dfg.scale") {
-    return "integral of (f/F) (1 - Fc) cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
-           "the specular albedo is F0 scale + F90 bias";
-  }
-  if (meaning == "dfg.bias") {
-    return "integral of (f/F) Fc cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
-           "the specular albedo is F0 scale + F90 bias";
-  }
-  return "the integrator's estimate of the absolute error of this texel before storage";
-}
-
-}  // namespace
-
-const char* const kStoredRange =
-    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1] (charlie and disney-diffuse: E and E_avg "
-    "clamped to >= 0 only, neither lobe conserves energy); dfg.scale and dfg.bias clamped to >= 0 with "
-    "scale + bias <= 1 in the stored precision; brdfbake.max_abs_error covers the clamp and the "
-    "rounding to the pixel type";
-
-const char* const kLayoutText =
-    "axes fastest first: x = columns, then y = rows, then slices (a 3D table stores its 2D "
-    "slices stacked vertically); row 0 is the first row of the data window; channels in the "
-    "order of brdfbake.channel_order; axis i of size N: t = (i + 0.5) / N (centers) or "
-    "t = i / (N - 1) (edges), value = min + (max - min) w(t), w(t) = t (linear), t^2 (square), "
-    "sqrt(t) (sqrt)";
-
 void ReleaseBakeCaches() { ClearStdAzimuthMoments(); }
 
-size_t BakeOutputBytes(const BakeSpec& spec) {
-  const size_t n = size_t(TexelCount(spec));
-  const size_t channels = size_t(ValueChannels(spec)) + (spec.error_channel ? 1 : 0);
-  // values (double), stored (float) and half bits per channel, plus the
-  // error vector.
-  const size_t half = spec.half ? sizeof(uint16_t) : 0;
-  return n * (channels * (sizeof(double) + sizeof(float) + half) + sizeof(double));
-}
-
-int64_t BakeOutputValues(const BakeSpec& spec) {
-  return TexelCount(spec) * (ValueChannels(spec) + (spec.error_channel ? 1 : 0));
-}
 
 Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   ValidateBakeSpec(spec);
@@ -1505,102 +1049,35 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   const Axis& ax_mu = spec.mu;
   const Axis& ax_r = spec.roughness;
   const bool eavg = spec.table == TableKind::kEavg;
-  if (eavg) {
-    t.axes = {ax_r};
-    t.width = ax_r.size;
-    t.height = 1;
-  } else {
-    t.axes = {ax_mu, ax_r};
-    t.width = ax_mu.size;
-    t.height = ax_r.size;
-  }
-  // One spec per gamma slice (model.gamma set from the axis), so every
-  // slice is baked exactly as a table at that gamma would be.
+  const bool sel = spec.table == TableKind::kSelNorm;
+  const bool ellipsoid = spec.model.kind == ModelKind::kEllipsoid;
+  const bool aniso = spec.Anisotropic();
+  TableShape shape = ShapeOf(spec);
+  t.axes = std::move(shape.axes);
+  t.width = int(shape.width);
+  t.height = int(shape.height);
+  // One spec per slice of a parameter axis, so every slice is baked
+  // exactly as a table at that parameter would be: gamma (model.gamma set
+  // from the axis), ggx-glass's ior (eta = ior, or 1 / ior inside);
+  // gen_schlick's slices are set up per texel (GenSchlickSlice).
   std::vector<BakeSpec> slice_specs(1, spec);
+  if (!t.axes.empty() && ParameterAxis(t.axes.back())) slice_specs.assign(size_t(t.axes.back().size), spec);
   if (spec.HasGammaAxis()) {
-    t.axes.push_back(spec.gamma);
-    t.height *= spec.gamma.size;
-    slice_specs.assign(size_t(spec.gamma.size), spec);
     for (int k = 0; k < spec.gamma.size; ++k) slice_specs[k].model.gamma = spec.gamma.Value(k);
   }
-  // ggx-glass likewise per ior slice, at eta = ior (or 1 / ior inside).
   if (spec.Glass()) {
-    t.axes.push_back(spec.ior);
-    t.height *= spec.ior.size;
-    slice_specs.assign(size_t(spec.ior.size), spec);
     for (int k = 0; k < spec.ior.size; ++k) {
       const double ior = std::min(spec.ior.Value(k), spec.ior.clamp_max);
       slice_specs[k].model.ior = spec.inverse ? 1 / ior : ior;
     }
   }
-  // gen_schlick per exponent or ior slice (GenSchlickSlice).
-  if (spec.GenSchlick()) {
-    t.axes.push_back(spec.table == TableKind::kGenSchlickS ? spec.exponent : spec.ior);
-    t.height *= t.axes.back().size;
-    slice_specs.assign(size_t(t.axes.back().size), spec);
-  }
-  const bool sel = spec.table == TableKind::kSelNorm;
-  if (sel) {
-    t.axes = {spec.alpha_x, spec.alpha_y};
-    t.width = spec.alpha_x.size;
-    t.height = spec.alpha_y.size;
-  }
-  const bool ellipsoid = spec.model.kind == ModelKind::kEllipsoid;
-  if (ellipsoid) {
-    t.axes.clear();
-    t.width = t.height = 1;
-    if (!eavg) {
-      t.axes = {ax_mu, spec.phi};
-      t.width = ax_mu.size;
-      t.height = spec.phi.size;
-    }
-  }
-  const bool aniso = spec.Anisotropic();
-  if (aniso) {
-    if (eavg) {
-      t.axes = {ax_r, spec.anisotropy};
-      t.height = spec.anisotropy.size;
-    } else {
-      t.axes = {ax_mu, spec.phi, ax_r, spec.anisotropy};
-      t.height = spec.phi.size * ax_r.size * spec.anisotropy.size;
-    }
-  }
-  std::vector<std::string> meanings;
-  if (spec.GenSchlick()) {
-    meanings = {"s"};
-  } else if (spec.table == TableKind::kE) {
-    meanings = {spec.complement ? "1-E" : "E"};
-  } else if (eavg) {
-    meanings = {spec.complement ? "1-E_avg" : "E_avg"};
-  } else if (sel) {
-    // "sel.0_integral" sorts before "sel.1_ratio" (OpenEXR sorts channels).
-    meanings = {"sel.integral", "sel.ratio"};
-  } else {
-    meanings = {"dfg.scale", "dfg.bias"};
-    if (spec.complement) meanings.push_back("1-E");
-  }
-  const int64_t total = TexelCount(spec);
+  const int64_t total = shape.Texels();
   std::vector<double> error;
   // Every output buffer is allocated before the bake: a memory failure
   // comes first, not after the work.
   try {
-    for (size_t c = 0; c < meanings.size(); ++c) {
-      std::string name = meanings[c];
-      if (spec.table == TableKind::kDfg) {
-        name = "dfg." + std::to_string(c) + "_" + (c == 2 ? "1-E" : meanings[c].substr(4));
-      }
-      if (sel) name = "sel." + std::to_string(c) + "_" + meanings[c].substr(4);
-      t.channels.push_back({name, meanings[c], Definition(meanings[c], spec), {}, {}, {}});
-    }
-    if (spec.error_channel) {
-      // In the table's layer when it has one (dfg., sel.): a reader that
-      // lists channels layer by layer (OpenImageIO puts unlayered channels
-      // first) then sees the order of brdfbake.channel_order.
-      const std::string n = std::to_string(meanings.size());
-      const std::string name = spec.table == TableKind::kDfg ? "dfg." + n + "_error"
-                               : sel                         ? "sel." + n + "_error"
-                                                             : "error";
-      t.channels.push_back({name, "error", Definition("error", spec), {}, {}, {}});
+    for (ChannelSpec& c : shape.channels) {
+      t.channels.push_back({std::move(c.name), c.meaning, std::move(c.definition), {}, {}, {}});
     }
     for (Channel& c : t.channels) {
       c.values.resize(size_t(total));
@@ -1713,7 +1190,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
 
   // Rounding to the pixel type, with dfg's scale + bias <= 1 kept in the
   // stored precision; the claim adds each texel's rounding to its error.
-  const size_t nv = meanings.size();
+  const size_t nv = size_t(shape.value_channels);
   const PixelType pixel = spec.half ? PixelType::kHalf : PixelType::kFloat;
   double claim = 0;
   for (int64_t i = 0; i < total; ++i) {

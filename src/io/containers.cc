@@ -37,7 +37,7 @@
 namespace brdfbake {
 namespace {
 
-const Channel* FindMeaning(const Table& t, const std::string& meaning) {
+const Channel* FindMeaning(const Table& t, Meaning meaning) {
   for (const Channel& c : t.channels) {
     if (c.meaning == meaning) return &c;
   }
@@ -48,13 +48,13 @@ const Channel* FindMeaning(const Table& t, const std::string& meaning) {
 // Returns false when the table does not hold it.
 struct SourceReader {
   const Table& t;
-  const Channel* e = FindMeaning(t, "E");
-  const Channel* one_minus_e = FindMeaning(t, "1-E");
-  const Channel* eavg = FindMeaning(t, "E_avg");
-  const Channel* one_minus_eavg = FindMeaning(t, "1-E_avg");
-  const Channel* scale = FindMeaning(t, "dfg.scale");
-  const Channel* bias = FindMeaning(t, "dfg.bias");
-  const Channel* gen_schlick = FindMeaning(t, "s");
+  const Channel* e = FindMeaning(t, Meaning::kE);
+  const Channel* one_minus_e = FindMeaning(t, Meaning::kOneMinusE);
+  const Channel* eavg = FindMeaning(t, Meaning::kEavg);
+  const Channel* one_minus_eavg = FindMeaning(t, Meaning::kOneMinusEavg);
+  const Channel* scale = FindMeaning(t, Meaning::kDfgScale);
+  const Channel* bias = FindMeaning(t, Meaning::kDfgBias);
+  const Channel* gen_schlick = FindMeaning(t, Meaning::kS);
 
   bool Has(Source s) const {
     switch (s) {
@@ -96,14 +96,20 @@ struct SourceReader {
   }
 };
 
-Source SourceOfMeaning(const std::string& m) {
-  if (m == "E") return Source::kE;
-  if (m == "1-E") return Source::kOneMinusE;
-  if (m == "E_avg") return Source::kEavg;
-  if (m == "1-E_avg") return Source::kOneMinusEavg;
-  if (m == "dfg.scale") return Source::kScale;
-  if (m == "s") return Source::kS;
-  return Source::kBias;
+Source SourceOfMeaning(Meaning m) {
+  switch (m) {
+    case Meaning::kE: return Source::kE;
+    case Meaning::kOneMinusE: return Source::kOneMinusE;
+    case Meaning::kEavg: return Source::kEavg;
+    case Meaning::kOneMinusEavg: return Source::kOneMinusEavg;
+    case Meaning::kDfgScale: return Source::kScale;
+    case Meaning::kDfgBias: return Source::kBias;
+    case Meaning::kS: return Source::kS;
+    case Meaning::kSelIntegral:
+    case Meaning::kSelRatio:
+    case Meaning::kError: break;
+  }
+  Bad(std::string("the ") + MeaningName(m) + " channel has no image layout (sel_norm tables are written as their own EXR only: no rgba, other containers or shaders)");
 }
 
 void PutU32(std::string* out, uint32_t v) {
@@ -448,7 +454,7 @@ Container ContainerFromPath(const std::string& path) {
 ImageLayout DefaultLayout(const Table& table) {
   ImageLayout l;
   for (const Channel& c : table.channels) {
-    if (c.meaning == "error") continue;
+    if (c.meaning == Meaning::kError) continue;
     l.channels.push_back({c.name, SourceOfMeaning(c.meaning)});
   }
   l.pixel = table.spec.half ? PixelType::kHalf : PixelType::kFloat;

@@ -90,9 +90,9 @@ void WriteExr(const Table& table, const std::string& path) {
   nlohmann::json info = nlohmann::json::array();
   for (size_t i = 0; i < table.channels.size(); ++i) {
     const Channel& c = table.channels[i];
-    channels[c.name] = c.meaning;
+    channels[c.name] = MeaningName(c.meaning);
     order.push_back(c.name);
-    info.push_back({{"index", i}, {"name", c.name}, {"meaning", c.meaning}, {"definition", c.definition}});
+    info.push_back({{"index", i}, {"name", c.name}, {"meaning", MeaningName(c.meaning)}, {"definition", c.definition}});
   }
   put("brdfbake.channels", channels.dump());
   put("brdfbake.channel_order", order.dump());

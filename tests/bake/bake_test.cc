@@ -115,9 +115,9 @@ TEST(BakeTest, DfgSumsToE) {
   const Table e = Bake(spec);
   ASSERT_EQ(dfg.channels.size(), 2u);
   EXPECT_EQ(dfg.channels[0].name, "dfg.0_scale");
-  EXPECT_EQ(dfg.channels[0].meaning, "dfg.scale");
+  EXPECT_EQ(dfg.channels[0].meaning, Meaning::kDfgScale);
   EXPECT_EQ(dfg.channels[1].name, "dfg.1_bias");
-  EXPECT_EQ(dfg.channels[1].meaning, "dfg.bias");
+  EXPECT_EQ(dfg.channels[1].meaning, Meaning::kDfgBias);
   for (size_t i = 0; i < e.channels[0].values.size(); ++i) {
     const double sum = dfg.channels[0].values[i] + dfg.channels[1].values[i];
     // E comes from the one-dimensional rule (azimuth in closed form), dfg

@@ -556,7 +556,7 @@ TEST(GenSchlickTableTest, SlicesAreTheRuleAtTheirShape) {
     const Table t = Bake(s);
     const Axis& z = t.axes.back();
     ASSERT_EQ(z.name, kind == TableKind::kGenSchlickS ? "exponent" : "ior");
-    ASSERT_EQ(t.channels[0].meaning, "s");
+    ASSERT_EQ(t.channels[0].meaning, Meaning::kS);
     for (int k = 0; k < z.size; ++k) {
       const GenSchlickShape shape = kind == TableKind::kGenSchlickS
                                         ? GenSchlickShape{std::clamp(z.Value(k), z.clamp_min, z.clamp_max), 1}

@@ -814,10 +814,10 @@ TEST(RangeTest, StoredValuesStayInTheUnitInterval) {
     for (size_t i = 0; i < n; ++i) {
       double sum = 0;
       for (const Channel& ch : t.channels) {
-        if (ch.meaning == "error") continue;
+        if (ch.meaning == brdfbake::Meaning::kError) continue;
         ASSERT_GE(ch.stored[i], 0.0f) << ch.name;
         ASSERT_LE(ch.stored[i], 1.0f) << ch.name;
-        if (ch.meaning == "dfg.scale" || ch.meaning == "dfg.bias") sum += ch.stored[i];
+        if (ch.meaning == brdfbake::Meaning::kDfgScale || ch.meaning == brdfbake::Meaning::kDfgBias) sum += ch.stored[i];
         if (c.half) {
           EXPECT_EQ(float(Imath::half(ch.stored[i])), ch.stored[i]);
         }

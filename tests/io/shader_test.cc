@@ -463,11 +463,11 @@ void CheckResults(const Case& c, const Baked& b, const Points& p, const std::vec
       }
       // dfg: (scale, bias); E, E_avg, s: the value (1 - a stored complement).
       for (const Channel& ch : t.channels) {
-        if (ch.meaning == "dfg.scale" || ch.meaning == "dfg.bias" || ch.meaning == "E" ||
-            ch.meaning == "E_avg" || ch.meaning == "s") {
+        if (ch.meaning == brdfbake::Meaning::kDfgScale || ch.meaning == brdfbake::Meaning::kDfgBias || ch.meaning == brdfbake::Meaning::kE ||
+            ch.meaning == brdfbake::Meaning::kEavg || ch.meaning == brdfbake::Meaning::kS) {
           stored.push_back(ch.values[flat]);
         }
-        if (ch.meaning == "1-E" || ch.meaning == "1-E_avg") stored.push_back(1 - ch.values[flat]);
+        if (ch.meaning == brdfbake::Meaning::kOneMinusE || ch.meaning == brdfbake::Meaning::kOneMinusEavg) stored.push_back(1 - ch.values[flat]);
       }
     }
     for (size_t k = 0; k < model.size(); ++k) {

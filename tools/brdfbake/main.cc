@@ -597,21 +597,22 @@ struct BakeOptions {
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
     // std without --gamma takes one more --size entry: the gamma axis.
     const bool gamma_ok = spec.model.kind == brdfbake::ModelKind::kStudentT && !Given(app, "--gamma");
-    const size_t entries = !Given(app, "--size") || size.empty()
-                               ? 0
-                               : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
-    const size_t plain = eavg ? 1 : 2;
+    const bool given = Given(app, "--size");
+    const size_t entries = !given || size.empty() ? 0 : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const bool gen_schlick = spec.GenSchlick();
-    if (entries == plain + 1 && !gamma_ok && spec.model.kind != brdfbake::ModelKind::kGgxAniso &&
-        spec.model.kind != brdfbake::ModelKind::kGgxGlass && !gen_schlick) {
-      Bad(std::string("--size: expected ") + (eavg ? "N" : "WxH (mu x roughness, e.g. 32x32)") +
-          " (got '" + size + "'); the gamma axis, one more entry, exists only for std without --gamma");
-    }
-    const bool gamma_axis = gamma_ok && entries == plain + 1;
     const bool aniso = spec.model.kind == brdfbake::ModelKind::kGgxAniso;
     const bool glass = spec.model.kind == brdfbake::ModelKind::kGgxGlass;
     const bool sel = spec.table == brdfbake::TableKind::kSelNorm;
     const bool ellipsoid = spec.model.kind == brdfbake::ModelKind::kEllipsoid;
+    // E, dfg or E_avg over mu and roughness, with an optional gamma axis.
+    const bool plain_table = !aniso && !glass && !gen_schlick && !sel && !ellipsoid;
+    if (ellipsoid && eavg && given) Bad("--size: the ellipsoid's E_avg is one value (no axes)");
+    if (entries == (eavg ? 2u : 3u) && !gamma_ok && !aniso && !glass && !gen_schlick) {
+      Bad("--size: expected " + brdfbake::SizeForm(spec) + " (got '" + size +
+          "'); the gamma axis, one more entry, exists only for std without --gamma");
+    }
+    const bool gamma_axis = gamma_ok && entries == (eavg ? 2u : 3u);
+    if (gamma_axis) spec.gamma.size = 1;  // an axis of the table now; its size comes from --size
     if (!for_report) {
       for (const char* o : {"--alpha-x", "--alpha-y", "--theta-x", "--theta-y", "--theta-z"}) {
         if (Given(app, o) && !ellipsoid) {
@@ -626,106 +627,35 @@ struct BakeOptions {
       spec.model.theta_y = theta_y_deg * kDegree;
       spec.model.theta_z = theta_z_deg * kDegree;
       spec.phi.max = 2 * brdfbake::kPi<double>;  // no azimuthal symmetry
-      if (eavg) {
-        if (Given(app, "--size")) Bad("--size: the ellipsoid's E_avg is one value (no axes)");
-      } else if (Given(app, "--size")) {
-        const std::vector<int> n = ParseSize(size, 2, "WxH (mu x phi_o, e.g. 64x64)");
-        spec.mu.size = n[0];
-        spec.phi.size = n[1];
-      }
-    } else if (sel) {
-      if (Given(app, "--size")) {
-        const std::vector<int> n = ParseSize(size, 2, "WxH (alpha_x x alpha_y, e.g. 32x32)");
-        spec.alpha_x.size = n[0];
-        spec.alpha_y.size = n[1];
-      }
-    } else if (gen_schlick) {
-      // mu x roughness x exponent (or ior).
-      const std::vector<int> n = !Given(app, "--size")
-                                     ? std::vector<int>{16, 16, 16}
-                                     : ParseSize(size, 3,
-                                                 spec.table == brdfbake::TableKind::kGenSchlickS
-                                                     ? "WxHxD (mu x roughness x exponent, e.g. 16x16x16)"
-                                                     : "WxHxD (mu x roughness x ior, e.g. 16x16x16)");
-      spec.mu.size = n[0];
-      spec.roughness.size = n[1];
-      (spec.table == brdfbake::TableKind::kGenSchlickS ? spec.exponent : spec.ior).size = n[2];
-    } else if (glass) {
-      // E: mu x roughness x ior; E_avg: roughness x ior.
-      const std::vector<int> n =
-          !Given(app, "--size")
-              ? (eavg ? std::vector<int>{32, 32} : std::vector<int>{32, 32, 32})
-              : ParseSize(size, eavg ? 2 : 3,
-                          eavg ? "NxD (roughness x ior, e.g. 32x16)"
-                               : "WxHxD (mu x roughness x ior, e.g. 32x32x16)");
-      if (eavg) {
-        spec.roughness.size = n[0];
-        spec.ior.size = n[1];
-      } else {
-        spec.mu.size = n[0];
-        spec.roughness.size = n[1];
-        spec.ior.size = n[2];
-      }
-    } else if (aniso) {
-      // E: mu x phi_o x roughness x anisotropy; E_avg: roughness x anisotropy.
-      const std::vector<int> n =
-          !Given(app, "--size")
-              ? (eavg ? std::vector<int>{32, 16}
-                      : for_report ? std::vector<int>{12, 7, 10, 8} : std::vector<int>{32, 16, 32, 16})
-              : ParseSize(size, eavg ? 2 : 4,
-                          eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
-                               : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)");
-      if (eavg) {
-        spec.roughness.size = n[0];
-        spec.anisotropy.size = n[1];
-      } else {
-        spec.mu.size = n[0];
-        spec.phi.size = n[1];
-        spec.roughness.size = n[2];
-        spec.anisotropy.size = n[3];
-      }
-    } else if (eavg) {
-      if (!Given(app, "--size")) {
-        spec.roughness.size = for_report ? 16 : 32;
-      } else if (size.find('x') != std::string::npos && !gamma_axis) {
-        Bad("--size: E_avg has one axis (roughness): expected N, e.g. --size 32 (got '" + size + "')");
-      } else {
-        const std::vector<int> n = ParseSize(size, gamma_axis ? 2 : 1, gamma_axis ? "NxD" : "N");
-        spec.roughness.size = n[0];
-        if (gamma_axis) spec.gamma.size = n[1];
-      }
+    }
+    if (plain_table && eavg && given && size.find('x') != std::string::npos && !gamma_axis) {
+      Bad("--size: E_avg has one axis (roughness): expected N, e.g. --size 32 (got '" + size + "')");
+    }
+    // The table's axes in --size order (brdfbake::TableAxes), and their sizes.
+    const std::vector<brdfbake::Axis*> named = brdfbake::TableAxes(&spec);
+    std::vector<int> n;
+    if (given) {
+      std::string form = brdfbake::SizeForm(spec);
+      if (plain_table && gamma_ok && !gamma_axis && !eavg) form += " or WxHxD (x gamma)";
+      n = ParseSize(size, named.size(), form.c_str());
     } else {
-      const std::vector<int> wh =
-          gamma_axis ? ParseSize(size, 3, "WxHxD (mu x roughness x gamma, e.g. 32x32x16)")
-                     : ParseSize(size, 2,
-                                 gamma_ok ? "WxH (mu x roughness, e.g. 32x32) or WxHxD (x gamma)"
-                                          : "WxH (mu x roughness, e.g. 32x32)");
-      spec.mu.size = wh[0];
-      spec.roughness.size = wh[1];
-      if (gamma_axis) spec.gamma.size = wh[2];
+      n = brdfbake::DefaultSizes(spec);
+      // report's own defaults: a smaller probe of the same table.
+      if (for_report && plain_table) n.assign(n.size(), 16);
+      if (for_report && aniso && !eavg) n = {12, 7, 10, 8};
     }
+    for (size_t i = 0; i < named.size(); ++i) named[i]->size = n[i];
     const brdfbake::Placement pl = brdfbake::ParsePlacement(placement);
-    spec.mu.placement = spec.roughness.placement = spec.gamma.placement = spec.ior.placement = pl;
-    spec.exponent.placement = pl;
-    spec.phi.placement = spec.anisotropy.placement = pl;
-    spec.alpha_x.placement = spec.alpha_y.placement = pl;
-    // Per-axis settings: "value" for every axis of the table but gamma, or
-    // "axis=value"; each axis at most once.
-    std::vector<brdfbake::Axis*> axes = {&spec.roughness};
-    if (!eavg) axes.insert(axes.begin(), &spec.mu);
-    if (aniso) {
-      if (!eavg) axes.insert(axes.begin() + 1, &spec.phi);
-      axes.push_back(&spec.anisotropy);
+    for (brdfbake::Axis* a : {&spec.mu, &spec.roughness, &spec.gamma, &spec.ior, &spec.exponent, &spec.phi,
+                              &spec.anisotropy, &spec.alpha_x, &spec.alpha_y}) {
+      a->placement = pl;
     }
-    if (sel) axes = {&spec.alpha_x, &spec.alpha_y};
-    if (ellipsoid) {
-      axes.clear();
-      if (!eavg) axes = {&spec.mu, &spec.phi};
+    // Per-axis settings: "value" for every view and lobe axis of the table
+    // (not gamma, ior or exponent), or "axis=value"; each axis at most once.
+    std::vector<brdfbake::Axis*> axes;
+    for (brdfbake::Axis* a : named) {
+      if (!brdfbake::ParameterAxis(*a)) axes.push_back(a);
     }
-    std::vector<brdfbake::Axis*> named = axes;
-    if (gamma_axis) named.push_back(&spec.gamma);
-    if (glass || spec.table == brdfbake::TableKind::kGenSchlickIorS) named.push_back(&spec.ior);
-    if (spec.table == brdfbake::TableKind::kGenSchlickS) named.push_back(&spec.exponent);
     auto per_axis = [&](const char* opt, const std::string& text, bool plain_ok,
                         const std::function<void(brdfbake::Axis*, const std::string&)>& set) {
       std::vector<std::string> seen;
@@ -743,16 +673,11 @@ struct BakeOptions {
             if (a->name == name) targets.push_back(a);
           }
           if (targets.empty()) {
-            std::string expected = std::string(eavg ? "roughness" : "mu or roughness") +
-                                   (gamma_axis ? " or gamma" : "");
-            if (aniso) expected = eavg ? "roughness or anisotropy" : "mu, phi_o, roughness or anisotropy";
-            if (glass) expected = eavg ? "roughness or ior" : "mu, roughness or ior";
-            if (gen_schlick) {
-              expected = spec.table == brdfbake::TableKind::kGenSchlickS ? "mu, roughness or exponent"
-                                                                         : "mu, roughness or ior";
+            std::string expected;
+            for (size_t k = 0; k < named.size(); ++k) {
+              expected += (k == 0 ? "" : k + 1 == named.size() ? " or " : ", ") + named[k]->name;
             }
-            if (sel) expected = "alpha_x or alpha_y";
-            if (ellipsoid) expected = eavg ? "none (E_avg is one value)" : "mu or phi_o";
+            if (named.empty()) expected = "none (E_avg is one value)";
             Bad(std::string(opt) + ": " +
                 (eavg && name == "mu" ? std::string("E_avg has no mu axis (its one axis is roughness)")
                  : name == "gamma"
@@ -1045,6 +970,9 @@ int RunBake(const BakeOptions& opts) {
     Bad("--channels: unknown value '" + opts.channels + "' (expected named or rgba)");
   }
   const bool rgba = opts.channels == "rgba";
+  if (rgba && spec.table == brdfbake::TableKind::kSelNorm) {
+    Bad("--channels rgba: sel_norm tables are written as their own EXR channels only");
+  }
   if (rgba && spec.error_channel) {
     Bad("--channels rgba: the error channel has no place among R, G, B and A; bake it with --channels named");
   }
