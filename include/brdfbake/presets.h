@@ -12,6 +12,7 @@
 #include "brdfbake/bake.h"
 #include "brdfbake/containers.h"
 #include "brdfbake/shaders.h"
+#include "brdfbake/table_files.h"
 
 namespace brdfbake {
 
@@ -81,17 +82,10 @@ struct PresetRun {
   std::vector<ShaderLanguage> shaders;
 };
 
-// A file a preset bake writes: its path, the table it holds (-1 for the
-// shared header), what it is ("dfg (bevy)", "glsl lookup of dfg"), and
-// either the container it is written in or the language of its lookup.
-struct PresetFile {
-  std::string path;
-  int table = -1;
-  std::string what;
-  Container container = Container::kHeader;
-  bool lookup = false;
-  ShaderLanguage language = ShaderLanguage::kGlsl;  // when `lookup`
-};
+// A file a preset bake writes (table_files.h): a table's container, a
+// table's lookup (named by its symbol, the engine's own files often hold
+// several tables), or (table -1) the engine's header of every table.
+using PresetFile = OutputFile;
 
 // The files `run` writes, in order, so that each can be checked before any
 // work. Throws std::invalid_argument for a --format no table of the engine

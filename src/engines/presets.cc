@@ -608,14 +608,15 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
   for (size_t k = 0; k < preset.tables.size(); ++k) {
     const PresetTable& pt = preset.tables[k];
     if (!pt.file.empty()) {
+      const Container c = ContainerFor(preset, pt, run.format);
       files.push_back({TablePath(preset, pt, run), int(k),
-                       std::string(TableName(pt.spec.table)) + " (" + preset.name + ")",
-                       ContainerFor(preset, pt, run.format)});
+                       std::string(TableName(pt.spec.table)) + " (" + preset.name + ")", c, false,
+                       ShaderLanguage::kGlsl, pt.symbol, false, c == Container::kKtx2 ? pt.ktx2_zstd_level : 0});
     }
     for (ShaderLanguage l : run.shaders) {
       files.push_back({ShaderFile(run, pt, l), int(k),
                        std::string(ShaderLanguageName(l)) + " lookup of " + pt.symbol, Container::kHeader, true,
-                       l});
+                       l, "brdfbake_" + pt.symbol});
     }
   }
   bool any_file = false;
@@ -744,16 +745,11 @@ void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vec
     const PresetTable& pt = preset.tables[f.table];
     const Table& t = tables[f.table];
     const Image& im = images[f.table];
-    if (f.lookup) {
-      WriteFileAtomically(f.path, ShaderFunction(t, im, f.language, "brdfbake_" + pt.symbol));
-      continue;
-    }
-    const Container c = f.container;
-    if (c == pt.container && pt.form == EngineForm::kThreeDfgModule) {
+    if (!f.lookup && f.container == pt.container && pt.form == EngineForm::kThreeDfgModule) {
       WriteFileAtomically(f.path, ThreeDfgModule(t, im, preset.name));
       continue;
     }
-    WriteImage(t, im, c, f.path, pt.symbol, preset.name, c == Container::kKtx2 ? pt.ktx2_zstd_level : 0);
+    WriteOutputFile(f, t, im, preset.name);
   }
 }
 

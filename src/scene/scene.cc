@@ -969,6 +969,16 @@ PresetRun ScenePresetRun(const Scene& scene, const std::string& dir) {
   return run;
 }
 
+// The files of a table a scene writes without a preset: its container
+// (the table's own EXR, or the engine's format), a C header and lookups
+// as the scene's engine asks.
+std::vector<OutputFile> OwnFilesOf(const Scene& scene, const Slot& slot, const std::string& dir, int table) {
+  const std::string file = TableFile(scene, slot);
+  const Container c = scene.engine.format.empty() ? Container::kExr : ParseContainer(scene.engine.format);
+  return OwnTableFiles(dir + "/" + file, c, true, scene.engine.header, scene.engine.shaders,
+                       "brdfbake_" + Identifier(Stem(file)), table);
+}
+
 // Every file written for `slots` into dir, then the manifest; with a
 // preset, PresetFiles' list.
 std::vector<std::string> FilesOf(const Scene& scene, const std::vector<Slot>& slots, const std::string& dir) {
@@ -978,11 +988,8 @@ std::vector<std::string> FilesOf(const Scene& scene, const std::vector<Slot>& sl
       files.push_back(f.path);
     }
   } else {
-    for (const Slot& slot : slots) {
-      const std::string f = TableFile(scene, slot);
-      files.push_back(dir + "/" + f);
-      if (scene.engine.header) files.push_back(dir + "/" + Stem(f) + ".h");
-      for (ShaderLanguage l : scene.engine.shaders) files.push_back(dir + "/" + Stem(f) + "." + ShaderLanguageName(l));
+    for (size_t i = 0; i < slots.size(); ++i) {
+      for (const OutputFile& f : OwnFilesOf(scene, slots[i], dir, int(i))) files.push_back(f.path);
     }
   }
   files.push_back(dir + "/manifest.json");
@@ -2133,26 +2140,18 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
       }
     }
   } else {
-    const Container c = scene.engine.format.empty() ? Container::kExr : ParseContainer(scene.engine.format);
     for (size_t i = 0; i < plan.tables.size(); ++i) {
       const PlannedTable& p = plan.tables[i];
-      const std::string file = TableFile(scene, slots[i]);
-      own[i] = file;
-      const std::string symbol = "brdfbake_" + Identifier(Stem(file));
       const Image im = ArrangeTable(p.table, p.layout);
-      if (c == Container::kExr) {
-        WriteExr(p.table, dir + "/" + file);
-      } else {
-        WriteImage(p.table, im, c, dir + "/" + file, symbol, "");
-      }
-      if (scene.engine.header) {
-        WriteImage(p.table, im, Container::kHeader, dir + "/" + Stem(file) + ".h", symbol, "");
-        extra[i].push_back(Stem(file) + ".h");
-      }
-      for (ShaderLanguage l : scene.engine.shaders) {
-        const std::string f = Stem(file) + "." + ShaderLanguageName(l);
-        WriteFileAtomically(dir + "/" + f, ShaderFunction(p.table, im, l, symbol));
-        extra[i].push_back(f);
+      const std::vector<OutputFile> files = OwnFilesOf(scene, slots[i], dir, int(i));
+      for (const OutputFile& f : files) {
+        WriteOutputFile(f, p.table, im, "");
+        const std::string name = f.path.substr(dir.size() + 1);  // dir + "/" + name
+        if (&f == &files.front()) {
+          own[i] = name;
+        } else {
+          extra[i].push_back(name);
+        }
       }
     }
   }

@@ -41,6 +41,7 @@
 #include "brdfbake/report.h"
 #include "brdfbake/scene.h"
 #include "brdfbake/shaders.h"
+#include "brdfbake/table_files.h"
 #include "brdfbake/stability.h"
 #include "brdfbake/targets.h"
 #include "brdfbake/version.h"
@@ -774,11 +775,6 @@ class PlanProgress {
   std::chrono::steady_clock::time_point start_;
 };
 
-// The file beside `path` that holds its shader function: dfg.ktx2 -> dfg.glsl.
-std::string ShaderPath(const std::string& path, brdfbake::ShaderLanguage lang) {
-  return std::filesystem::path(path).replace_extension(brdfbake::ShaderLanguageName(lang)).string();
-}
-
 // `image`: the arrangement written when it is not the table's own EXR (its
 // pixel type, hence its claimed error, may differ).
 void PrintWrote(const std::string& path, const brdfbake::Table& table, const std::string& what,
@@ -983,10 +979,12 @@ int RunBake(const BakeOptions& opts) {
   }
   const std::string symbol = opts.symbol.empty() ? DefaultSymbol(spec) : opts.symbol;
   CheckSymbol(symbol);
+  const bool table_exr = container == brdfbake::Container::kExr && !rgba;
+  const std::vector<brdfbake::OutputFile> files =
+      brdfbake::OwnTableFiles(opts.output, container, table_exr, false, langs, symbol);
   MakeParentDirectory(opts.output);
-  brdfbake::CheckOutputPath(opts.output);
-  for (brdfbake::ShaderLanguage l : langs) brdfbake::CheckOutputPath(ShaderPath(opts.output, l));
-  const bool arranged = container != brdfbake::Container::kExr || !langs.empty() || rgba;
+  for (const brdfbake::OutputFile& f : files) brdfbake::CheckOutputPath(f.path);
+  const bool arranged = files.size() > 1 || !table_exr;
   if (arranged) {
     brdfbake::CheckContainerMemory(container, brdfbake::BakeOutputValues(spec),
                                    brdfbake::BakeOutputBytes(spec), opts.output);
@@ -1002,18 +1000,14 @@ int RunBake(const BakeOptions& opts) {
     if (rgba) layout = brdfbake::RgbaLayout(layout);
     image = brdfbake::ArrangeTable(table, layout);
   }
-  if (container == brdfbake::Container::kExr && !rgba) {
-    brdfbake::WriteExr(table, opts.output);
-  } else {
-    brdfbake::WriteImage(table, image, container, opts.output, symbol, "");
-  }
-  PrintWrote(opts.output, table, brdfbake::TableName(spec.table),
-             container == brdfbake::Container::kExr && !rgba ? nullptr : &image);
-  for (brdfbake::ShaderLanguage l : langs) {
-    const std::string path = ShaderPath(opts.output, l);
-    brdfbake::WriteFileAtomically(path, brdfbake::ShaderFunction(table, image, l, symbol));
-    std::printf("wrote %s: %s lookup %s\n", OneLine(path).c_str(), brdfbake::ShaderLanguageName(l),
-                symbol.c_str());
+  for (const brdfbake::OutputFile& f : files) {
+    brdfbake::WriteOutputFile(f, table, image, "");
+    if (f.lookup) {
+      std::printf("wrote %s: %s lookup %s\n", OneLine(f.path).c_str(), brdfbake::ShaderLanguageName(f.language),
+                  symbol.c_str());
+    } else {
+      PrintWrote(f.path, table, brdfbake::TableName(spec.table), table_exr ? nullptr : &image);
+    }
   }
   if (spec.roughness.placement == brdfbake::Placement::kEdges) {
     std::fprintf(stderr,
