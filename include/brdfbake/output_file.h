@@ -23,12 +23,13 @@ namespace brdfbake {
 // Checks that `path` can be written before any work is done: its directory
 // exists and is writable, and `path` is not a directory, a device or
 // another non-regular file, and is writable if it exists. Throws
-// std::invalid_argument "<option>: ..." (one line).
-void CheckOutputPath(const std::string& path, const std::string& option = "-o");
+// a ParameterError "<option>: ..." (one line; the default option is the
+// output parameter, -o on the command line).
+void CheckOutputPath(const std::string& path, const std::string& option = "{output}");
 
 // Checks that `path` ends in `extension` (e.g. ".exr", case-insensitive).
 void CheckOutputExtension(const std::string& path, const std::string& extension,
-                          const std::string& what, const std::string& option = "-o");
+                          const std::string& what, const std::string& option = "{output}");
 
 // Removes every live temporary on SIGINT, SIGTERM, SIGHUP and SIGPIPE, then
 // ends the process with the signal's default action. Call once from main.

@@ -43,15 +43,15 @@ void ValidateEvalRequest(const EvalRequest& req) {
   if (tables_only && params.alpha_x == 0 && params.alpha_y == 0) params.alpha_x = params.alpha_y = 1.0;
   ValidateModelParams(params);
   if (aniso && !(req.anisotropy >= 0 && req.anisotropy <= 1)) {
-    Bad("--anisotropy must lie in [0, 1] (the KHR_materials_anisotropy strength)");
+    Bad("{anisotropy} must lie in [0, 1] (the KHR_materials_anisotropy strength)");
   }
-  if (!aniso && req.anisotropy != 0) Bad("--anisotropy applies to --model ggx-aniso only");
-  if (req.quantities.empty()) Bad("--quantity: at least one quantity is required");
+  if (!aniso && req.anisotropy != 0) Bad("{anisotropy} applies to {model} ggx-aniso only");
+  if (req.quantities.empty()) Bad("{quantity}: at least one quantity is required");
   for (const std::string& q : req.quantities) {
     bool ok = false;
     for (const std::string& k : EvalQuantities()) ok |= q == k;
     if (!ok) {
-      Bad("--quantity: unknown quantity '" + q +
+      Bad("{quantity}: unknown quantity '" + q +
           "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg or E_avg)");
     }
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
@@ -62,54 +62,54 @@ void ValidateEvalRequest(const EvalRequest& req) {
       const bool lobe = kind == ModelKind::kCharlie || kind == ModelKind::kDisneyDiffuse;
       if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
           !aniso && !ellipsoid && !lobe && !glass) {
-        Bad("--quantity: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie, "
+        Bad("{quantity}: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie, "
             "disney-diffuse and ggx-glass only (got '" + m + "')");
       }
       if ((aniso || ellipsoid || lobe || glass) && q == "dfg") {
-        Bad("--quantity: " + m + " has E and E_avg (no dfg)");
+        Bad("{quantity}: " + m + " has E and E_avg (no dfg)");
       }
       if (ellipsoid) continue;  // the material's own widths and angles
       if (req.model.alpha_x != req.model.alpha_y) {
-        Bad("--quantity: " + q + " is tabulated for isotropic models: give --alpha or --roughness, "
-            "not --alpha-x/--alpha-y");
+        Bad("{quantity}: " + q + " is tabulated for isotropic models: give {alpha} or {roughness}, "
+            "not {alpha_x}/{alpha_y}");
       }
       if (std::sqrt(req.model.alpha_x) > 1) {
-        Bad("--quantity: " + q + " is tabulated for roughness in [0, 1] (alpha <= 1)");
+        Bad("{quantity}: " + q + " is tabulated for roughness in [0, 1] (alpha <= 1)");
       }
       continue;
     }
     if (aniso || glass) {
-      Bad("--quantity: " + std::string(req.model.name()) + " has the table quantities E and E_avg only (got '" + q + "')");
+      Bad("{quantity}: " + std::string(req.model.name()) + " has the table quantities E and E_avg only (got '" + q + "')");
     }
     if (table_sweep) {
-      Bad("--sweep " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
+      Bad("{sweep} " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
           "direction (got '" + q + "')");
     }
     const bool is_sel = req.model.kind == ModelKind::kSel;
     if (is_sel != (q == "K")) {
-      Bad(is_sel ? "--quantity: model sel has only the quantity K"
-                 : "--quantity: K is defined for model sel only");
+      Bad(is_sel ? "{quantity}: model sel has only the quantity K"
+                 : "{quantity}: K is defined for model sel only");
     }
   }
-  if (req.count < 1 || req.count > 10000000) Bad("--count must be in [1, 10000000]");
-  if (!std::isfinite(req.from) || !std::isfinite(req.to)) Bad("--from/--to must be finite");
+  if (req.count < 1 || req.count > 10000000) Bad("{count} must be in [1, 10000000]");
+  if (!std::isfinite(req.from) || !std::isfinite(req.to)) Bad("{from}/{to} must be finite");
   if (req.sweep == "mu") {
     if (req.from < -1 || req.from > 1 || req.to < -1 || req.to > 1) {
-      Bad("--from/--to must lie in [-1, 1] for --sweep mu");
+      Bad("{from}/{to} must lie in [-1, 1] for {sweep} mu");
     }
   } else if (req.sweep == "theta") {
     if (req.from < 0 || req.from > 180 || req.to < 0 || req.to > 180) {
-      Bad("--from/--to must lie in [0, 180] degrees for --sweep theta");
+      Bad("{from}/{to} must lie in [0, 180] degrees for {sweep} theta");
     }
   } else if (req.sweep == "roughness") {
     if (req.from < 0 || req.from > 1 || req.to < 0 || req.to > 1) {
-      Bad("--from/--to must lie in [0, 1] for --sweep roughness");
+      Bad("{from}/{to} must lie in [0, 1] for {sweep} roughness");
     }
   } else if (req.sweep != "none") {
-    Bad("--sweep: unknown sweep '" + req.sweep + "' (expected mu, theta, roughness or none)");
+    Bad("{sweep}: unknown sweep '" + req.sweep + "' (expected mu, theta, roughness or none)");
   }
-  if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("--mu-o must lie in [0, 1]");
-  if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("--phi/--phi-o must be finite");
+  if (!std::isfinite(req.mu_o) || req.mu_o < 0 || req.mu_o > 1) Bad("{mu_o} must lie in [0, 1]");
+  if (!std::isfinite(req.phi_o) || !std::isfinite(req.phi)) Bad("{phi}/{phi_o} must be finite");
   ValidateFresnel(req.fresnel);
 }
 

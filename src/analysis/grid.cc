@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/error.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/batch.h"
 #include "brdfbake/targets.h"
@@ -23,7 +24,7 @@ GridKind ParseGridKind(const std::string& s) {
   if (s == "slice") return GridKind::kSlice;
   if (s == "hemisphere") return GridKind::kHemisphere;
   if (s == "g1") return GridKind::kG1;
-  throw std::invalid_argument("--grid: unknown grid '" + s + "' (expected slice, hemisphere or g1)");
+  Bad("{grid}: unknown grid '" + s + "' (expected slice, hemisphere or g1)");
 }
 
 const char* GridKindName(GridKind k) {
@@ -97,16 +98,16 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
 void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
   ValidateFresnel(req.fresnel);
-  if (req.model.kind == ModelKind::kSel) throw std::invalid_argument("--grid: model sel is a lobe, not a BRDF");
+  if (req.model.kind == ModelKind::kSel) Bad("{grid}: model sel is a lobe, not a BRDF");
   if (req.model.kind == ModelKind::kGgxGlass) {
-    throw std::invalid_argument("--grid: model ggx-glass has the table quantities E and E_avg only");
+    Bad("{grid}: model ggx-glass has the table quantities E and E_avg only");
   }
   if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
-    throw std::invalid_argument("--width/--height must be in [1, 16384]");
+    Bad("{width}/{height} must be in [1, 16384]");
   }
-  if (!(req.mu_o > 0) || req.mu_o > 1) throw std::invalid_argument("--mu-o must lie in (0, 1]");
+  if (!(req.mu_o > 0) || req.mu_o > 1) Bad("{mu_o} must lie in (0, 1]");
   if (req.threads < 0 || req.threads > kMaxThreads) {
-    throw std::invalid_argument("--threads must be in [0, " + std::to_string(kMaxThreads) +
+    Bad("{threads} must be in [0, " + std::to_string(kMaxThreads) +
                                 "] (0 = all cores)");
   }
 }

@@ -12,6 +12,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "base/error.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/probe.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
@@ -249,7 +250,7 @@ bool PlaneInterpolation(const BakeSpec& s_in, int n, int interpolation_probes,
 void ValidateReportSpec(const ReportSpec& spec) {
   ValidateBakeSpec(spec.table);
   if (spec.repeats < 1 || spec.repeats > 100) {
-    throw std::invalid_argument("--repeats must be in [1, 100]");
+    Bad("{repeats} must be in [1, 100]");
   }
   if (spec.table.Glass() || spec.table.GenSchlick()) {
     throw std::invalid_argument(std::string("report: ") +
@@ -268,7 +269,7 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   report.spec = spec;
   if (spec.table.Anisotropic()) {
     if (spec.table.table != TableKind::kE) {
-      throw std::invalid_argument("report: ggx-aniso reports the collapse study of E (--table E)");
+      Bad("report: ggx-aniso reports the collapse study of E ({table} E)");
     }
     report.collapse = CollapseStudy(spec.table, {"geometric-mean", "arithmetic-mean", "view-projected"}, say);
     return report;

@@ -91,7 +91,7 @@ TableKind ParseTable(const std::string &s) {
     return TableKind::kGenSchlickS;
   if (s == "gen_schlick_ior_s")
     return TableKind::kGenSchlickIorS;
-  Bad("--table: unknown table '" + s +
+  Bad("{table}: unknown table '" + s +
       "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or "
       "gen_schlick_ior_s)" +
       DidYouMean(s,
@@ -117,7 +117,7 @@ Warp ParseWarp(const std::string &s) {
     return Warp::kSchlickZ;
   if (s == "two-sided")
     return Warp::kTwoSided;
-  Bad("--warp: unknown warp '" + s +
+  Bad("{warp}: unknown warp '" + s +
       "' (expected linear, square, sqrt, tail for the gamma axis, "
       "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent "
       "axis)");
@@ -127,7 +127,7 @@ Placement ParsePlacement(const std::string &s) {
     return Placement::kCenters;
   if (s == "edges")
     return Placement::kEdges;
-  Bad("--placement: unknown placement '" + s + "' (expected centers or edges)");
+  Bad("{placement}: unknown placement '" + s + "' (expected centers or edges)");
 }
 IntegratorKind ParseIntegrator(const std::string &s) {
   if (s == "quadrature")
@@ -138,7 +138,7 @@ IntegratorKind ParseIntegrator(const std::string &s) {
     return IntegratorKind::kMc;
   if (s == "engine")
     return IntegratorKind::kEngine;
-  Bad("--integrator: unknown integrator '" + s +
+  Bad("{integrator}: unknown integrator '" + s +
       "' (expected quadrature, qmc, mc or engine)");
 }
 
@@ -499,9 +499,9 @@ namespace {
 // Every axis: 1 to 8192 entries, at least 2 with edges placement.
 void CheckAxisSize(const Axis &a) {
   if (a.size < 1 || a.size > 8192)
-    Bad("--size: each axis must have 1 to 8192 entries");
+    Bad("{size}: each axis must have 1 to 8192 entries");
   if (a.placement == Placement::kEdges && a.size < 2)
-    Bad("--size: edges placement needs at least 2 entries per axis");
+    Bad("{size}: edges placement needs at least 2 entries per axis");
 }
 } // namespace
 
@@ -516,86 +516,86 @@ void ValidateBakeSpec(const BakeSpec &spec) {
   ValidateModelParams(params);
   const ModelKind m = spec.model.kind;
   if (glass && spec.table != TableKind::kE && spec.table != TableKind::kEavg) {
-    Bad("--table: ggx-glass bakes E and E_avg (reflection plus refraction; no "
+    Bad("{table}: ggx-glass bakes E and E_avg (reflection plus refraction; no "
         "dfg)");
   }
   if (glass && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ggx-glass tables are baked with the quadrature only "
+    Bad("{integrator}: ggx-glass tables are baked with the quadrature only "
         "(got " +
         std::string(IntegratorName(spec.integrator)) + ")");
   }
   if (spec.inverse && !glass)
-    Bad("--inverse: only ggx-glass has an inside (light leaving the medium)");
+    Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
   const bool gen_schlick = spec.GenSchlick();
   if (gen_schlick) {
     const std::string table = TableName(spec.table);
     if (m != ModelKind::kGgx) {
-      Bad("--model: " + table +
-          " is the Fresnel factor of a GGX reflection lobe (give --model ggx; "
+      Bad("{model}: " + table +
+          " is the Fresnel factor of a GGX reflection lobe (give {model} ggx; "
           "got '" +
           spec.model.name() + "')");
     }
     if (spec.integrator != IntegratorKind::kQuadrature) {
-      Bad("--integrator: " + table +
+      Bad("{integrator}: " + table +
           " tables are baked with the quadrature only (got " +
           IntegratorName(spec.integrator) + ")");
     }
     if (spec.complement)
-      Bad("--complement: " + table + " stores s itself");
+      Bad("{complement}: " + table + " stores s itself");
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
-    Bad("--part: only ggx-glass has reflection and refraction parts (got "
-        "--part " +
+    Bad("{part}: only ggx-glass has reflection and refraction parts (got "
+        "{part} " +
         std::string(DielectricPartName(spec.part)) + ")");
   }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
-    Bad(sel ? "--table sel_norm is the integral of the sel lobe: give --model "
+    Bad(sel ? "{table} sel_norm is the integral of the sel lobe: give {model} "
               "sel"
-            : "--model sel: its table is sel_norm (--table sel_norm)");
+            : "{model} sel: its table is sel_norm ({table} sel_norm)");
   }
   if (sel &&
       (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
-    Bad("--table sel_norm: the quadrature only, without --complement");
+    Bad("{table} sel_norm: the quadrature only, without {complement}");
   }
   const bool sheen = m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse;
   if (sheen && spec.table == TableKind::kDfg) {
-    Bad("--table: " + std::string(spec.model.name()) +
+    Bad("{table}: " + std::string(spec.model.name()) +
         " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' "
         "sheen and diffuse "
         "channels are its E)");
   }
   if (sheen && spec.complement && spec.table == TableKind::kDfg)
-    Bad("--complement: no dfg here");
+    Bad("{complement}: no dfg here");
   const bool ellipsoid = m == ModelKind::kEllipsoid;
   if (ellipsoid && spec.table == TableKind::kDfg) {
-    Bad("--table: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
+    Bad("{table}: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
   }
   if (ellipsoid && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ellipsoid tables are baked with the quadrature only");
+    Bad("{integrator}: ellipsoid tables are baked with the quadrature only");
   }
   if (m != ModelKind::kGgx && m != ModelKind::kBeckmann &&
       m != ModelKind::kStudentT && !aniso && !sel && !ellipsoid && !sheen &&
       !glass) {
-    Bad("--model: tables are baked for ggx, ggx-aniso, beckmann, std, "
+    Bad("{model}: tables are baked for ggx, ggx-aniso, beckmann, std, "
         "ellipsoid, sel, charlie, "
         "disney-diffuse and ggx-glass (got '" +
         std::string(spec.model.name()) + "')");
   }
   if (aniso && spec.table == TableKind::kDfg)
-    Bad("--table: ggx-aniso bakes E and E_avg (no dfg)");
+    Bad("{table}: ggx-aniso bakes E and E_avg (no dfg)");
   if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("--integrator: ggx-aniso tables are baked with the quadrature only");
+    Bad("{integrator}: ggx-aniso tables are baked with the quadrature only");
   }
   // The view and lobe axes here; the parameter axes below.
   for (const Axis *a : AxesOf(spec)) {
     if (ParameterAxis(*a))
       continue;
     if (a->warp == Warp::kTail)
-      Bad("--warp: tail is the gamma axis's warp (the " + a->name +
+      Bad("{warp}: tail is the gamma axis's warp (the " + a->name +
           " axis takes linear, square or sqrt)");
     if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
-      Bad("--warp: " + std::string(WarpName(a->warp)) + " is the " +
+      Bad("{warp}: " + std::string(WarpName(a->warp)) + " is the " +
           (a->warp == Warp::kFresnelZ ? "ior" : "exponent") +
           " axis's warp (the " + a->name +
           " axis takes linear, square or sqrt)");
@@ -610,7 +610,7 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered ||
         a->min < 0 || a->max > upper * (1 + 1e-15)) {
       std::ostringstream os;
-      os << "--range: the " << a->name
+      os << "{range}: the " << a->name
          << " axis must satisfy 0 <= min < max <= "
          << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1")
          << " (got " << a->min << ":" << a->max << ")";
@@ -620,16 +620,16 @@ void ValidateBakeSpec(const BakeSpec &spec) {
   if (spec.HasGammaAxis()) {
     const Axis &g = spec.gamma;
     if (m != ModelKind::kStudentT) {
-      Bad("--size: only std has a gamma axis (got model '" +
+      Bad("{size}: only std has a gamma axis (got model '" +
           std::string(spec.model.name()) + "')");
     }
     CheckAxisSize(g);
     if (g.warp != Warp::kTail)
-      Bad("--warp: the gamma axis takes the tail warp only");
+      Bad("{warp}: the gamma axis takes the tail warp only");
     const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
     if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) ||
         std::isinf(g.min) || !ordered) {
-      Bad("--range: the gamma axis must satisfy " +
+      Bad("{range}: the gamma axis must satisfy " +
           ExactText(kMinStudentTGamma<double>) +
           " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " +
           ExactText(g.min) + ":" + ExactText(g.max) + ")");
@@ -639,7 +639,7 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     const Axis &a = spec.exponent;
     CheckAxisSize(a);
     if (a.warp != Warp::kSchlickZ && a.warp != Warp::kLinear) {
-      Bad("--warp: the exponent axis takes schlick-z (z = 5 / (exponent + 5), "
+      Bad("{warp}: the exponent axis takes schlick-z (z = 5 / (exponent + 5), "
           "the default) or linear (got " +
           std::string(WarpName(a.warp)) + ")");
     }
@@ -652,7 +652,7 @@ void ValidateBakeSpec(const BakeSpec &spec) {
         std::isfinite(std::min(std::max(a.min, a.max), a.clamp_max));
     if (!(a.min >= 0) || !(a.max >= 0) || !ordered || !increasing || !finite ||
         !(a.clamp_min >= 0 && a.clamp_min <= a.clamp_max)) {
-      Bad("--range: the exponent axis must satisfy 0 <= min, max <= inf, min "
+      Bad("{range}: the exponent axis must satisfy 0 <= min, max <= inf, min "
           "!= max (inf with the "
           "schlick-z warp and a clamp; got " +
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
@@ -663,24 +663,24 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     CheckAxisSize(a);
     if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear &&
         a.warp != Warp::kTwoSided) {
-      Bad("--warp: the ior axis takes fresnel-z (z = F0^(1/4), the default), "
+      Bad("{warp}: the ior axis takes fresnel-z (z = F0^(1/4), the default), "
           "linear or two-sided (got " +
           std::string(WarpName(a.warp)) + ")");
     }
     if (a.warp == Warp::kTwoSided) {
       if (a.placement != Placement::kEdges || a.size < 4 || a.size % 2 != 0) {
-        Bad("--size: a two-sided ior axis has edges placement and an even size "
+        Bad("{size}: a two-sided ior axis has edges placement and an even size "
             "of at least 4 (got " +
             std::to_string(a.size) + ", " + PlacementName(a.placement) + ")");
       }
       if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) ||
           !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
-        Bad("--range: a two-sided ior axis must satisfy 0.01 <= min < 1 < max "
+        Bad("{range}: a two-sided ior axis must satisfy 0.01 <= min < 1 < max "
             "<= 100 (got " +
             ExactText(a.min) + ":" + ExactText(a.max) + ")");
       }
       if (spec.inverse)
-        Bad("--inverse: a two-sided ior axis holds both sides already");
+        Bad("{inverse}: a two-sided ior axis holds both sides already");
     }
     const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
     // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
@@ -690,38 +690,38 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     if (a.warp != Warp::kTwoSided &&
         (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered ||
          !(a.min <= a.clamp_max))) {
-      Bad("--range: the ior axis must satisfy 1 <= min < max <= 100 (light "
+      Bad("{range}: the ior axis must satisfy 1 <= min < max <= 100 (light "
           "leaving the medium, "
-          "eta = 1/ior: --inverse; got " +
+          "eta = 1/ior: {inverse}; got " +
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
     if (std::isinf(a.max) && a.warp != Warp::kFresnelZ)
-      Bad("--range: an ior axis to inf needs the fresnel-z warp");
+      Bad("{range}: an ior axis to inf needs the fresnel-z warp");
     if (spec.table == TableKind::kGenSchlickIorS && a.warp == Warp::kTwoSided) {
-      Bad("--warp: gen_schlick_ior_s is over ior >= 1 (the dielectric shape "
+      Bad("{warp}: gen_schlick_ior_s is over ior >= 1 (the dielectric shape "
           "outside the medium): no two-sided axis");
     }
   }
   if (spec.samples < 0 || spec.samples > 1 << 24)
-    Bad("--samples must be in [1, 16777216]");
+    Bad("{samples} must be in [1, 16777216]");
   if (spec.integrator == IntegratorKind::kQuadrature && spec.samples > 4096) {
-    Bad("--samples: the quadrature takes at most 4096 nodes per dimension");
+    Bad("{samples}: the quadrature takes at most 4096 nodes per dimension");
   }
   if (spec.integrator == IntegratorKind::kQmc && spec.samples != 0 &&
       spec.samples < 16) {
-    Bad("--samples: qmc needs at least 16 samples (8 replicas of 2)");
+    Bad("{samples}: qmc needs at least 16 samples (8 replicas of 2)");
   }
   if (spec.threads < 0 || spec.threads > kMaxThreads) {
-    Bad("--threads must be in [0, " + std::to_string(kMaxThreads) +
+    Bad("{threads} must be in [0, " + std::to_string(kMaxThreads) +
         "] (0 = all cores)");
   }
   if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance))
-    Bad("--tolerance must be a finite number >= 0");
+    Bad("{tolerance} must be a finite number >= 0");
   // A table is one image of int width and height (a 3D or 4D table stacks
   // its slices): at most 2^31 - 1 texels.
   const int64_t texels = ShapeOf(spec).Texels();
   if (texels > int64_t(std::numeric_limits<int>::max())) {
-    Bad("--size: " + std::to_string(texels) +
+    Bad("{size}: " + std::to_string(texels) +
         " texels exceed the 2147483647 a table holds");
   }
 }

@@ -586,7 +586,7 @@ Container ContainerFor(const Preset& preset, const PresetTable& pt, const std::s
   }
   std::string loads = ContainerName(pt.container);
   for (Container a : pt.also) loads += std::string(", ") + ContainerName(a);
-  Bad("--format " + format + ": " + preset.name + " loads its " + TableName(pt.spec.table) + " table as " +
+  Bad("{format} " + format + ": " + preset.name + " loads its " + TableName(pt.spec.table) + " table as " +
       loads);
 }
 
@@ -622,7 +622,7 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
   bool any_file = false;
   for (const PresetTable& pt : preset.tables) any_file |= !pt.file.empty();
   if (!run.format.empty() && !any_file) {
-    Bad("--format " + run.format + ": " + preset.name + " loads its tables from " + preset.header_file +
+    Bad("{format} " + run.format + ": " + preset.name + " loads its tables from " + preset.header_file +
         " only");
   }
   if (!preset.header_file.empty()) {
@@ -776,7 +776,7 @@ const Preset& FindPreset(const std::string& name) {
     names += (names.empty() ? "" : ", ") + p.name;
     all.push_back(p.name);
   }
-  Bad("--preset: unknown preset '" + name + "' (expected " + names + ")" +
+  Bad("{preset}: unknown preset '" + name + "' (expected " + names + ")" +
       DidYouMean(name, all,
                  {{"ue4", "unreal"}, {"ue5", "unreal"}, {"unreal-engine", "unreal"}, {"unity", "hdrp"},
                   {"three.js", "three"}, {"threejs", "three"}, {"blender", "cycles"},

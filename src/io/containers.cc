@@ -181,7 +181,7 @@ std::string ArrayBody(const Image& im, bool half_bits, const char* float_suffix)
 std::string Ktx2Bytes(const Image& im, const std::vector<std::pair<std::string, std::string>>& kv,
                       int zstd_level) {
   const bool half = im.pixel == PixelType::kHalf;
-  if (im.pixel == PixelType::kUnorm16) Bad("--format ktx2: holds half or float pixels, not unorm16");
+  if (im.pixel == PixelType::kUnorm16) Bad("{format} ktx2: holds half or float pixels, not unorm16");
   const int nc = im.channels;
   uint32_t vk = 0;
   if (half) {
@@ -305,7 +305,7 @@ bool PngEncode(png_structp png, png_infop info, PngOut* out, int width, int heig
 
 std::string PngBytes(const Image& im, const std::vector<std::pair<std::string, std::string>>& kv) {
   if (im.pixel != PixelType::kUnorm8 && im.pixel != PixelType::kUnorm16) {
-    Bad(std::string("--format png: holds unorm8 or unorm16 pixels, not ") + PixelTypeName(im.pixel));
+    Bad(std::string("{format} png: holds unorm8 or unorm16 pixels, not ") + PixelTypeName(im.pixel));
   }
   const int nc = im.channels;
   const int types[] = {PNG_COLOR_TYPE_GRAY, PNG_COLOR_TYPE_GRAY_ALPHA, PNG_COLOR_TYPE_RGB,
@@ -342,7 +342,7 @@ std::string PngBytes(const Image& im, const std::vector<std::pair<std::string, s
                   PngEncode(png, info, &out, im.width, im.height, wide ? 16 : 8, types[nc - 1],
                             text.data(), int(text.size()), rows.data());
   png_destroy_write_struct(&png, &info);
-  if (!ok) throw std::runtime_error("--format png: libpng failed: " + out.error);
+  if (!ok) throw std::runtime_error("png: libpng failed: " + out.error);
   return out.bytes;
 }
 
@@ -361,7 +361,7 @@ std::string DdsBytes(const Image& im) {
     const uint32_t formats[] = {41, 16, 6, 2};  // R32, R32G32, R32G32B32, R32G32B32A32 _FLOAT
     dxgi = formats[nc - 1];
   }
-  if (dxgi == 0) Bad("--format dds: three 16-bit channels have no DXGI format; use two or four");
+  if (dxgi == 0) Bad("{format} dds: three 16-bit channels have no DXGI format; use two or four");
   const uint32_t bpp = (im.pixel == PixelType::kFloat ? 4 : 2) * uint32_t(nc);
   std::string f = "DDS ";
   PutU32(&f, 124);                                 // dwSize
@@ -433,7 +433,7 @@ Container ParseContainer(const std::string& given) {
                       Container::kDds, Container::kInc, Container::kPng}) {
     if (s == ContainerName(c)) return c;
   }
-  Bad("--format: unknown format '" + given + "' (expected exr, header, js, ktx2, dds, inc or png)" +
+  Bad("{format}: unknown format '" + given + "' (expected exr, header, js, ktx2, dds, inc or png)" +
       DidYouMean(given, {"exr", "header", "js", "ktx2", "dds", "inc", "png"}, {{"h", "header"}, {"hpp", "header"},
                                                                          {"mjs", "js"}, {"ktx", "ktx2"}}));
 }
@@ -447,7 +447,7 @@ Container ContainerFromPath(const std::string& path) {
   if (ext == ".ktx2") return Container::kKtx2;
   if (ext == ".dds") return Container::kDds;
   if (ext == ".png") return Container::kPng;
-  Bad("-o: '" + path + "' " + (ext.empty() ? "has no extension" : "names a " + ext + " file") +
+  Bad("{output}: '" + path + "' " + (ext.empty() ? "has no extension" : "names a " + ext + " file") +
       "; bake writes .exr, .h/.hpp (header), .inc (array body), .js/.mjs, .ktx2, .dds or .png");
 }
 
@@ -463,7 +463,7 @@ ImageLayout DefaultLayout(const Table& table) {
 
 ImageLayout RgbaLayout(const ImageLayout& layout) {
   if (layout.channels.size() > 4) {
-    Bad("--channels rgba: the table has " + std::to_string(layout.channels.size()) +
+    Bad("{channels} rgba: the table has " + std::to_string(layout.channels.size()) +
         " channels, more than R, G, B and A");
   }
   ImageLayout l = layout;
@@ -703,11 +703,11 @@ void WriteImage(const Table& table, const Image& im, Container container, const 
                 const std::string& symbol, const std::string& preset, int ktx2_zstd_level) {
   const auto conv = ImageConventions(table, im, preset);
   if (im.pixel == PixelType::kUnorm8 && container != Container::kPng) {
-    Bad(std::string("--format ") + ContainerName(container) + ": holds no unorm8 pixels (png does)");
+    Bad(std::string("{format} ") + ContainerName(container) + ": holds no unorm8 pixels (png does)");
   }
   switch (container) {
     case Container::kExr: {
-      if (im.pixel == PixelType::kUnorm16) Bad("--format exr: holds half or float pixels, not unorm16");
+      if (im.pixel == PixelType::kUnorm16) Bad("{format} exr: holds half or float pixels, not unorm16");
       // One planar buffer per channel: OpenEXR's slices.
       std::vector<std::vector<float>> planes(im.channels, std::vector<float>(size_t(im.width) * im.height));
       std::vector<std::vector<uint16_t>> half_planes(im.pixel == PixelType::kHalf ? im.channels : 0,
@@ -726,7 +726,7 @@ void WriteImage(const Table& table, const Image& im, Container container, const 
       return;
     case Container::kJs: {
       const bool half = im.pixel == PixelType::kHalf;
-      if (im.pixel == PixelType::kUnorm16) Bad("--format js: holds half or float pixels, not unorm16");
+      if (im.pixel == PixelType::kUnorm16) Bad("{format} js: holds half or float pixels, not unorm16");
       std::string s = CommentBlock(conv, "/*", " * ", " */");
       s += "// Generated by brdfbake " + std::string(BRDFBAKE_VERSION) + ".\n";
       s += "export const width = " + std::to_string(im.width) + ";\n";

@@ -19,12 +19,13 @@
 #include <stdexcept>
 
 #include "base/text.h"
+#include "brdfbake/error.h"
 
 namespace brdfbake {
 namespace {
 
 [[noreturn]] void Bad(const std::string& option, const std::string& what) {
-  throw std::invalid_argument(option + ": " + what);
+  throw ParameterError(option + ": " + what);
 }
 
 std::string DirectoryOf(const std::string& path) {

@@ -107,7 +107,7 @@ ShaderLanguage ParseShaderLanguage(const std::string& given) {
   if (s == "glsl") return ShaderLanguage::kGlsl;
   if (s == "hlsl") return ShaderLanguage::kHlsl;
   if (s == "wgsl") return ShaderLanguage::kWgsl;
-  Bad("--shader: unknown language '" + given + "' (expected glsl, hlsl or wgsl)" +
+  Bad("{shader}: unknown language '" + given + "' (expected glsl, hlsl or wgsl)" +
       DidYouMean(given, {"glsl", "hlsl", "wgsl"}, {{"webgpu", "wgsl"}, {"opengl", "glsl"}, {"webgl", "glsl"},
                                                    {"d3d", "hlsl"}, {"directx", "hlsl"}}));
 }
@@ -123,7 +123,7 @@ const char* ShaderLanguageName(ShaderLanguage l) {
 
 void CheckShaderTable(const BakeSpec& spec) {
   if (spec.table == TableKind::kSelNorm) {
-    Bad("--shader: no lookup function is written for sel_norm tables (alpha_x x alpha_y); "
+    Bad("{shader}: no lookup function is written for sel_norm tables (alpha_x x alpha_y); "
         "read the EXR with the axes of its header");
   }
 }

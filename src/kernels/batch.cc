@@ -123,7 +123,7 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
   try {
     ValidateModelParams(ModelParamsOf(model));
   } catch (const std::invalid_argument& e) {
-    Bad(std::string(entry) + ": " + e.what());
+    Bad(std::string(entry) + ": " + ErrorText(e));
   }
   CheckFresnel(entry, model);
   const bool no_fresnel =

@@ -325,8 +325,8 @@ std::string StudentTGammaDomain(double gamma) {
 
 void ValidateModelParams(const ModelParams& p) {
   if (p.kind == ModelKind::kGgxAniso) {
-    Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval --quantity "
-        "E); for its BRDF give --model ggx with --alpha-x and --alpha-y");
+    Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval {quantity} "
+        "E); for its BRDF give {model} ggx with {alpha_x} and {alpha_y}");
   }
   if (!ModelBuilt(p.kind)) {
     Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
@@ -393,7 +393,7 @@ void ValidateFresnel(const Fresnel& f) {
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
   if (p.kind == ModelKind::kGgxGlass) {
-    Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval --quantity "
+    Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval {quantity} "
         "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
   }
 #if BRDFBAKE_WITH_BECKMANN

@@ -210,8 +210,8 @@ void CheckScenePreset(const std::string& where, const std::string& name) {
   try {
     FindPreset(name);
   } catch (const std::invalid_argument& e) {
-    std::string what = e.what();
-    const std::string prefix = "--preset: ";
+    std::string what = ErrorText(e);
+    const std::string prefix = "{preset}: ";
     if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
     Bad(where + ": " + what);
   }

@@ -33,6 +33,7 @@
 #include "brdfbake/batch.h"
 #include "brdfbake/containers.h"
 #include "brdfbake/eval.h"
+#include "brdfbake/error.h"
 #include "brdfbake/exr.h"
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
@@ -71,6 +72,21 @@ std::string OneLine(const std::string& s) { return brdfbake::Printable(s); }
 // An error message as printed: on one line, and at most 2000 bytes (a value
 // of megabytes, from a file or an argument, is shown by its start and size).
 std::string ErrorLine(const std::string& s) { return brdfbake::Excerpt(OneLine(s), 2000); }
+
+// The command line's spelling of a library parameter: --name with dashes
+// (mu_o: --mu-o), and -o for the output.
+std::string FlagOf(const std::string& parameter) {
+  if (parameter == "output") return "-o";
+  std::string flag = "--" + parameter;
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  return flag;
+}
+
+// An error's message with the parameters it names spelled as flags.
+std::string CliMessage(const std::exception& e) {
+  const auto* p = dynamic_cast<const brdfbake::ParameterError*>(&e);
+  return p ? p->Render(FlagOf) : std::string(e.what());
+}
 
 // One strict grammar for every number on the command line: a decimal
 // number (optional sign, digits, optional fraction and exponent; no hex, no
@@ -1365,7 +1381,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "brdfbake: error: out of memory\n");
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(e.what()).c_str());
+    std::fprintf(stderr, "brdfbake: error: %s\n", ErrorLine(CliMessage(e)).c_str());
     return 1;
   }
   if (!FlushStdout()) {
