@@ -18,25 +18,24 @@
 namespace brdfbake {
 
 class ParameterError : public std::invalid_argument {
-public:
-  explicit ParameterError(const std::string &text);
+ public:
+  explicit ParameterError(const std::string& text);
   // The message with each marked parameter as spell(name).
-  std::string
-  Render(const std::function<std::string(const std::string &)> &spell) const;
+  std::string Render(const std::function<std::string(const std::string&)>& spell) const;
   // The message with its marks, to be passed on inside another message.
-  const std::string &text() const { return text_; }
+  const std::string& text() const { return text_; }
 
-private:
+ private:
   std::string text_;
 };
 
 // The parameters a message may mark: the names of BakeSpec's, EvalRequest's,
 // GridRequest's and the report's fields and the output's settings.
-bool IsParameterName(const std::string &name);
+bool IsParameterName(const std::string& name);
 
 // e's message with its marks (ParameterError) or as it is.
-std::string ErrorText(const std::exception &e);
+std::string ErrorText(const std::exception& e);
 
-} // namespace brdfbake
+}  // namespace brdfbake
 
-#endif // BRDFBAKE_ERROR_H_
+#endif  // BRDFBAKE_ERROR_H_

@@ -30,14 +30,7 @@ namespace brdfbake {
 // Schlick exponent (s_h = (1 - wo.h)^exponent) or x ior (s_h = (F(ior,
 // wo.h) - F0) / (1 - F0), the dielectric shape): Cycles'
 // table_ggx_gen_schlick_s and table_ggx_gen_schlick_ior_s.
-enum class TableKind {
-  kE,
-  kEavg,
-  kDfg,
-  kSelNorm,
-  kGenSchlickS,
-  kGenSchlickIorS
-};
+enum class TableKind { kE, kEavg, kDfg, kSelNorm, kGenSchlickS, kGenSchlickIorS };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kHalfPi = 1.5707963267948966;
@@ -59,15 +52,7 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // size N = 2H, min < 1 < max): entries 0 to H - 1 hold eta < 1 with 1 / eta
 // linear from 1 / min down to 1, entries H to N - 1 eta linear from 1 up to
 // max; both middle entries are 1 (OpenPBR's layout, [OpenPbrBsdf]).
-enum class Warp {
-  kLinear,
-  kSquare,
-  kSqrt,
-  kTail,
-  kFresnelZ,
-  kSchlickZ,
-  kTwoSided
-};
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ, kTwoSided };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon
@@ -84,18 +69,18 @@ enum class Placement { kCenters, kEdges };
 //   measured against the quadrature.
 enum class IntegratorKind { kQuadrature, kQmc, kMc, kEngine };
 
-const char *TableName(TableKind t);
-const char *WarpName(Warp w);
-const char *PlacementName(Placement p);
-const char *IntegratorName(IntegratorKind k);
+const char* TableName(TableKind t);
+const char* WarpName(Warp w);
+const char* PlacementName(Placement p);
+const char* IntegratorName(IntegratorKind k);
 // Parsers throw std::invalid_argument naming the bad value.
-TableKind ParseTable(const std::string &s);
-Warp ParseWarp(const std::string &s);
-Placement ParsePlacement(const std::string &s);
-IntegratorKind ParseIntegrator(const std::string &s);
+TableKind ParseTable(const std::string& s);
+Warp ParseWarp(const std::string& s);
+Placement ParsePlacement(const std::string& s);
+IntegratorKind ParseIntegrator(const std::string& s);
 
 struct Axis {
-  std::string name; // "mu", "roughness" or "gamma"
+  std::string name;  // "mu", "roughness" or "gamma"
   int size = 32;
   double min = 0, max = 1;
   Warp warp = Warp::kLinear;
@@ -118,12 +103,11 @@ struct Axis {
 
 struct BakeSpec {
   TableKind table = TableKind::kE;
-  ModelParams
-      model; // ggx, beckmann or std; alpha comes from the roughness axis
+  ModelParams model;  // ggx, beckmann or std; alpha comes from the roughness axis
   Masking masking = Masking::kHeightCorrelated;
   IntegratorKind integrator = IntegratorKind::kQuadrature;
-  int samples = 0; // max pieces of the theta_i rule (quadrature) or samples per
-                   // texel; 0 = default
+  int samples = 0;  // max pieces of the theta_i rule (quadrature) or samples per
+                    // texel; 0 = default
   // quadrature: stop refining when two rules agree to this. 1e-7 is the
   // precision of the float pixels the tables are stored in.
   double tolerance = 1e-7;
@@ -151,14 +135,9 @@ struct BakeSpec {
   // Cycles': z = 5 / (exponent + 5) = k / 15 from exponent inf to 0, baked
   // at z in [1e-4, 0.99], exponent 0.0505 to 49995). gen_schlick_ior_s
   // takes the ior axis (in [1, 100], or to inf with a clamp).
-  Axis exponent{"exponent",      16,
-                kInfinity,       0.0,
-                Warp::kSchlickZ, Placement::kEdges,
-                5 * 0.01 / 0.99, 5 * (1 - 1e-4) / 1e-4};
-  bool GenSchlick() const {
-    return table == TableKind::kGenSchlickS ||
-           table == TableKind::kGenSchlickIorS;
-  }
+  Axis exponent{"exponent",           16, kInfinity, 0.0, Warp::kSchlickZ, Placement::kEdges, 5 * 0.01 / 0.99,
+                5 * (1 - 1e-4) / 1e-4};
+  bool GenSchlick() const { return table == TableKind::kGenSchlickS || table == TableKind::kGenSchlickIorS; }
   // ggx-aniso (anisotropic GGX as glTF KHR_materials_anisotropy defines it:
   // alpha_t = mix(r^2, 1, s^2) along the tangent, alpha_b = r^2): E over
   // mu x phi_o x roughness x anisotropy, E_avg over roughness x anisotropy.
@@ -173,11 +152,10 @@ struct BakeSpec {
   // E and dfg: 1 - E; E_avg: 1 - E_avg. E and E_avg store the complement
   // instead of the value, dfg adds it as a third channel.
   bool complement = false;
-  bool error_channel = false; // add a per-texel "error" channel
-  bool half = false;          // half pixels (default float)
-  int threads = 0;            // 0 = all cores, at most kMaxThreads
-  bool estimate_error =
-      true; // engine: measure the error against the quadrature
+  bool error_channel = false;  // add a per-texel "error" channel
+  bool half = false;           // half pixels (default float)
+  int threads = 0;             // 0 = all cores, at most kMaxThreads
+  bool estimate_error = true;  // engine: measure the error against the quadrature
   // quadrature: evaluate the integrand in double SIMD lanes (the best
   // Highway target, or the one ForceTarget chose); false runs the double
   // scalar reference of the same rule (`--target scalar`).
@@ -190,35 +168,35 @@ struct BakeSpec {
 inline constexpr int kMaxThreads = 1024;
 
 // Throws std::invalid_argument (one line, naming the bad input).
-void ValidateBakeSpec(const BakeSpec &spec);
+void ValidateBakeSpec(const BakeSpec& spec);
 
 // Bytes of memory Bake() allocates for its outputs (checked before baking).
-size_t BakeOutputBytes(const BakeSpec &spec);
+size_t BakeOutputBytes(const BakeSpec& spec);
 // The values a bake of `spec` stores: texels times channels (with the
 // error channel).
-int64_t BakeOutputValues(const BakeSpec &spec);
+int64_t BakeOutputValues(const BakeSpec& spec);
 
 // What a channel holds, one value per texel (docs/format.md).
 enum class Meaning {
-  kE,            // directional albedo E(mu)
-  kOneMinusE,    // 1 - E
-  kEavg,         // E_avg
-  kOneMinusEavg, // 1 - E_avg
-  kDfgScale,     // the split-sum DFG's scale (F0's factor)
-  kDfgBias,      // ... and bias (F90's factor)
-  kSelIntegral,  // sel_norm: the integral N of the squared ellipsoidal lobe
-  kSelRatio,     // sel_norm: N / (4 pi alpha_x alpha_y)
-  kS,            // gen_schlick: the factor s
-  kError,        // the integrator's error estimate per texel
+  kE,             // directional albedo E(mu)
+  kOneMinusE,     // 1 - E
+  kEavg,          // E_avg
+  kOneMinusEavg,  // 1 - E_avg
+  kDfgScale,      // the split-sum DFG's scale (F0's factor)
+  kDfgBias,       // ... and bias (F90's factor)
+  kSelIntegral,   // sel_norm: the integral N of the squared ellipsoidal lobe
+  kSelRatio,      // sel_norm: N / (4 pi alpha_x alpha_y)
+  kS,             // gen_schlick: the factor s
+  kError,         // the integrator's error estimate per texel
 };
 // As the files' brdfbake.channels name it: E, 1-E, E_avg, 1-E_avg,
 // dfg.scale, dfg.bias, sel.integral, sel.ratio, s, error.
-const char *MeaningName(Meaning m);
+const char* MeaningName(Meaning m);
 
 struct ChannelSpec {
-  std::string name; // the EXR channel name
+  std::string name;  // the EXR channel name
   Meaning meaning;
-  std::string definition; // one sentence, for the file header
+  std::string definition;  // one sentence, for the file header
 };
 
 // The shape of the table `spec` describes. Axes run fastest first: x is
@@ -235,36 +213,40 @@ struct ChannelSpec {
 struct TableShape {
   std::vector<Axis> axes;
   int64_t width = 1, height = 1;
-  std::vector<ChannelSpec>
-      channels; // with the error channel last when the spec asks for it
-  int value_channels = 1; // the channels before the error channel
+  std::vector<ChannelSpec> channels;  // with the error channel last when the spec asks for it
+  int value_channels = 1;             // the channels before the error channel
   int64_t Texels() const { return width * height; }
 };
-TableShape ShapeOf(const BakeSpec &spec);
+TableShape ShapeOf(const BakeSpec& spec);
 
 // The same axes as ShapeOf's, as pointers into `spec`: to set their sizes,
 // ranges and warps.
-std::vector<Axis *> TableAxes(BakeSpec *spec);
+std::vector<Axis*> TableAxes(BakeSpec* spec);
 // Whether an axis is a slice axis over a model parameter (gamma, ior,
 // exponent) rather than over the view or the lobe (mu, roughness, phi_o,
 // anisotropy, alpha_x, alpha_y): settings meant for every axis skip it.
-bool ParameterAxis(const Axis &axis);
+bool ParameterAxis(const Axis& axis);
 // Each axis's size when none is given: 32 per axis for E, dfg, E_avg and
 // sel_norm, 32 x 16 (x 32 x 16) for ggx-aniso, 32^3 for ggx-glass, 16^3
 // for gen_schlick; the sizes of TableAxes(spec).
-std::vector<int> DefaultSizes(const BakeSpec &spec);
+std::vector<int> DefaultSizes(const BakeSpec& spec);
 // The form of a size, for messages: "WxH (mu x roughness, e.g. 32x32)".
-std::string SizeForm(const BakeSpec &spec);
+std::string SizeForm(const BakeSpec& spec);
+
+// The integrators a table of `spec`'s kind and model is baked with: every
+// one for E, E_avg and dfg of the isotropic microfacet models and the
+// lobes, the quadrature alone for the others (ValidateBakeSpec's rule).
+std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec);
 
 // Stored values are clamped to the physical range: E, 1-E, E_avg and
 // 1-E_avg to [0, 1]; dfg.scale, dfg.bias >= 0 with scale + bias <= 1 in the
 // stored precision. Every claimed error covers the clamp.
-extern const char *const kStoredRange;
+extern const char* const kStoredRange;
 
 // "axes fastest first: ..." and the axis map, for the brdfbake.layout
 // attribute.
-extern const char *const kLayoutText;
+extern const char* const kLayoutText;
 
-} // namespace brdfbake
+}  // namespace brdfbake
 
-#endif // BRDFBAKE_TABLE_SPEC_H_
+#endif  // BRDFBAKE_TABLE_SPEC_H_

@@ -6,15 +6,15 @@
 
 #include "brdfbake/table_spec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "bake/warp_coordinates.h"
 #include "base/error.h"
@@ -25,121 +25,91 @@
 
 namespace brdfbake {
 
-const char *TableName(TableKind t) {
+const char* TableName(TableKind t) {
   switch (t) {
-  case TableKind::kE:
-    return "E";
-  case TableKind::kEavg:
-    return "E_avg";
-  case TableKind::kDfg:
-    return "dfg";
-  case TableKind::kSelNorm:
-    return "sel_norm";
-  case TableKind::kGenSchlickS:
-    return "gen_schlick_s";
-  case TableKind::kGenSchlickIorS:
-    return "gen_schlick_ior_s";
+    case TableKind::kE:
+      return "E";
+    case TableKind::kEavg:
+      return "E_avg";
+    case TableKind::kDfg:
+      return "dfg";
+    case TableKind::kSelNorm:
+      return "sel_norm";
+    case TableKind::kGenSchlickS:
+      return "gen_schlick_s";
+    case TableKind::kGenSchlickIorS:
+      return "gen_schlick_ior_s";
   }
   return "E";
 }
-const char *WarpName(Warp w) {
+const char* WarpName(Warp w) {
   switch (w) {
-  case Warp::kLinear:
-    return "linear";
-  case Warp::kSquare:
-    return "square";
-  case Warp::kSqrt:
-    return "sqrt";
-  case Warp::kTail:
-    return "tail";
-  case Warp::kFresnelZ:
-    return "fresnel-z";
-  case Warp::kSchlickZ:
-    return "schlick-z";
-  case Warp::kTwoSided:
-    return "two-sided";
+    case Warp::kLinear:
+      return "linear";
+    case Warp::kSquare:
+      return "square";
+    case Warp::kSqrt:
+      return "sqrt";
+    case Warp::kTail:
+      return "tail";
+    case Warp::kFresnelZ:
+      return "fresnel-z";
+    case Warp::kSchlickZ:
+      return "schlick-z";
+    case Warp::kTwoSided:
+      return "two-sided";
   }
   return "linear";
 }
-const char *PlacementName(Placement p) {
-  return p == Placement::kCenters ? "centers" : "edges";
-}
-const char *IntegratorName(IntegratorKind k) {
+const char* PlacementName(Placement p) { return p == Placement::kCenters ? "centers" : "edges"; }
+const char* IntegratorName(IntegratorKind k) {
   switch (k) {
-  case IntegratorKind::kQuadrature:
-    return "quadrature";
-  case IntegratorKind::kQmc:
-    return "qmc";
-  case IntegratorKind::kMc:
-    return "mc";
-  case IntegratorKind::kEngine:
-    return "engine";
+    case IntegratorKind::kQuadrature:
+      return "quadrature";
+    case IntegratorKind::kQmc:
+      return "qmc";
+    case IntegratorKind::kMc:
+      return "mc";
+    case IntegratorKind::kEngine:
+      return "engine";
   }
   return "quadrature";
 }
 
-TableKind ParseTable(const std::string &s) {
-  if (s == "E")
-    return TableKind::kE;
-  if (s == "E_avg")
-    return TableKind::kEavg;
-  if (s == "dfg")
-    return TableKind::kDfg;
-  if (s == "sel_norm")
-    return TableKind::kSelNorm;
-  if (s == "gen_schlick_s")
-    return TableKind::kGenSchlickS;
-  if (s == "gen_schlick_ior_s")
-    return TableKind::kGenSchlickIorS;
-  Bad("{table}: unknown table '" + s +
-      "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or "
-      "gen_schlick_ior_s)" +
-      DidYouMean(s,
-                 {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s",
-                  "gen_schlick_ior_s"},
-                 {{"albedo", "E"},
-                  {"eavg", "E_avg"},
-                  {"brdf_lut", "dfg"},
-                  {"gen_schlick", "gen_schlick_s"}}));
+TableKind ParseTable(const std::string& s) {
+  if (s == "E") return TableKind::kE;
+  if (s == "E_avg") return TableKind::kEavg;
+  if (s == "dfg") return TableKind::kDfg;
+  if (s == "sel_norm") return TableKind::kSelNorm;
+  if (s == "gen_schlick_s") return TableKind::kGenSchlickS;
+  if (s == "gen_schlick_ior_s") return TableKind::kGenSchlickIorS;
+  Bad("{table}: unknown table '" + s + "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or gen_schlick_ior_s)" +
+      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s"},
+                 {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}, {"gen_schlick", "gen_schlick_s"}}));
 }
-Warp ParseWarp(const std::string &s) {
-  if (s == "linear")
-    return Warp::kLinear;
-  if (s == "square")
-    return Warp::kSquare;
-  if (s == "sqrt")
-    return Warp::kSqrt;
-  if (s == "tail")
-    return Warp::kTail;
-  if (s == "fresnel-z")
-    return Warp::kFresnelZ;
-  if (s == "schlick-z")
-    return Warp::kSchlickZ;
-  if (s == "two-sided")
-    return Warp::kTwoSided;
+Warp ParseWarp(const std::string& s) {
+  if (s == "linear") return Warp::kLinear;
+  if (s == "square") return Warp::kSquare;
+  if (s == "sqrt") return Warp::kSqrt;
+  if (s == "tail") return Warp::kTail;
+  if (s == "fresnel-z") return Warp::kFresnelZ;
+  if (s == "schlick-z") return Warp::kSchlickZ;
+  if (s == "two-sided") return Warp::kTwoSided;
   Bad("{warp}: unknown warp '" + s +
       "' (expected linear, square, sqrt, tail for the gamma axis, "
-      "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent "
-      "axis)");
+      "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent axis)");
 }
-Placement ParsePlacement(const std::string &s) {
-  if (s == "centers")
-    return Placement::kCenters;
-  if (s == "edges")
-    return Placement::kEdges;
+Placement ParsePlacement(const std::string& s) {
+  if (s == "centers") return Placement::kCenters;
+  if (s == "edges") return Placement::kEdges;
   Bad("{placement}: unknown placement '" + s + "' (expected centers or edges)");
 }
-IntegratorKind ParseIntegrator(const std::string &s) {
-  if (s == "quadrature")
-    return IntegratorKind::kQuadrature;
-  if (s == "qmc")
-    return IntegratorKind::kQmc;
-  if (s == "mc")
-    return IntegratorKind::kMc;
-  if (s == "engine")
-    return IntegratorKind::kEngine;
-  Bad("{integrator}: unknown integrator '" + s +
-      "' (expected quadrature, qmc, mc or engine)");
+IntegratorKind ParseIntegrator(const std::string& s) {
+  if (s == "quadrature") return IntegratorKind::kQuadrature;
+  if (s == "qmc") return IntegratorKind::kQmc;
+  if (s == "mc") return IntegratorKind::kMc;
+  if (s == "engine") return IntegratorKind::kEngine;
+  Bad("{integrator}: unknown integrator '" + s + "' (expected quadrature, qmc, mc or engine)");
 }
 
 double Axis::ValueAt(double fi) const {
@@ -152,33 +122,24 @@ double Axis::ValueAt(double fi) const {
   if (warp == Warp::kTail) {
     // ln u linear in t between the ends; gamma = 1.5 + u / (1 - u), with
     // 1 - u = -expm1(ln u) exact as u -> 1 (gamma -> inf).
-    auto log_u = [](double g) {
-      return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5));
-    };
+    auto log_u = [](double g) { return std::isinf(g) ? 0.0 : std::log((g - 1.5) / (g - 0.5)); };
     const double lu = (1 - t) * log_u(min) + t * log_u(max);
-    if (lu >= 0)
-      return kInfinity;
+    if (lu >= 0) return kInfinity;
     return 1.5 + std::exp(lu) / -std::expm1(lu);
   }
   if (warp == Warp::kFresnelZ) {
     // z = sqrt(|ior - 1| / (ior + 1)) linear in t; the axis lies on one
     // side of 1 (ValidateBakeSpec), where ior(z) is monotonic.
-    if (t == 0)
-      return min;
-    if (t == 1)
-      return max;
-    const double z = (1 - t) * FresnelZOfIor(min) + t * FresnelZOfIor(max),
-                 z2 = z * z;
+    if (t == 0) return min;
+    if (t == 1) return max;
+    const double z = (1 - t) * FresnelZOfIor(min) + t * FresnelZOfIor(max), z2 = z * z;
     return min >= 1 ? (1 + z2) / (1 - z2) : (1 - z2) / (1 + z2);
   }
   if (warp == Warp::kSchlickZ) {
     // z = 5 / (exponent + 5) linear in t (z = 0 is exponent = inf).
-    if (t == 0)
-      return min;
-    if (t == 1)
-      return max;
-    const double z =
-        (1 - t) * SchlickZOfExponent(min) + t * SchlickZOfExponent(max);
+    if (t == 0) return min;
+    if (t == 1) return max;
+    const double z = (1 - t) * SchlickZOfExponent(min) + t * SchlickZOfExponent(max);
     return z > 0 ? 5 * (1 - z) / z : kInfinity;
   }
   if (warp == Warp::kTwoSided) {
@@ -186,17 +147,13 @@ double Axis::ValueAt(double fi) const {
     // at u = 0 to 1 at H - 1, eta linear from 1 at H to max at N - 1.
     const double u = placement == Placement::kEdges ? fi : t * (size - 1);
     const double h = size / 2;
-    if (u <= h - 1)
-      return 1 / (1 + (1 / min - 1) * ((h - 1 - u) / (h - 1)));
-    if (u >= h)
-      return 1 + (max - 1) * ((u - h) / (h - 1));
+    if (u <= h - 1) return 1 / (1 + (1 / min - 1) * ((h - 1 - u) / (h - 1)));
+    if (u >= h) return 1 + (max - 1) * ((u - h) / (h - 1));
     return 1;
   }
   double w = t;
-  if (warp == Warp::kSquare)
-    w = t * t;
-  if (warp == Warp::kSqrt)
-    w = std::sqrt(t);
+  if (warp == Warp::kSquare) w = t * t;
+  if (warp == Warp::kSqrt) w = std::sqrt(t);
   return min + (max - min) * w;
 }
 
@@ -204,95 +161,88 @@ std::string Axis::ToJson() const {
   nlohmann::json j;
   j["name"] = name;
   j["size"] = size;
-  auto number = [](double v) {
-    return std::isinf(v) ? nlohmann::json("inf") : nlohmann::json(v);
-  };
+  auto number = [](double v) { return std::isinf(v) ? nlohmann::json("inf") : nlohmann::json(v); };
   j["min"] = number(min);
   j["max"] = number(max);
   j["warp"] = WarpName(warp);
   j["placement"] = PlacementName(placement);
-  if (clamp_min > 0)
-    j["clamp_min"] = clamp_min;
-  if (clamp_max < kInfinity)
-    j["clamp_max"] = clamp_max;
+  if (clamp_min > 0) j["clamp_min"] = clamp_min;
+  if (clamp_max < kInfinity) j["clamp_max"] = clamp_max;
   // The warps that are not a power of t state their map and list every
   // entry's value.
-  const char *map = nullptr;
+  const char* map = nullptr;
   switch (warp) {
-  case Warp::kTail:
-    map = "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t "
-          "ln u(max), "
+    case Warp::kTail:
+      map =
+          "u = (gamma - 1.5) / (gamma - 0.5) with ln u = (1 - t) ln u(min) + t ln u(max), "
           "gamma = 1.5 + u / (1 - u); u = 1 is gamma = inf";
-    break;
-  case Warp::kSchlickZ:
-    map = "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent "
-          "= 5 (1 - z) / z; "
+      break;
+    case Warp::kSchlickZ:
+      map =
+          "z = 5 / (exponent + 5) with z = (1 - t) z(min) + t z(max), exponent = 5 (1 - z) / z; "
           "z = 0 is exponent = inf";
-    break;
-  case Warp::kTwoSided:
-    map = "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - "
-          "1) (H - 1 - i) / (H - 1); "
-          "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view "
-          "inside the denser medium";
-    break;
-  case Warp::kFresnelZ:
-    map = "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) "
-          "z(min) + t z(max), "
+      break;
+    case Warp::kTwoSided:
+      map =
+          "index i of N = 2H entries (edges): i < H, 1 / ior = 1 + (1 / min - 1) (H - 1 - i) / (H - 1); "
+          "i >= H, ior = 1 + (max - 1) (i - H) / (H - 1); ior < 1 is the view inside the denser medium";
+      break;
+    case Warp::kFresnelZ:
+      map =
+          "z = sqrt(|ior - 1| / (ior + 1)) (= F0^(1/4)) with z = (1 - t) z(min) + t z(max), "
           "ior = (1 + z^2) / (1 - z^2)";
-    break;
-  case Warp::kLinear:
-  case Warp::kSquare:
-  case Warp::kSqrt:
-    break;
+      break;
+    case Warp::kLinear:
+    case Warp::kSquare:
+    case Warp::kSqrt:
+      break;
   }
   if (map) {
     j["map"] = map;
     nlohmann::json values = nlohmann::json::array();
-    for (int i = 0; i < size; ++i)
-      values.push_back(number(Value(i)));
+    for (int i = 0; i < size; ++i) values.push_back(number(Value(i)));
     j["values"] = values;
   }
   return j.dump();
 }
 
 int BakeSpec::EffectiveSamples() const {
-  if (samples > 0)
-    return samples;
+  if (samples > 0) return samples;
   switch (integrator) {
-  case IntegratorKind::kQuadrature:
-    return 512;
-  case IntegratorKind::kQmc:
-    return 4096;
-  case IntegratorKind::kMc:
-    return 4096;
-  case IntegratorKind::kEngine:
-    return 1024;
+    case IntegratorKind::kQuadrature:
+      return 512;
+    case IntegratorKind::kQmc:
+      return 4096;
+    case IntegratorKind::kMc:
+      return 4096;
+    case IntegratorKind::kEngine:
+      return 1024;
   }
   return 32;
 }
 
-const char *MeaningName(Meaning m) {
+const char* MeaningName(Meaning m) {
   switch (m) {
-  case Meaning::kE:
-    return "E";
-  case Meaning::kOneMinusE:
-    return "1-E";
-  case Meaning::kEavg:
-    return "E_avg";
-  case Meaning::kOneMinusEavg:
-    return "1-E_avg";
-  case Meaning::kDfgScale:
-    return "dfg.scale";
-  case Meaning::kDfgBias:
-    return "dfg.bias";
-  case Meaning::kSelIntegral:
-    return "sel.integral";
-  case Meaning::kSelRatio:
-    return "sel.ratio";
-  case Meaning::kS:
-    return "s";
-  case Meaning::kError:
-    return "error";
+    case Meaning::kE:
+      return "E";
+    case Meaning::kOneMinusE:
+      return "1-E";
+    case Meaning::kEavg:
+      return "E_avg";
+    case Meaning::kOneMinusEavg:
+      return "1-E_avg";
+    case Meaning::kDfgScale:
+      return "dfg.scale";
+    case Meaning::kDfgBias:
+      return "dfg.bias";
+    case Meaning::kSelIntegral:
+      return "sel.integral";
+    case Meaning::kSelRatio:
+      return "sel.ratio";
+    case Meaning::kS:
+      return "s";
+    case Meaning::kError:
+      return "error";
   }
   return "E";
 }
@@ -300,22 +250,20 @@ const char *MeaningName(Meaning m) {
 namespace {
 
 // The table's axes, fastest first (S: BakeSpec or const BakeSpec).
-template <class S> auto AxesOf(S &spec) {
-  using A = std::remove_pointer_t<decltype(&spec.mu)>; // Axis or const Axis
+template <class S>
+auto AxesOf(S& spec) {
+  using A = std::remove_pointer_t<decltype(&spec.mu)>;  // Axis or const Axis
   const bool eavg = spec.table == TableKind::kEavg;
   if (spec.model.kind == ModelKind::kEllipsoid) {
-    return eavg ? std::vector<A *>{} : std::vector<A *>{&spec.mu, &spec.phi};
+    return eavg ? std::vector<A*>{} : std::vector<A*>{&spec.mu, &spec.phi};
   }
-  if (spec.table == TableKind::kSelNorm)
-    return std::vector<A *>{&spec.alpha_x, &spec.alpha_y};
+  if (spec.table == TableKind::kSelNorm) return std::vector<A*>{&spec.alpha_x, &spec.alpha_y};
   if (spec.Anisotropic()) {
-    return eavg ? std::vector<A *>{&spec.roughness, &spec.anisotropy}
-                : std::vector<A *>{&spec.mu, &spec.phi, &spec.roughness,
-                                   &spec.anisotropy};
+    return eavg ? std::vector<A*>{&spec.roughness, &spec.anisotropy}
+                : std::vector<A*>{&spec.mu, &spec.phi, &spec.roughness, &spec.anisotropy};
   }
-  std::vector<A *> axes;
-  if (!eavg)
-    axes.push_back(&spec.mu);
+  std::vector<A*> axes;
+  if (!eavg) axes.push_back(&spec.mu);
   axes.push_back(&spec.roughness);
   if (spec.table == TableKind::kGenSchlickS) {
     axes.push_back(&spec.exponent);
@@ -327,169 +275,125 @@ template <class S> auto AxesOf(S &spec) {
   return axes;
 }
 
-const char *Definition(Meaning meaning, const BakeSpec &spec) {
+const char* Definition(Meaning meaning, const BakeSpec& spec) {
   const bool glass = spec.Glass();
   if (meaning == Meaning::kS && spec.table == TableKind::kGenSchlickS) {
-    return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over "
-           "the visible normals h of a GGX "
-           "reflection lobe (r the reflection): the generalized Schlick "
-           "Fresnel is mix(F0, F90, s); no "
-           "masking weight";
+    return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over the visible normals h of a GGX "
+           "reflection lobe (r the reflection): the generalized Schlick Fresnel is mix(F0, F90, s); no masking weight";
   }
   if (meaning == Meaning::kS) {
-    return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, "
-           "1) 1{r.z > 0} dh over the "
-           "visible normals h of a GGX reflection lobe, F the exact dielectric "
-           "Fresnel, F0 = ((ior - 1) / "
-           "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking "
-           "weight";
+    return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, 1) 1{r.z > 0} dh over the "
+           "visible normals h of a GGX reflection lobe, F the exact dielectric Fresnel, F0 = ((ior - 1) / "
+           "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking weight";
   }
-  if (glass && meaning == Meaning::kE &&
-      spec.part == DielectricPart::kReflection) {
-    return "directional albedo E(mu) = integral over the upper hemisphere of "
-           "f_R cos(theta_i) dwi of "
-           "the rough dielectric's reflection lobe, Fresnel included: the "
-           "energy it reflects";
+  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kReflection) {
+    return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
+           "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
   }
-  if (glass && meaning == Meaning::kE &&
-      spec.part == DielectricPart::kTransmission) {
-    return "directional albedo E(mu) = integral over the lower hemisphere of "
-           "f_T |cos(theta_i)| dwi of "
-           "the rough dielectric's refraction lobe, Fresnel included: the "
-           "energy it refracts";
+  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kTransmission) {
+    return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
+           "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
   }
   if (glass && meaning == Meaning::kE) {
-    return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) "
-           "|cos(theta_i)| dwi of "
+    return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
            "the rough dielectric, Fresnel included: reflection plus refraction";
   }
-  if (meaning == Meaning::kE)
-    return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = "
-           "1";
-  if (meaning == Meaning::kOneMinusE)
-    return "1 - E(mu), computed in double before rounding";
-  if (meaning == Meaning::kEavg)
-    return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
-  if (meaning == Meaning::kOneMinusEavg)
-    return "1 - E_avg, computed in double before rounding";
+  if (meaning == Meaning::kE) return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
+  if (meaning == Meaning::kOneMinusE) return "1 - E(mu), computed in double before rounding";
+  if (meaning == Meaning::kEavg) return "average albedo E_avg = 2 integral_0^1 E(mu) mu dmu";
+  if (meaning == Meaning::kOneMinusEavg) return "1 - E_avg, computed in double before rounding";
   if (meaning == Meaning::kSelIntegral) {
-    return "N = integral over the sphere of the squared ellipsoidal lobe K "
-           "([TokuyoshiHarada]); K / N "
+    return "N = integral over the sphere of the squared ellipsoidal lobe K ([TokuyoshiHarada]); K / N "
            "integrates to 1; independent of the lobe's rotation";
   }
-  if (meaning == Meaning::kSelRatio)
-    return "N / (4 pi alpha_x alpha_y): 1 for alpha_x = alpha_y";
+  if (meaning == Meaning::kSelRatio) return "N / (4 pi alpha_x alpha_y): 1 for alpha_x = alpha_y";
   if (meaning == Meaning::kDfgScale) {
-    return "integral of (f/F) (1 - Fc) cos(theta_i) dwi, Fc = (1 - wo.h)^5 "
-           "(Schlick weight); "
+    return "integral of (f/F) (1 - Fc) cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
            "the specular albedo is F0 scale + F90 bias";
   }
   if (meaning == Meaning::kDfgBias) {
-    return "integral of (f/F) Fc cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick "
-           "weight); "
+    return "integral of (f/F) Fc cos(theta_i) dwi, Fc = (1 - wo.h)^5 (Schlick weight); "
            "the specular albedo is F0 scale + F90 bias";
   }
-  return "the integrator's estimate of the absolute error of this texel before "
-         "storage";
+  return "the integrator's estimate of the absolute error of this texel before storage";
 }
 
-} // namespace
+}  // namespace
 
-std::vector<Axis *> TableAxes(BakeSpec *spec) { return AxesOf(*spec); }
+std::vector<Axis*> TableAxes(BakeSpec* spec) { return AxesOf(*spec); }
 
-bool ParameterAxis(const Axis &axis) {
-  return axis.name == "gamma" || axis.name == "ior" || axis.name == "exponent";
-}
+bool ParameterAxis(const Axis& axis) { return axis.name == "gamma" || axis.name == "ior" || axis.name == "exponent"; }
 
-TableShape ShapeOf(const BakeSpec &spec) {
+TableShape ShapeOf(const BakeSpec& spec) {
   TableShape s;
-  for (const Axis *a : AxesOf(spec))
-    s.axes.push_back(*a);
-  for (size_t i = 0; i < s.axes.size(); ++i)
-    (i == 0 ? s.width : s.height) *= s.axes[i].size;
+  for (const Axis* a : AxesOf(spec)) s.axes.push_back(*a);
+  for (size_t i = 0; i < s.axes.size(); ++i) (i == 0 ? s.width : s.height) *= s.axes[i].size;
   std::vector<Meaning> meanings;
   switch (spec.table) {
-  case TableKind::kE:
-    meanings = {spec.complement ? Meaning::kOneMinusE : Meaning::kE};
-    break;
-  case TableKind::kEavg:
-    meanings = {spec.complement ? Meaning::kOneMinusEavg : Meaning::kEavg};
-    break;
-  case TableKind::kDfg:
-    meanings = {Meaning::kDfgScale, Meaning::kDfgBias};
-    if (spec.complement)
-      meanings.push_back(Meaning::kOneMinusE);
-    break;
-  case TableKind::kSelNorm:
-    meanings = {Meaning::kSelIntegral, Meaning::kSelRatio};
-    break;
-  case TableKind::kGenSchlickS:
-  case TableKind::kGenSchlickIorS:
-    meanings = {Meaning::kS};
-    break;
+    case TableKind::kE:
+      meanings = {spec.complement ? Meaning::kOneMinusE : Meaning::kE};
+      break;
+    case TableKind::kEavg:
+      meanings = {spec.complement ? Meaning::kOneMinusEavg : Meaning::kEavg};
+      break;
+    case TableKind::kDfg:
+      meanings = {Meaning::kDfgScale, Meaning::kDfgBias};
+      if (spec.complement) meanings.push_back(Meaning::kOneMinusE);
+      break;
+    case TableKind::kSelNorm:
+      meanings = {Meaning::kSelIntegral, Meaning::kSelRatio};
+      break;
+    case TableKind::kGenSchlickS:
+    case TableKind::kGenSchlickIorS:
+      meanings = {Meaning::kS};
+      break;
   }
   s.value_channels = int(meanings.size());
-  if (spec.error_channel)
-    meanings.push_back(Meaning::kError);
+  if (spec.error_channel) meanings.push_back(Meaning::kError);
   // dfg and sel_norm name their channels in a layer, numbered in order:
   // dfg.0_scale, dfg.1_bias, dfg.2_1-E, dfg.N_error; the error channel of
   // the others is "error".
-  const char *layer = spec.table == TableKind::kDfg       ? "dfg."
-                      : spec.table == TableKind::kSelNorm ? "sel."
-                                                          : nullptr;
+  const char* layer = spec.table == TableKind::kDfg ? "dfg." : spec.table == TableKind::kSelNorm ? "sel." : nullptr;
   for (size_t c = 0; c < meanings.size(); ++c) {
     std::string name = MeaningName(meanings[c]);
     if (layer) {
       const std::string m = name;
       const size_t dot = m.find('.');
-      name = layer + std::to_string(c) + "_" +
-             (dot == std::string::npos ? m : m.substr(dot + 1));
+      name = layer + std::to_string(c) + "_" + (dot == std::string::npos ? m : m.substr(dot + 1));
     }
     s.channels.push_back({name, meanings[c], Definition(meanings[c], spec)});
   }
   return s;
 }
 
-std::vector<int> DefaultSizes(const BakeSpec &spec) {
+std::vector<int> DefaultSizes(const BakeSpec& spec) {
   const bool eavg = spec.table == TableKind::kEavg;
-  if (spec.GenSchlick())
-    return {16, 16, 16};
-  if (spec.Glass())
-    return eavg ? std::vector<int>{32, 32} : std::vector<int>{32, 32, 32};
-  if (spec.Anisotropic())
-    return eavg ? std::vector<int>{32, 16} : std::vector<int>{32, 16, 32, 16};
-  if (spec.model.kind == ModelKind::kEllipsoid)
-    return eavg ? std::vector<int>{} : std::vector<int>{32, 16};
+  if (spec.GenSchlick()) return {16, 16, 16};
+  if (spec.Glass()) return eavg ? std::vector<int>{32, 32} : std::vector<int>{32, 32, 32};
+  if (spec.Anisotropic()) return eavg ? std::vector<int>{32, 16} : std::vector<int>{32, 16, 32, 16};
+  if (spec.model.kind == ModelKind::kEllipsoid) return eavg ? std::vector<int>{} : std::vector<int>{32, 16};
   std::vector<int> sizes(eavg ? 1 : 2, 32);
-  if (spec.table != TableKind::kSelNorm && spec.HasGammaAxis())
-    sizes.push_back(spec.gamma.size);
+  if (spec.table != TableKind::kSelNorm && spec.HasGammaAxis()) sizes.push_back(spec.gamma.size);
   return sizes;
 }
 
-std::string SizeForm(const BakeSpec &spec) {
+std::string SizeForm(const BakeSpec& spec) {
   const bool eavg = spec.table == TableKind::kEavg;
   if (spec.model.kind == ModelKind::kEllipsoid) {
-    return eavg ? "no size (the ellipsoid's E_avg is one value)"
-                : "WxH (mu x phi_o, e.g. 64x64)";
+    return eavg ? "no size (the ellipsoid's E_avg is one value)" : "WxH (mu x phi_o, e.g. 64x64)";
   }
-  if (spec.table == TableKind::kSelNorm)
-    return "WxH (alpha_x x alpha_y, e.g. 32x32)";
-  if (spec.table == TableKind::kGenSchlickS)
-    return "WxHxD (mu x roughness x exponent, e.g. 16x16x16)";
-  if (spec.table == TableKind::kGenSchlickIorS)
-    return "WxHxD (mu x roughness x ior, e.g. 16x16x16)";
+  if (spec.table == TableKind::kSelNorm) return "WxH (alpha_x x alpha_y, e.g. 32x32)";
+  if (spec.table == TableKind::kGenSchlickS) return "WxHxD (mu x roughness x exponent, e.g. 16x16x16)";
+  if (spec.table == TableKind::kGenSchlickIorS) return "WxHxD (mu x roughness x ior, e.g. 16x16x16)";
   if (spec.Glass()) {
-    return eavg ? "NxD (roughness x ior, e.g. 32x16)"
-                : "WxHxD (mu x roughness x ior, e.g. 32x32x16)";
+    return eavg ? "NxD (roughness x ior, e.g. 32x16)" : "WxHxD (mu x roughness x ior, e.g. 32x32x16)";
   }
   if (spec.Anisotropic()) {
     return eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
-                : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. "
-                  "32x16x32x16)";
+                : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)";
   }
   if (spec.HasGammaAxis()) {
-    return eavg ? "NxD (roughness x gamma, e.g. 32x16)"
-                : "WxHxD (mu x roughness x gamma, e.g. 32x32x16)";
+    return eavg ? "NxD (roughness x gamma, e.g. 32x16)" : "WxHxD (mu x roughness x gamma, e.g. 32x32x16)";
   }
   return eavg ? "N (roughness, e.g. 32)" : "WxH (mu x roughness, e.g. 32x32)";
 }
@@ -497,190 +401,150 @@ std::string SizeForm(const BakeSpec &spec) {
 namespace {
 
 // Every axis: 1 to 8192 entries, at least 2 with edges placement.
-void CheckAxisSize(const Axis &a) {
-  if (a.size < 1 || a.size > 8192)
-    Bad("{size}: each axis must have 1 to 8192 entries");
-  if (a.placement == Placement::kEdges && a.size < 2)
-    Bad("{size}: edges placement needs at least 2 entries per axis");
+void CheckAxisSize(const Axis& a) {
+  if (a.size < 1 || a.size > 8192) Bad("{size}: each axis must have 1 to 8192 entries");
+  if (a.placement == Placement::kEdges && a.size < 2) Bad("{size}: edges placement needs at least 2 entries per axis");
 }
-} // namespace
+}  // namespace
 
-void ValidateBakeSpec(const BakeSpec &spec) {
+std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec) {
+  const ModelKind m = spec.model.kind;
+  // The rules of these tables have no sampling counterpart: their
+  // integrands are integrated over their own domains (slope planes, the
+  // lobe's sphere, both sides of an interface) or per slice.
+  if (spec.GenSchlick() || spec.table == TableKind::kSelNorm || m == ModelKind::kGgxGlass ||
+      m == ModelKind::kEllipsoid || m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
+    return {IntegratorKind::kQuadrature};
+  }
+  return {IntegratorKind::kQuadrature, IntegratorKind::kQmc, IntegratorKind::kMc, IntegratorKind::kEngine};
+}
+
+void ValidateBakeSpec(const BakeSpec& spec) {
   const bool aniso = spec.Anisotropic();
   const bool glass = spec.Glass();
   ModelParams params = spec.model;
-  if (aniso)
-    params.kind = ModelKind::kGgx; // its widths come from the axes
-  if (glass)
-    params.alpha_x = params.alpha_y = 1.0; // from the roughness axis
+  if (aniso) params.kind = ModelKind::kGgx;          // its widths come from the axes
+  if (glass) params.alpha_x = params.alpha_y = 1.0;  // from the roughness axis
   ValidateModelParams(params);
   const ModelKind m = spec.model.kind;
   if (glass && spec.table != TableKind::kE && spec.table != TableKind::kEavg) {
-    Bad("{table}: ggx-glass bakes E and E_avg (reflection plus refraction; no "
-        "dfg)");
+    Bad("{table}: ggx-glass bakes E and E_avg (reflection plus refraction; no dfg)");
   }
-  if (glass && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("{integrator}: ggx-glass tables are baked with the quadrature only "
-        "(got " +
-        std::string(IntegratorName(spec.integrator)) + ")");
-  }
-  if (spec.inverse && !glass)
-    Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
+  if (spec.inverse && !glass) Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
   const bool gen_schlick = spec.GenSchlick();
   if (gen_schlick) {
     const std::string table = TableName(spec.table);
     if (m != ModelKind::kGgx) {
-      Bad("{model}: " + table +
-          " is the Fresnel factor of a GGX reflection lobe (give {model} ggx; "
-          "got '" +
+      Bad("{model}: " + table + " is the Fresnel factor of a GGX reflection lobe (give {model} ggx; got '" +
           spec.model.name() + "')");
     }
-    if (spec.integrator != IntegratorKind::kQuadrature) {
-      Bad("{integrator}: " + table +
-          " tables are baked with the quadrature only (got " +
-          IntegratorName(spec.integrator) + ")");
-    }
-    if (spec.complement)
-      Bad("{complement}: " + table + " stores s itself");
+    if (spec.complement) Bad("{complement}: " + table + " stores s itself");
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
-    Bad("{part}: only ggx-glass has reflection and refraction parts (got "
-        "{part} " +
+    Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +
         std::string(DielectricPartName(spec.part)) + ")");
   }
   const bool sel = spec.table == TableKind::kSelNorm;
   if (sel != (m == ModelKind::kSel)) {
-    Bad(sel ? "{table} sel_norm is the integral of the sel lobe: give {model} "
-              "sel"
+    Bad(sel ? "{table} sel_norm is the integral of the sel lobe: give {model} sel"
             : "{model} sel: its table is sel_norm ({table} sel_norm)");
   }
-  if (sel &&
-      (spec.integrator != IntegratorKind::kQuadrature || spec.complement)) {
-    Bad("{table} sel_norm: the quadrature only, without {complement}");
-  }
+  if (sel && spec.complement) Bad("{complement}: sel_norm stores N and N / (4 pi alpha_x alpha_y), no complement");
   const bool sheen = m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse;
   if (sheen && spec.table == TableKind::kDfg) {
     Bad("{table}: " + std::string(spec.model.name()) +
-        " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' "
-        "sheen and diffuse "
-        "channels are its E)");
+        " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)");
   }
-  if (sheen && spec.complement && spec.table == TableKind::kDfg)
-    Bad("{complement}: no dfg here");
+  if (sheen && spec.complement && spec.table == TableKind::kDfg) Bad("{complement}: no dfg here");
   const bool ellipsoid = m == ModelKind::kEllipsoid;
   if (ellipsoid && spec.table == TableKind::kDfg) {
     Bad("{table}: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
   }
-  if (ellipsoid && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("{integrator}: ellipsoid tables are baked with the quadrature only");
-  }
-  if (m != ModelKind::kGgx && m != ModelKind::kBeckmann &&
-      m != ModelKind::kStudentT && !aniso && !sel && !ellipsoid && !sheen &&
-      !glass) {
-    Bad("{model}: tables are baked for ggx, ggx-aniso, beckmann, std, "
-        "ellipsoid, sel, charlie, "
+  if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso && !sel && !ellipsoid &&
+      !sheen && !glass) {
+    Bad("{model}: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie, "
         "disney-diffuse and ggx-glass (got '" +
         std::string(spec.model.name()) + "')");
   }
-  if (aniso && spec.table == TableKind::kDfg)
-    Bad("{table}: ggx-aniso bakes E and E_avg (no dfg)");
-  if (aniso && spec.integrator != IntegratorKind::kQuadrature) {
-    Bad("{integrator}: ggx-aniso tables are baked with the quadrature only");
+  if (aniso && spec.table == TableKind::kDfg) Bad("{table}: ggx-aniso bakes E and E_avg (no dfg)");
+  const std::vector<IntegratorKind> integrators = TableIntegrators(spec);
+  if (std::find(integrators.begin(), integrators.end(), spec.integrator) == integrators.end()) {
+    Bad("{integrator}: " + std::string(gen_schlick || sel ? TableName(spec.table) : spec.model.name()) +
+        " tables are baked with the quadrature only (got " + IntegratorName(spec.integrator) + ")");
   }
   // The view and lobe axes here; the parameter axes below.
-  for (const Axis *a : AxesOf(spec)) {
-    if (ParameterAxis(*a))
-      continue;
+  for (const Axis* a : AxesOf(spec)) {
+    if (ParameterAxis(*a)) continue;
     if (a->warp == Warp::kTail)
-      Bad("{warp}: tail is the gamma axis's warp (the " + a->name +
-          " axis takes linear, square or sqrt)");
+      Bad("{warp}: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
     if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
-      Bad("{warp}: " + std::string(WarpName(a->warp)) + " is the " +
-          (a->warp == Warp::kFresnelZ ? "ior" : "exponent") +
-          " axis's warp (the " + a->name +
-          " axis takes linear, square or sqrt)");
+      Bad("{warp}: " + std::string(WarpName(a->warp)) + " is the " + (a->warp == Warp::kFresnelZ ? "ior" : "exponent") +
+          " axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
     }
     CheckAxisSize(*a);
     // One entry may sit at one value (min = max), as the report's probes do.
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
-    if (!(a->clamp_min >= 0 && a->clamp_min <= 1))
-      Bad("the " + a->name + " axis clamp must lie in [0, 1]");
+    if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
     const bool angle = a->name == "phi_o";
     const double upper = angle ? (ellipsoid ? 2 * kPi<double> : kHalfPi) : 1.0;
-    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered ||
-        a->min < 0 || a->max > upper * (1 + 1e-15)) {
+    if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 || a->max > upper * (1 + 1e-15)) {
       std::ostringstream os;
       os << "{range}: the " << a->name
-         << " axis must satisfy 0 <= min < max <= "
-         << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1")
+         << " axis must satisfy 0 <= min < max <= " << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1")
          << " (got " << a->min << ":" << a->max << ")";
       Bad(os.str());
     }
   }
   if (spec.HasGammaAxis()) {
-    const Axis &g = spec.gamma;
+    const Axis& g = spec.gamma;
     if (m != ModelKind::kStudentT) {
-      Bad("{size}: only std has a gamma axis (got model '" +
-          std::string(spec.model.name()) + "')");
+      Bad("{size}: only std has a gamma axis (got model '" + std::string(spec.model.name()) + "')");
     }
     CheckAxisSize(g);
-    if (g.warp != Warp::kTail)
-      Bad("{warp}: the gamma axis takes the tail warp only");
+    if (g.warp != Warp::kTail) Bad("{warp}: the gamma axis takes the tail warp only");
     const bool ordered = g.size == 1 ? g.min <= g.max : g.min < g.max;
-    if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) ||
-        std::isinf(g.min) || !ordered) {
-      Bad("{range}: the gamma axis must satisfy " +
-          ExactText(kMinStudentTGamma<double>) +
-          " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " +
-          ExactText(g.min) + ":" + ExactText(g.max) + ")");
+    if (std::isnan(g.max) || !StudentTGammaAllowed(g.min) || std::isinf(g.min) || !ordered) {
+      Bad("{range}: the gamma axis must satisfy " + ExactText(kMinStudentTGamma<double>) +
+          " <= min < max <= inf (the STD's mean slope diverges at 1.5; got " + ExactText(g.min) + ":" +
+          ExactText(g.max) + ")");
     }
   }
   if (spec.table == TableKind::kGenSchlickS) {
-    const Axis &a = spec.exponent;
+    const Axis& a = spec.exponent;
     CheckAxisSize(a);
     if (a.warp != Warp::kSchlickZ && a.warp != Warp::kLinear) {
-      Bad("{warp}: the exponent axis takes schlick-z (z = 5 / (exponent + 5), "
-          "the default) or linear (got " +
+      Bad("{warp}: the exponent axis takes schlick-z (z = 5 / (exponent + 5), the default) or linear (got " +
           std::string(WarpName(a.warp)) + ")");
     }
     // Either direction with schlick-z (Cycles' runs from inf down to 0);
     // every value baked must be finite: inf needs a clamp.
     const bool ordered = a.size == 1 || a.min != a.max;
-    const bool increasing =
-        a.warp == Warp::kLinear ? a.min < a.max || a.size == 1 : true;
-    const bool finite =
-        std::isfinite(std::min(std::max(a.min, a.max), a.clamp_max));
+    const bool increasing = a.warp == Warp::kLinear ? a.min < a.max || a.size == 1 : true;
+    const bool finite = std::isfinite(std::min(std::max(a.min, a.max), a.clamp_max));
     if (!(a.min >= 0) || !(a.max >= 0) || !ordered || !increasing || !finite ||
         !(a.clamp_min >= 0 && a.clamp_min <= a.clamp_max)) {
-      Bad("{range}: the exponent axis must satisfy 0 <= min, max <= inf, min "
-          "!= max (inf with the "
+      Bad("{range}: the exponent axis must satisfy 0 <= min, max <= inf, min != max (inf with the "
           "schlick-z warp and a clamp; got " +
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
   }
   if (glass || spec.table == TableKind::kGenSchlickIorS) {
-    const Axis &a = spec.ior;
+    const Axis& a = spec.ior;
     CheckAxisSize(a);
-    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear &&
-        a.warp != Warp::kTwoSided) {
-      Bad("{warp}: the ior axis takes fresnel-z (z = F0^(1/4), the default), "
-          "linear or two-sided (got " +
+    if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {
+      Bad("{warp}: the ior axis takes fresnel-z (z = F0^(1/4), the default), linear or two-sided (got " +
           std::string(WarpName(a.warp)) + ")");
     }
     if (a.warp == Warp::kTwoSided) {
       if (a.placement != Placement::kEdges || a.size < 4 || a.size % 2 != 0) {
-        Bad("{size}: a two-sided ior axis has edges placement and an even size "
-            "of at least 4 (got " +
+        Bad("{size}: a two-sided ior axis has edges placement and an even size of at least 4 (got " +
             std::to_string(a.size) + ", " + PlacementName(a.placement) + ")");
       }
-      if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) ||
-          !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
-        Bad("{range}: a two-sided ior axis must satisfy 0.01 <= min < 1 < max "
-            "<= 100 (got " +
-            ExactText(a.min) + ":" + ExactText(a.max) + ")");
+      if (!(a.min >= 1 / kMaxFresnelIndex && a.min < 1) || !(a.max > 1 && a.max <= kMaxFresnelIndex)) {
+        Bad("{range}: a two-sided ior axis must satisfy 0.01 <= min < 1 < max <= 100 (got " + ExactText(a.min) + ":" +
+            ExactText(a.max) + ")");
       }
-      if (spec.inverse)
-        Bad("{inverse}: a two-sided ior axis holds both sides already");
+      if (spec.inverse) Bad("{inverse}: a two-sided ior axis holds both sides already");
     }
     const bool ordered = a.size == 1 ? a.min <= a.max : a.min < a.max;
     // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
@@ -688,77 +552,60 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     // both sides of the interface.
     const double top = std::min(a.max, a.clamp_max);
     if (a.warp != Warp::kTwoSided &&
-        (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered ||
-         !(a.min <= a.clamp_max))) {
-      Bad("{range}: the ior axis must satisfy 1 <= min < max <= 100 (light "
-          "leaving the medium, "
+        (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max))) {
+      Bad("{range}: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "
           "eta = 1/ior: {inverse}; got " +
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
-    if (std::isinf(a.max) && a.warp != Warp::kFresnelZ)
-      Bad("{range}: an ior axis to inf needs the fresnel-z warp");
+    if (std::isinf(a.max) && a.warp != Warp::kFresnelZ) Bad("{range}: an ior axis to inf needs the fresnel-z warp");
     if (spec.table == TableKind::kGenSchlickIorS && a.warp == Warp::kTwoSided) {
-      Bad("{warp}: gen_schlick_ior_s is over ior >= 1 (the dielectric shape "
-          "outside the medium): no two-sided axis");
+      Bad("{warp}: gen_schlick_ior_s is over ior >= 1 (the dielectric shape outside the medium): no two-sided axis");
     }
   }
-  if (spec.samples < 0 || spec.samples > 1 << 24)
-    Bad("{samples} must be in [1, 16777216]");
+  if (spec.samples < 0 || spec.samples > 1 << 24) Bad("{samples} must be in [1, 16777216]");
   if (spec.integrator == IntegratorKind::kQuadrature && spec.samples > 4096) {
     Bad("{samples}: the quadrature takes at most 4096 nodes per dimension");
   }
-  if (spec.integrator == IntegratorKind::kQmc && spec.samples != 0 &&
-      spec.samples < 16) {
+  if (spec.integrator == IntegratorKind::kQmc && spec.samples != 0 && spec.samples < 16) {
     Bad("{samples}: qmc needs at least 16 samples (8 replicas of 2)");
   }
   if (spec.threads < 0 || spec.threads > kMaxThreads) {
-    Bad("{threads} must be in [0, " + std::to_string(kMaxThreads) +
-        "] (0 = all cores)");
+    Bad("{threads} must be in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores)");
   }
-  if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance))
-    Bad("{tolerance} must be a finite number >= 0");
+  if (!(spec.tolerance >= 0) || !std::isfinite(spec.tolerance)) Bad("{tolerance} must be a finite number >= 0");
   // A table is one image of int width and height (a 3D or 4D table stacks
   // its slices): at most 2^31 - 1 texels.
   const int64_t texels = ShapeOf(spec).Texels();
   if (texels > int64_t(std::numeric_limits<int>::max())) {
-    Bad("{size}: " + std::to_string(texels) +
-        " texels exceed the 2147483647 a table holds");
+    Bad("{size}: " + std::to_string(texels) + " texels exceed the 2147483647 a table holds");
   }
 }
 
-const char *const kStoredRange =
-    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1] (charlie and disney-diffuse: "
-    "E and E_avg "
-    "clamped to >= 0 only, neither lobe conserves energy); dfg.scale and "
-    "dfg.bias clamped to >= 0 with "
-    "scale + bias <= 1 in the stored precision; brdfbake.max_abs_error covers "
-    "the clamp and the "
+const char* const kStoredRange =
+    "E, 1-E, E_avg and 1-E_avg clamped to [0, 1] (charlie and disney-diffuse: E and E_avg "
+    "clamped to >= 0 only, neither lobe conserves energy); dfg.scale and dfg.bias clamped to >= 0 with "
+    "scale + bias <= 1 in the stored precision; brdfbake.max_abs_error covers the clamp and the "
     "rounding to the pixel type";
 
-const char *const kLayoutText = "axes fastest first: x = columns, then y = "
-                                "rows, then slices (a 3D table stores its 2D "
-                                "slices stacked vertically); row 0 is the "
-                                "first row of the data window; channels in the "
-                                "order of brdfbake.channel_order; axis i of "
-                                "size N: t = (i + 0.5) / N (centers) or "
-                                "t = i / (N - 1) (edges), value = min + (max - "
-                                "min) w(t), w(t) = t (linear), t^2 (square), "
-                                "sqrt(t) (sqrt)";
+const char* const kLayoutText =
+    "axes fastest first: x = columns, then y = rows, then slices (a 3D table stores its 2D "
+    "slices stacked vertically); row 0 is the first row of the data window; channels in the "
+    "order of brdfbake.channel_order; axis i of size N: t = (i + 0.5) / N (centers) or "
+    "t = i / (N - 1) (edges), value = min + (max - min) w(t), w(t) = t (linear), t^2 (square), sqrt(t) (sqrt)";
 
-size_t BakeOutputBytes(const BakeSpec &spec) {
+size_t BakeOutputBytes(const BakeSpec& spec) {
   const TableShape shape = ShapeOf(spec);
   const size_t n = size_t(shape.Texels());
   const size_t channels = shape.channels.size();
   // values (double), stored (float) and half bits per channel, plus the
   // error vector.
   const size_t half = spec.half ? sizeof(uint16_t) : 0;
-  return n *
-         (channels * (sizeof(double) + sizeof(float) + half) + sizeof(double));
+  return n * (channels * (sizeof(double) + sizeof(float) + half) + sizeof(double));
 }
 
-int64_t BakeOutputValues(const BakeSpec &spec) {
+int64_t BakeOutputValues(const BakeSpec& spec) {
   const TableShape shape = ShapeOf(spec);
   return shape.Texels() * int64_t(shape.channels.size());
 }
 
-} // namespace brdfbake
+}  // namespace brdfbake

@@ -7,12 +7,12 @@
 
 #include "brdfbake/table_files.h"
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "brdfbake/exr.h"
 #include "brdfbake/presets.h"
@@ -23,25 +23,23 @@ namespace {
 
 TEST(TableFilesTest, OwnFilesSitBesideTheTable) {
   const std::vector<OutputFile> files = OwnTableFiles(
-      "out/dfg.ktx2", Container::kKtx2, true, true,
-      {ShaderLanguage::kGlsl, ShaderLanguage::kWgsl}, "brdfbake_dfg", 3);
+      "out/dfg.ktx2", Container::kKtx2, true, true, {ShaderLanguage::kGlsl, ShaderLanguage::kWgsl}, "brdfbake_dfg", 3);
   ASSERT_EQ(files.size(), 4u);
   EXPECT_EQ(files[0].path, "out/dfg.ktx2");
   EXPECT_EQ(files[0].container, Container::kKtx2);
-  EXPECT_FALSE(files[0].table_exr); // only an EXR can be the table's own
+  EXPECT_FALSE(files[0].table_exr);  // only an EXR can be the table's own
   EXPECT_EQ(files[1].path, "out/dfg.h");
   EXPECT_EQ(files[1].container, Container::kHeader);
   EXPECT_EQ(files[2].path, "out/dfg.glsl");
   EXPECT_TRUE(files[2].lookup);
   EXPECT_EQ(files[3].path, "out/dfg.wgsl");
   EXPECT_EQ(files[3].language, ShaderLanguage::kWgsl);
-  for (const OutputFile &f : files) {
+  for (const OutputFile& f : files) {
     EXPECT_EQ(f.table, 3);
     EXPECT_EQ(f.symbol, "brdfbake_dfg");
   }
   EXPECT_EQ(LookupPath("a.b/E.exr", ShaderLanguage::kHlsl), "a.b/E.hlsl");
-  EXPECT_TRUE(OwnTableFiles("E.exr", Container::kExr, true, false, {}, "s")[0]
-                  .table_exr);
+  EXPECT_TRUE(OwnTableFiles("E.exr", Container::kExr, true, false, {}, "s")[0].table_exr);
 }
 
 TEST(TableFilesTest, WritesWhatThePlanSays) {
@@ -50,16 +48,14 @@ TEST(TableFilesTest, WritesWhatThePlanSays) {
   const Table t = Bake(spec);
   const Image im = ArrangeTable(t, DefaultLayout(t));
   const std::string dir = test::Scratch("table_files");
-  for (const OutputFile &f :
-       OwnTableFiles(dir + "/E.exr", Container::kExr, true, true,
-                     {ShaderLanguage::kGlsl}, "brdfbake_E")) {
+  for (const OutputFile& f :
+       OwnTableFiles(dir + "/E.exr", Container::kExr, true, true, {ShaderLanguage::kGlsl}, "brdfbake_E")) {
     WriteOutputFile(f, t, im, "");
   }
   const ExrContents back = ReadExr(dir + "/E.exr");
   EXPECT_EQ(back.channels.size(), t.channels.size());
   EXPECT_NE(test::Slurp(dir + "/E.h").find("brdfbake_E["), std::string::npos);
-  EXPECT_NE(test::Slurp(dir + "/E.glsl").find("brdfbake_E("),
-            std::string::npos);
+  EXPECT_NE(test::Slurp(dir + "/E.glsl").find("brdfbake_E("), std::string::npos);
   // A file of every table is its preset's to write.
   OutputFile all{dir + "/all.h", -1};
   EXPECT_THROW(WriteOutputFile(all, t, im, ""), std::invalid_argument);
@@ -72,8 +68,7 @@ TEST(TableFilesTest, PresetFilesNameTheirSymbols) {
   PresetRun run;
   run.dir = "d";
   run.shaders = {ShaderLanguage::kGlsl};
-  const std::vector<PresetFile> files =
-      PresetFiles(FindPreset("filament"), run);
+  const std::vector<PresetFile> files = PresetFiles(FindPreset("filament"), run);
   ASSERT_EQ(files.size(), 2u);
   EXPECT_EQ(files[0].path, "d/dfg.inc");
   EXPECT_EQ(files[0].symbol, "DFG_LUT");
@@ -81,5 +76,5 @@ TEST(TableFilesTest, PresetFilesNameTheirSymbols) {
   EXPECT_EQ(files[1].symbol, "brdfbake_DFG_LUT");
 }
 
-} // namespace
-} // namespace brdfbake
+}  // namespace
+}  // namespace brdfbake
