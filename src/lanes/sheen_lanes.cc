@@ -80,12 +80,15 @@ struct SimdCharlieNodes {
       const V p = hn::Mul(mu, cv), r = hn::Mul(s_mu, sv_th), two_c = hn::Add(cv, cv);
       const auto r_pos = hn::Gt(r, zero);
       const V rs = hn::IfThenElse(r_pos, r, one);
-      // cos(phi) where NoL = nol; -1 (phi = pi) where r = 0.
+      // cos(phi) where NoL = nol: (nol + mu - 2 c p) / (2 c r), one
+      // division for the three; -1 (phi = pi) where r = 0.
+      const V inv = hn::Div(one, hn::Mul(two_c, rs));
+      const V base = hn::NegMulAdd(two_c, p, mu);
       auto cos_at = [&](V nol) {
-        const V v = hn::Div(hn::Sub(hn::Div(hn::Add(nol, mu), two_c), p), rs);
+        const V v = hn::Mul(hn::Add(nol, base), inv);
         return hn::IfThenElse(r_pos, hn::Min(hn::Max(v, minus_one), one), minus_one);
       };
-      const V cm = hn::IfThenElse(r_pos, hn::Div(hn::Sub(hn::Div(mu, two_c), p), rs), minus_one);
+      const V cm = hn::IfThenElse(r_pos, hn::Mul(base, inv), minus_one);
       const V phi_max = hn::IfThenElse(
           hn::Lt(cm, one), hn::Acos(d, hn::Min(hn::Max(cm, minus_one), one)), zero);
       const V nol0 = hn::Sub(hn::Mul(two_c, hn::Add(p, r)), mu);
@@ -104,7 +107,7 @@ struct SimdCharlieNodes {
       if (o.lambda) {
         hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
         const V ls = hn::Log(d, hn::IfThenElse(hn::Gt(split, zero), split, one));
-        hn::StoreU(hn::Exp(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
+        hn::StoreU(ExpF64Unguarded(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
       } else {
         hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
       }

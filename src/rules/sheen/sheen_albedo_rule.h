@@ -379,18 +379,24 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     // The initial pieces between the cuts.
     Slot* pieces = arcs->pieces[k];
     int n = 0;
+    // (Each cut read once, into a register: the compiler's paired load of
+    // cuts[j] and cuts[j + 1], just stored one by one, stalled on store
+    // forwarding.)
     auto add = [&](const double* cuts, int m, Var var, Batch* q) {
+      double lo = cuts[0];
       for (int j = 0; j + 1 < m; ++j) {
-        if (cuts[j + 1] > cuts[j]) {
-          pieces[n] = Slot{cuts[j], cuts[j + 1], 0.0, 0.0, var, nullptr, -1};
-          q->a[q->m] = cuts[j];
-          q->b[q->m] = cuts[j + 1];
+        const double hi = cuts[j + 1];
+        if (hi > lo) {
+          pieces[n] = Slot{lo, hi, 0.0, 0.0, var, nullptr, -1};
+          q->a[q->m] = lo;
+          q->b[q->m] = hi;
           q->arc[q->m] = k;
           q->slot[q->m] = n;
           q->rel[q->m] = nullptr;
           ++q->m;
           ++n;
         }
+        lo = hi;
       }
     };
     add(phi_cuts, n_phi, Var::kPhi, in_phi);
