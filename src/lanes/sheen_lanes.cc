@@ -133,13 +133,17 @@ struct SimdCharlieNodes {
     }
   }
 
-  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16, x > 0).
+  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16), for the
+  // rule's z_nol: x in (1e-30, 1] (normal, so Highway's log without its
+  // subnormal case) and e = 1 / power, below 7, so that e log(x) lies
+  // within -500 and 0 (ExpF64Unguarded's range).
   void Powers(const double* x, int n, double e, double* out) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const V ev = hn::Set(d, e);
     for (size_t i = 0; i < static_cast<size_t>(n); i += N) {
-      hn::StoreU(hn::Exp(d, hn::Mul(ev, hn::Log(d, hn::LoadU(d, x + i)))), d, out + i);
+      const V lx = hn::impl::Log<DF64, V, false>(d, hn::LoadU(d, x + i));
+      hn::StoreU(ExpF64Unguarded(d, hn::Mul(ev, lx)), d, out + i);
     }
   }
 
@@ -215,15 +219,16 @@ struct SimdCharlieNodes {
     const V one = hn::Set(d, 1.0), zero = hn::Zero(d), mu_v = hn::Set(d, mu);
     HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch], jns[16 * kCharlieBatch], jds[16 * kCharlieBatch],
         ls[16 * kCharlieBatch], ws[16 * kCharlieBatch];
-    for (size_t i = 0; i < n_phi; i += N) {
+    // The variable's map: the phi nodes' and the end part's vectors
+    // alternate, so that the core mixes the cosines' multiply-adds with
+    // the end part's square roots.
+    auto phi_map = [&](size_t i) HWY_ATTR {
       const Terms& t = terms[i / 16];
       const V y = hn::MulAdd(hn::Set(d, t.r), CosF64ZeroToPi(d, hn::Load(d, xs + i)), hn::Set(d, t.p));
       hn::Store(y, d, ys + i);
       hn::Store(hn::Sub(hn::Mul(hn::Set(d, t.two_c), y), mu_v), d, nols + i);
-      hn::Store(one, d, jns + i);
-      hn::Store(one, d, jds + i);
-    }
-    for (size_t i = n_phi; i < n; i += N) {
+    };
+    auto end_map = [&](size_t i) HWY_ATTR {
       const Terms& t = terms[i / 16];
       const V x = hn::Load(d, xs + i);
       V nol, jac_num, jac_den;
@@ -250,6 +255,10 @@ struct SimdCharlieNodes {
       hn::Store(nol, d, nols + i);
       hn::Store(jac_num, d, jns + i);
       hn::Store(jac_den, d, jds + i);
+    };
+    for (size_t k = 0; k < n_phi || n_phi + k < n; k += N) {
+      if (k < n_phi) phi_map(k);
+      if (n_phi + k < n) end_map(n_phi + k);
     }
     // Lambda: exp of L (CharlieLogLambda: L(w) below 1/2, 2 L(1/2) - L(1 -
     // w) above, L(x) = a / (1 + b x^p) + d x + e), x^p as exp(p log x)
@@ -301,8 +310,10 @@ struct SimdCharlieNodes {
         }
       }
     }
+    // g, with the Jacobian beyond the phi nodes (whose is 1).
     const V one_lambda_mu = hn::Set(d, 1 + lambda_mu);
     for (size_t i = 0; i < n; i += N) {
+      const bool in_phi = i < n_phi;
       const V y = hn::Load(d, ys + i), nol = hn::Load(d, nols + i);
       const auto up = hn::Gt(nol, zero);
       const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
@@ -320,7 +331,9 @@ struct SimdCharlieNodes {
       if (c.clamp) {
         // V <= 1, so g <= 4 NoL y.
         g = hn::Min(hn::Div(num, den), hn::Mul(hn::Mul(hn::Set(d, 4.0), nl), y));
-        g = hn::Div(hn::Mul(g, hn::Load(d, jns + i)), hn::Load(d, jds + i));
+        if (!in_phi) g = hn::Div(hn::Mul(g, hn::Load(d, jns + i)), hn::Load(d, jds + i));
+      } else if (in_phi) {
+        g = hn::Div(num, den);
       } else {
         g = hn::Div(hn::Mul(num, hn::Load(d, jns + i)), hn::Mul(den, hn::Load(d, jds + i)));
       }
