@@ -283,7 +283,8 @@ struct SimdCharlieNodes {
         const V sw = hn::Load(d, ws + i);
         const auto low = hn::Gt(sw, zero);
         const V w = hn::Abs(sw);
-        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i))));
+        // (w = 0 gives x^p below 1e-51 rather than 0, the same L.)
+        const V xp = ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i)));
         const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
         hn::Store(ExpF64Unguarded(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
       }

@@ -265,7 +265,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // node evaluator's arrays) and pieces.
   struct Arcs {
     CharlieArcTerms t[15];
-    double nol_split[15], inner_tol[15];
+    double nol_split[15];
     int n[15];
     Slot pieces[15][kMaxArcPieces];
   };
@@ -297,8 +297,8 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // Arc k of outer node i: its cuts and initial pieces, whose slots get
   // everything but their values; the pieces go to the batches (in phi and
   // in end_var apart: the node evaluator takes those in phi first).
-  auto start_arc = [&](const CharlieOuterNodes& o, int i, double inner_tol, int k, Arcs* arcs,
-                       Batch* in_phi, Batch* in_end) {
+  auto start_arc = [&](const CharlieOuterNodes& o, int i, int k, Arcs* arcs, Batch* in_phi,
+                       Batch* in_end) {
     const double c = o.c[i], s = o.s[i];
     CharlieArcTerms& t = arcs->t[k];
     t = CharlieArcTerms{mu * c, s_mu * s, 2 * c, mu};
@@ -414,13 +414,12 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       }
     }
     arcs->n[k] = n;
-    arcs->inner_tol[k] = inner_tol;
   };
   // J of arc k (its initial pieces evaluated) with its error: the worst
   // piece bisected until the tolerance, or until |K15 - G7| is down to
   // the rounding of the sum (a large weight D sin(theta_h) can ask for
   // more).
-  auto finish_arc = [&](int k, Arcs* arcs, double* err) {
+  auto finish_arc = [&](int k, Arcs* arcs, double inner_tol, double* err) {
     Slot* pieces = arcs->pieces[k];
     int& n = arcs->n[k];
     double v, e;
@@ -431,7 +430,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
         e += pieces[j].err;
       }
     };
-    for (sums(); e > std::max(arcs->inner_tol[k], 1e-13 * v) && n < kMaxArcPieces; sums()) {
+    for (sums(); e > std::max(inner_tol, 1e-13 * v) && n < kMaxArcPieces; sums()) {
       int w = 0;
       for (int j = 1; j < n; ++j) {
         if (pieces[j].err > pieces[w].err) w = j;
@@ -489,7 +488,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
         }
         // An empty arc: J = 0.
         if (!(o.phi_max[i] > 0)) continue;
-        start_arc(o, i, 0.5 * tol / w, n_arcs, &arcs, &in_phi, &in_end);
+        start_arc(o, i, n_arcs, &arcs, &in_phi, &in_end);
         node_of[n_arcs++] = i;
       }
       const int m_phi = in_phi.m;
@@ -504,7 +503,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       for (int k = 0; k < n_arcs; ++k) {
         const int i = node_of[k];
         double err;
-        const double j = finish_arc(k, &arcs, &err);
+        const double j = finish_arc(k, &arcs, 0.5 * tol / o.w[i], &err);
         e[i] = o.w[i] * err;
         v[i] = o.w[i] * j;
       }
