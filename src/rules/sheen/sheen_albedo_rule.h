@@ -281,15 +281,16 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // The end part's variable and its argument.
   const Var end_var = ck ? Var::kZ : Var::kLog;
   const double end_arg = ck ? power : eps;
-  // The pieces of batch entries [0, m) (the first m_phi in phi, the others
-  // in end_var) into their slots, in one call of the node evaluator: the
-  // lanes evaluate their nodes together.
-  auto put = [&](Arcs* arcs, const Batch& q, int m_phi, int m) {
+  // The pieces [a[j], b[j]], j < m (the first m_phi in phi, the others
+  // in end_var), slot[j] of arc arc[j], their rows of z_nol rel[j], into
+  // their slots, in one call of the node evaluator: the lanes evaluate
+  // their nodes together.
+  auto put = [&](Arcs* arcs, const double* a, const double* b, const double* const* rel,
+                 const int* arc, const int* slot, int m_phi, int m) {
     double value[kMaxBatch], err[kMaxBatch];
-    nodes.Pieces(arcs->t, arcs->nol_split, q.arc, end_var, end_arg, q.a, q.b, m_phi, m, q.rel,
-                 value, err);
+    nodes.Pieces(arcs->t, arcs->nol_split, arc, end_var, end_arg, a, b, m_phi, m, rel, value, err);
     for (int j = 0; j < m; ++j) {
-      Slot& p = arcs->pieces[q.arc[j]][q.slot[j]];
+      Slot& p = arcs->pieces[arc[j]][slot[j]];
       p.value = value[j];
       p.err = err[j];
     }
@@ -440,18 +441,12 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       // A bottom piece's halves take their rows of z_nol (once per
       // texel and level, rather than a log and an exp at every node).
       const double* h = p.bottom >= 0 ? z_halves_of(p.bottom) : nullptr;
-      pieces[w] = Slot{p.a, m, 0.0, 0.0, p.var, h, -1};
-      pieces[n] = Slot{m, p.b, 0.0, 0.0, p.var, h != nullptr ? h + 16 : nullptr, -1};
-      Batch q;
-      q.a[0] = p.a;
-      q.b[0] = q.a[1] = m;
-      q.b[1] = p.b;
-      q.arc[0] = q.arc[1] = k;
-      q.slot[0] = w;
-      q.slot[1] = n++;
-      q.rel[0] = pieces[w].rel;
-      q.rel[1] = pieces[q.slot[1]].rel;
-      put(arcs, q, p.var == Var::kPhi ? 2 : 0, 2);
+      const double* rel[2] = {h, h != nullptr ? h + 16 : nullptr};
+      pieces[w] = Slot{p.a, m, 0.0, 0.0, p.var, rel[0], -1};
+      pieces[n] = Slot{m, p.b, 0.0, 0.0, p.var, rel[1], -1};
+      const double a[2] = {p.a, m}, b[2] = {m, p.b};
+      const int arc[2] = {k, k}, slot[2] = {w, n++};
+      put(arcs, a, b, rel, arc, slot, p.var == Var::kPhi ? 2 : 0, 2);
     }
     *err = e;
     return v;
@@ -499,7 +494,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
         in_phi.arc[m_phi + j] = in_end.arc[j];
         in_phi.slot[m_phi + j] = in_end.slot[j];
       }
-      put(&arcs, in_phi, m_phi, m_phi + in_end.m);
+      put(&arcs, in_phi.a, in_phi.b, in_phi.rel, in_phi.arc, in_phi.slot, m_phi, m_phi + in_end.m);
       for (int k = 0; k < n_arcs; ++k) {
         const int i = node_of[k];
         double err;
