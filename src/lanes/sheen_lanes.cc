@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cstddef>
+#include <cstdint>
 
 #include "lanes/quadrature_simd.h"
 #include "rules/sheen/sheen_albedo_rule.h"
@@ -27,6 +28,17 @@ namespace brdfbake {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// Lambda at the nodes of z pieces whose NoL are nol_scale = 1/2 times a
+// row of the rule's z_nol: every arc with nol0 >= 0.8 takes the same rows
+// at the same z (its z_hi is 1/2^power), so their Lambda is computed
+// once per texel, with the same operations (the same values), and kept
+// here by the row's address.
+struct CharlieLambdaRows {
+  static constexpr size_t kRows = 128;  // more than z_nol's 96 rows
+  const double* key[kRows] = {};
+  HWY_ALIGN double lambda[kRows][16];
+};
+
 // ScalarCharlieNodes with a piece's 15 nodes in lanes (the 16th at the
 // piece's centre, of weight 0) and its Kronrod and Gauss sums in lanes:
 // expm1 and log by Highway's (a few ulp in double), the arcs' cos(phi_h)
@@ -38,12 +50,15 @@ namespace hn = hwy::HWY_NAMESPACE;
 // In z = NoL^power, z is the x^p of Lambda's L(x) = a / (1 + b x^p) + d x
 // + e (CharlieLPower is the fit's p), and every NoL there is below 1/2
 // (Lambda's lower branch), so L takes z itself.
+// The pieces of every arc of an outer piece come in one call (Pieces),
+// each with its arc's terms.
 struct SimdCharlieNodes {
   using V = hn::Vec<DF64>;
   static constexpr int kCharlieBatch = 8;
   CharlieConsts<DF64> c;
   double mu;
   double lambda_mu;  // conty-kulla: Lambda(mu)
+  CharlieLambdaRows* rows;  // this texel's
 
   // ScalarCharlieNodes::Outer in lanes: CosF64ZeroToPi (theta_h lies in
   // [0, 3 pi / 4]), Highway's Sin, Acos, Log1p, Log and Exp, D by
@@ -65,12 +80,15 @@ struct SimdCharlieNodes {
       const V p = hn::Mul(mu, cv), r = hn::Mul(s_mu, sv_th), two_c = hn::Add(cv, cv);
       const auto r_pos = hn::Gt(r, zero);
       const V rs = hn::IfThenElse(r_pos, r, one);
-      // cos(phi) where NoL = nol; -1 (phi = pi) where r = 0.
+      // cos(phi) where NoL = nol: (nol + mu - 2 c p) / (2 c r), one
+      // division for the three; -1 (phi = pi) where r = 0.
+      const V inv = hn::Div(one, hn::Mul(two_c, rs));
+      const V base = hn::NegMulAdd(two_c, p, mu);
       auto cos_at = [&](V nol) {
-        const V v = hn::Div(hn::Sub(hn::Div(hn::Add(nol, mu), two_c), p), rs);
+        const V v = hn::Mul(hn::Add(nol, base), inv);
         return hn::IfThenElse(r_pos, hn::Min(hn::Max(v, minus_one), one), minus_one);
       };
-      const V cm = hn::IfThenElse(r_pos, hn::Div(hn::Sub(hn::Div(mu, two_c), p), rs), minus_one);
+      const V cm = hn::IfThenElse(r_pos, hn::Mul(base, inv), minus_one);
       const V phi_max = hn::IfThenElse(
           hn::Lt(cm, one), hn::Acos(d, hn::Min(hn::Max(cm, minus_one), one)), zero);
       const V nol0 = hn::Sub(hn::Mul(two_c, hn::Add(p, r)), mu);
@@ -89,37 +107,43 @@ struct SimdCharlieNodes {
       if (o.lambda) {
         hn::StoreU(hn::Acos(d, cos_at(hn::Set(d, 0.5))), d, out->phi_half + i);
         const V ls = hn::Log(d, hn::IfThenElse(hn::Gt(split, zero), split, one));
-        hn::StoreU(hn::Exp(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
+        hn::StoreU(ExpF64Unguarded(d, hn::Mul(hn::Set(d, o.power), ls)), d, out->z_hi + i);
       } else {
         hn::StoreU(hn::Log1p(d, hn::Mul(split, inv_eps)), d, out->tau_hi + i);
       }
     }
   }
 
-  // ScalarCharlieNodes::Pieces: m pieces [a[j], b[j]] of one arc, the
-  // first m_phi in phi and the others in `var`, at most kCharlieBatch
-  // pieces at a time, their nodes in stages (Nodes).
-  void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
-              const double* b, int m_phi, int m, const double* const* nol_rel, double nol_scale,
-              double* value, double* err) const {
+  // ScalarCharlieNodes::Pieces: m pieces [a[j], b[j]] of the arcs arc[j],
+  // the first m_phi in phi and the others in `var`, at most
+  // kCharlieBatch pieces at a time, their nodes in stages (Nodes).
+  void Pieces(const CharlieArcTerms* t, const double* nol_scale, const int* arc, CharlieArcVar var,
+              double arg, const double* a, const double* b, int m_phi, int m,
+              const double* const* nol_rel, double* value, double* err) const {
     for (int j = 0; j < m; j += kCharlieBatch) {
       const int k = std::min(m - j, kCharlieBatch), k_phi = std::clamp(m_phi - j, 0, k);
       const double* const* rel = nol_rel != nullptr ? nol_rel + j : nullptr;
       if (var == CharlieArcVar::kLog) {
-        Sums<CharlieArcVar::kLog>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
+        Sums<CharlieArcVar::kLog>(t, nol_scale, arc + j, arg, a + j, b + j, k_phi, k, rel, value + j,
+                                  err + j);
       } else {
-        Sums<CharlieArcVar::kZ>(t, arg, a + j, b + j, k_phi, k, rel, nol_scale, value + j, err + j);
+        Sums<CharlieArcVar::kZ>(t, nol_scale, arc + j, arg, a + j, b + j, k_phi, k, rel, value + j,
+                                err + j);
       }
     }
   }
 
-  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16, x > 0).
+  // ScalarCharlieNodes::Powers in lanes (n a multiple of 16), for the
+  // rule's z_nol: x in (1e-30, 1] (normal, so Highway's log without its
+  // subnormal case) and e = 1 / power, below 7, so that e log(x) lies
+  // within -500 and 0 (ExpF64Unguarded's range).
   void Powers(const double* x, int n, double e, double* out) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const V ev = hn::Set(d, e);
     for (size_t i = 0; i < static_cast<size_t>(n); i += N) {
-      hn::StoreU(hn::Exp(d, hn::Mul(ev, hn::Log(d, hn::LoadU(d, x + i)))), d, out + i);
+      const V lx = hn::impl::Log<DF64, V, false>(d, hn::LoadU(d, x + i));
+      hn::StoreU(ExpF64Unguarded(d, hn::Mul(ev, lx)), d, out + i);
     }
   }
 
@@ -129,11 +153,13 @@ struct SimdCharlieNodes {
   // their long chains of cos, log, exp and divisions instead of waiting
   // on one node's chain (one piece is two vectors in AVX-512 lanes).
   // On a 64 x 64 conty-kulla table this took about 30% less time than
-  // piece by piece, node by node, with the same values.
+  // piece by piece, node by node, with the same values, and the pieces of
+  // all the arcs of an outer piece in one call (rather than one arc's)
+  // 7% less again.
   template <CharlieArcVar kEnd>
-  void Sums(const CharlieArcTerms& t, double arg, const double* a, const double* b, int m_phi,
-            int m, const double* const* nol_rel, double nol_scale, double* value,
-            double* err) const {
+  void Sums(const CharlieArcTerms* t, const double* nol_scale, const int* arc, double arg,
+            const double* a, const double* b, int m_phi, int m, const double* const* nol_rel,
+            double* value, double* err) const {
     static const Kronrod16 rule;
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -145,9 +171,10 @@ struct SimdCharlieNodes {
                   x + 16 * j + i);
       }
     }
-    const Terms terms(d, t, mu, lambda_mu);
+    Terms terms[kCharlieBatch];
+    for (int j = 0; j < m; ++j) terms[j] = Terms(t[arc[j]], mu, nol_scale[arc[j]]);
     Nodes<kEnd>(d, terms, arg, x, g, 16 * static_cast<size_t>(m_phi), 16 * static_cast<size_t>(m),
-                nol_rel, nol_scale);
+                nol_rel);
     for (int j = 0; j < m; ++j) {
       V ks = hn::Zero(d), gs = hn::Zero(d);
       for (size_t i = 0; i < 16; i += N) {
@@ -162,18 +189,18 @@ struct SimdCharlieNodes {
     }
   }
 
-  // One arc's constants in lanes.
+  // A piece's arc constants (the lanes take them one piece at a time).
   struct Terms {
-    V p, r, two_c, mu, one_lambda_mu, half_over_c, nol0, nol_pi;
-    Terms(DF64 d, const CharlieArcTerms& t, double m, double lambda_mu)
-        : p(hn::Set(d, t.p)),
-          r(hn::Set(d, t.r)),
-          two_c(hn::Set(d, t.two_c)),
-          mu(hn::Set(d, m)),
-          one_lambda_mu(hn::Set(d, 1 + lambda_mu)),
-          half_over_c(hn::Set(d, 1 / t.two_c)),
-          nol0(hn::Set(d, t.two_c * (t.p + t.r) - m)),
-          nol_pi(hn::Set(d, t.two_c * (t.p - t.r) - m)) {}
+    double p, r, two_c, half_over_c, nol0, nol_pi, nol_scale;
+    Terms() = default;
+    Terms(const CharlieArcTerms& t, double m, double scale)
+        : p(t.p),
+          r(t.r),
+          two_c(t.two_c),
+          half_over_c(1 / t.two_c),
+          nol0(t.two_c * (t.p + t.r) - m),
+          nol_pi(t.two_c * (t.p - t.r) - m),
+          nol_scale(scale) {}
   };
 
   // g = V NoL 4 y at NoL = 2 c y - mu, as num / den, times the Jacobian
@@ -186,35 +213,38 @@ struct SimdCharlieNodes {
   // map, log(NoL) for Lambda's x^p, Lambda, and g; each stage's vectors
   // are independent of one another.
   template <CharlieArcVar kEnd>
-  HWY_INLINE void Nodes(DF64 d, const Terms& t, double arg, const double* xs, double* out,
-                        size_t n_phi, size_t n, const double* const* nol_rel,
-                        double nol_scale) const {
+  HWY_INLINE void Nodes(DF64 d, const Terms* terms, double arg, const double* xs, double* out,
+                        size_t n_phi, size_t n, const double* const* nol_rel) const {
     const size_t N = hn::Lanes(d);
-    const V one = hn::Set(d, 1.0), zero = hn::Zero(d);
+    const V one = hn::Set(d, 1.0), zero = hn::Zero(d), mu_v = hn::Set(d, mu);
     HWY_ALIGN double ys[16 * kCharlieBatch], nols[16 * kCharlieBatch], jns[16 * kCharlieBatch], jds[16 * kCharlieBatch],
         ls[16 * kCharlieBatch], ws[16 * kCharlieBatch];
-    for (size_t i = 0; i < n_phi; i += N) {
-      const V y = hn::MulAdd(t.r, CosF64ZeroToPi(d, hn::Load(d, xs + i)), t.p);
+    // The variable's map: the phi nodes' and the end part's vectors
+    // alternate, so that the core mixes the cosines' multiply-adds with
+    // the end part's square roots.
+    auto phi_map = [&](size_t i) HWY_ATTR {
+      const Terms& t = terms[i / 16];
+      const V y = hn::MulAdd(hn::Set(d, t.r), CosF64ZeroToPi(d, hn::Load(d, xs + i)), hn::Set(d, t.p));
       hn::Store(y, d, ys + i);
-      hn::Store(hn::Sub(hn::Mul(t.two_c, y), t.mu), d, nols + i);
-      hn::Store(one, d, jns + i);
-      hn::Store(one, d, jds + i);
-    }
-    for (size_t i = n_phi; i < n; i += N) {
+      hn::Store(hn::Sub(hn::Mul(hn::Set(d, t.two_c), y), mu_v), d, nols + i);
+    };
+    auto end_map = [&](size_t i) HWY_ATTR {
+      const Terms& t = terms[i / 16];
       const V x = hn::Load(d, xs + i);
       V nol, jac_num, jac_den;
       if constexpr (kEnd == CharlieArcVar::kZ) {
         const double* rel = nol_rel != nullptr ? nol_rel[i / 16] : nullptr;
         if (rel != nullptr) {
-          nol = hn::Mul(hn::Set(d, nol_scale), hn::LoadU(d, rel + i % 16));
+          nol = hn::Mul(hn::Set(d, t.nol_scale), hn::LoadU(d, rel + i % 16));
         } else {
           nol = hn::Exp(d, hn::Mul(hn::Set(d, 1 / arg), hn::Log(d, x)));
         }
       } else {
         nol = hn::Mul(hn::Set(d, arg), hn::Expm1(d, x));
       }
-      const V y = hn::Mul(hn::Add(nol, t.mu), t.half_over_c);
-      jac_den = hn::Sqrt(hn::Max(hn::Mul(hn::Sub(t.nol0, nol), hn::Sub(nol, t.nol_pi)), zero));
+      const V y = hn::Mul(hn::Add(nol, mu_v), hn::Set(d, t.half_over_c));
+      jac_den = hn::Sqrt(hn::Max(
+          hn::Mul(hn::Sub(hn::Set(d, t.nol0), nol), hn::Sub(nol, hn::Set(d, t.nol_pi))), zero));
       if constexpr (kEnd == CharlieArcVar::kZ) {
         jac_num = nol;
         jac_den = hn::Mul(jac_den, hn::Mul(x, hn::Set(d, arg)));
@@ -225,6 +255,10 @@ struct SimdCharlieNodes {
       hn::Store(nol, d, nols + i);
       hn::Store(jac_num, d, jns + i);
       hn::Store(jac_den, d, jds + i);
+    };
+    for (size_t k = 0; k < n_phi || n_phi + k < n; k += N) {
+      if (k < n_phi) phi_map(k);
+      if (n_phi + k < n) end_map(n_phi + k);
     }
     // Lambda: exp of L (CharlieLogLambda: L(w) below 1/2, 2 L(1/2) - L(1 -
     // w) above, L(x) = a / (1 + b x^p) + d x + e), x^p as exp(p log x)
@@ -249,19 +283,38 @@ struct SimdCharlieNodes {
         const V sw = hn::Load(d, ws + i);
         const auto low = hn::Gt(sw, zero);
         const V w = hn::Abs(sw);
-        const V xp = hn::IfThenElseZero(hn::Gt(w, zero), ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i))));
+        // (w = 0 gives x^p below 1e-51 rather than 0, the same L.)
+        const V xp = ExpF64Unguarded(d, hn::Mul(c.p, hn::Load(d, ls + i)));
         const V l = hn::Add(hn::MulAdd(c.dd, w, c.e), hn::Div(c.a, hn::MulAdd(c.b, xp, one)));
         hn::Store(ExpF64Unguarded(d, hn::IfThenElse(low, l, hn::Sub(c.two_l_half, l))), d, ls + i);
       }
-      for (size_t i = n_phi; i < n; i += N) {
-        const V nol = hn::Load(d, nols + i);
-        const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
-        const V log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e),
-                                     hn::Div(c.a, hn::MulAdd(c.b, hn::Load(d, xs + i), one)));
-        hn::Store(ExpF64Unguarded(d, log_lambda), d, ls + i);
+      for (size_t j = n_phi / 16; j < n / 16; ++j) {
+        const double* rel = nol_rel != nullptr ? nol_rel[j] : nullptr;
+        double* kept = nullptr;
+        if (rel != nullptr && terms[j].nol_scale == 0.5) {
+          const size_t slot = (reinterpret_cast<uintptr_t>(rel) / sizeof(double[16])) % rows->kRows;
+          kept = rows->lambda[slot];
+          if (rows->key[slot] == rel) {
+            for (size_t i = 0; i < 16; i += N) hn::Store(hn::Load(d, kept + i), d, ls + 16 * j + i);
+            continue;
+          }
+          rows->key[slot] = rel;
+        }
+        for (size_t i = 16 * j; i < 16 * j + 16; i += N) {
+          const V nol = hn::Load(d, nols + i);
+          const V nl = hn::Min(hn::IfThenElse(hn::Gt(nol, zero), nol, one), one);
+          const V log_lambda = hn::Add(hn::MulAdd(c.dd, nl, c.e),
+                                       hn::Div(c.a, hn::MulAdd(c.b, hn::Load(d, xs + i), one)));
+          const V lambda = ExpF64Unguarded(d, log_lambda);
+          hn::Store(lambda, d, ls + i);
+          if (kept != nullptr) hn::Store(lambda, d, kept + i - 16 * j);
+        }
       }
     }
+    // g, with the Jacobian beyond the phi nodes (whose is 1).
+    const V one_lambda_mu = hn::Set(d, 1 + lambda_mu);
     for (size_t i = 0; i < n; i += N) {
+      const bool in_phi = i < n_phi;
       const V y = hn::Load(d, ys + i), nol = hn::Load(d, nols + i);
       const auto up = hn::Gt(nol, zero);
       const V nl = hn::Min(hn::IfThenElse(up, nol, one), one);
@@ -269,17 +322,19 @@ struct SimdCharlieNodes {
       if (c.neubelt) {
         // V NoL 4 y = NoL y / (NoL + mu - NoL mu).
         num = hn::Mul(nol, y);
-        den = hn::Add(hn::NegMulAdd(nl, t.mu, nl), t.mu);
+        den = hn::Add(hn::NegMulAdd(nl, mu_v, nl), mu_v);
       } else {
         // V NoL 4 y = y G2 / mu, G2 = 1 / (1 + Lambda(mu) + Lambda(NoL)).
         num = y;
-        den = hn::Mul(t.mu, hn::Add(t.one_lambda_mu, hn::Load(d, ls + i)));
+        den = hn::Mul(mu_v, hn::Add(one_lambda_mu, hn::Load(d, ls + i)));
       }
       V g;
       if (c.clamp) {
         // V <= 1, so g <= 4 NoL y.
         g = hn::Min(hn::Div(num, den), hn::Mul(hn::Mul(hn::Set(d, 4.0), nl), y));
-        g = hn::Div(hn::Mul(g, hn::Load(d, jns + i)), hn::Load(d, jds + i));
+        if (!in_phi) g = hn::Div(hn::Mul(g, hn::Load(d, jns + i)), hn::Load(d, jds + i));
+      } else if (in_phi) {
+        g = hn::Div(num, den);
       } else {
         g = hn::Div(hn::Mul(num, hn::Load(d, jns + i)), hn::Mul(den, hn::Load(d, jds + i)));
       }
@@ -292,8 +347,9 @@ RuleResult CharlieTexel(double alpha, SheenVisibility visibility, double mu, dou
                         int max_pieces) {
   const CharlieSheen<double> sheen(alpha, visibility);
   const double m = std::clamp(mu, 1e-7, 1.0);
+  CharlieLambdaRows rows;
   const SimdCharlieNodes nodes{CharlieConsts<DF64>(DF64(), alpha, visibility), m,
-                               SheenHasLambda(visibility) ? sheen.LambdaCos(m) : 0.0};
+                               SheenHasLambda(visibility) ? sheen.LambdaCos(m) : 0.0, &rows};
   return CharlieAlbedoWith(sheen, mu, tol, max_pieces, nodes);
 }
 

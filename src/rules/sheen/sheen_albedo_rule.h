@@ -146,26 +146,29 @@ struct ScalarCharlieNodes {
       }
     });
   }
-  // The pieces [a[j], b[j]], j < m, of one arc, the first m_phi in phi
-  // and the others in `var` (kZ or kLog, with its arg): their values and
-  // |K15 - G7|. Where nol_rel (if given) has nol_rel[j], piece j is in z
-  // and its nodes' NoL are nol_scale nol_rel[j][i] (CharlieAlbedoWith's
-  // end part).
-  void Pieces(const CharlieArcTerms& t, CharlieArcVar var, double arg, const double* a,
-              const double* b, int m_phi, int m, const double* const* nol_rel, double nol_scale,
-              double* value, double* err) const {
+  // The pieces [a[j], b[j]], j < m, each of the arc arc[j] (whose terms
+  // are t[arc[j]]; the pieces of several arcs in one call), the first
+  // m_phi in phi and the others in `var` (kZ or kLog, with its arg):
+  // their values and |K15 - G7|. Where nol_rel (if given) has nol_rel[j],
+  // piece j is in z and its nodes' NoL are nol_scale[arc[j]] nol_rel[j][i]
+  // (CharlieAlbedoWith's end part).
+  void Pieces(const CharlieArcTerms* t, const double* nol_scale, const int* arc, CharlieArcVar var,
+              double arg, const double* a, const double* b, int m_phi, int m,
+              const double* const* nol_rel, double* value, double* err) const {
     for (int j = 0; j < m; ++j) {
       GkPiece p;
+      const CharlieArcTerms& u = t[arc[j]];
       if (nol_rel != nullptr && nol_rel[j] != nullptr) {
         const double* rel = nol_rel[j];
+        const double scale = nol_scale[arc[j]];
         p = KronrodPieceBatch(a[j], b[j], 2.0, [&](const double* x, double* v, double* e) {
           for (int i = 0; i < 15; ++i) {
-            v[i] = AtZ(t, arg, x[i], nol_scale * rel[i]);
+            v[i] = AtZ(u, arg, x[i], scale * rel[i]);
             e[i] = 0;
           }
         });
       } else {
-        p = Piece(j < m_phi ? CharlieArcVar::kPhi : var, t, arg, a[j], b[j]);
+        p = Piece(j < m_phi ? CharlieArcVar::kPhi : var, u, arg, a[j], b[j]);
       }
       value[j] = p.value;
       err[j] = p.err;
@@ -212,8 +215,12 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
   // texel instead of a log and an exp at every node: rows 2k for the
   // piece between levels k + 1 and k, 2k + 1 from 0 to level k, for the
   // levels of nol_split = 1/2, the most an arc has (its nodes in the
-  // order of Kronrod15, the 16th at the centre).
-  double z_nol[48][16];
+  // order of Kronrod15, the 16th at the centre). Rows 48 + 2k and 48 +
+  // 2k + 1 are the lower and upper halves of row 2k + 1 (the bottom
+  // piece, which nearly every bisection in z splits), filled when a
+  // bottom piece of level k is first bisected.
+  double z_nol[96][16];
+  bool z_halves[24] = {};
   if (ck) {
     int k_max = 1;
     for (double l = 0.5; l > 0.25 * mu && k_max < 24; ++k_max) l *= k_max == 1 ? 0.25 : 0.0625;
@@ -228,14 +235,75 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     }
     nodes.Powers(&x[0][0], 32 * k_max, 1 / power, &z_nol[0][0]);
   }
-  auto over_arc = [&](const CharlieOuterNodes& o, int i, double inner_tol, double* err) {
-    const double c = o.c[i], s = o.s[i];
-    CharlieArcTerms t{mu * c, s_mu * s, 2 * c, mu};
-    const double phi_max = o.phi_max[i];
-    if (!(phi_max > 0)) {
-      *err = 0;
-      return 0.0;
+  // The two halves' rows of level k's bottom piece (z from 0 to level k).
+  auto z_halves_of = [&](int k) {
+    if (!z_halves[k]) {
+      const KronrodRule& rule = Kronrod15();
+      double x[2][16];
+      const double q = 0.25 * z_ratio[k];
+      for (int half = 0; half < 2; ++half) {
+        for (int i = 0; i < 16; ++i) x[half][i] = (1 + 2 * half) * q + q * (i < 15 ? rule.x[i] : 0.0);
+      }
+      nodes.Powers(&x[0][0], 32, 1 / power, z_nol[48 + 2 * k]);
+      z_halves[k] = true;
     }
+    return z_nol[48 + 2 * k];
+  };
+  using Var = CharlieArcVar;
+  // An arc's pieces, in slots left uninitialised (an array of GkPiece,
+  // whose members start at 0, was zeroed whole at every node). rel: the
+  // piece's row of z_nol (or nullptr), bottom: the level whose bottom
+  // piece it is (or -1).
+  struct Slot {
+    double a, b, value, err;
+    Var var;
+    const double* rel;
+    int bottom;
+  };
+  constexpr int kMaxArcPieces = 96;
+  // The arcs of one outer piece's nodes: their terms and NoL splits (the
+  // node evaluator's arrays) and pieces.
+  struct Arcs {
+    CharlieArcTerms t[15];
+    double nol_split[15];
+    int n[15];
+    Slot pieces[15][kMaxArcPieces];
+  };
+  // Pieces on their way to the node evaluator: piece j is slot[j] of arc
+  // arc[j].
+  constexpr int kMaxBatch = 15 * 32;
+  struct Batch {
+    double a[kMaxBatch], b[kMaxBatch];
+    const double* rel[kMaxBatch];
+    int arc[kMaxBatch], slot[kMaxBatch];
+    int m = 0;
+  };
+  // The end part's variable and its argument.
+  const Var end_var = ck ? Var::kZ : Var::kLog;
+  const double end_arg = ck ? power : eps;
+  // The pieces [a[j], b[j]], j < m (the first m_phi in phi, the others
+  // in end_var), slot[j] of arc arc[j], their rows of z_nol rel[j], into
+  // their slots, in one call of the node evaluator: the lanes evaluate
+  // their nodes together.
+  auto put = [&](Arcs* arcs, const double* a, const double* b, const double* const* rel,
+                 const int* arc, const int* slot, int m_phi, int m) {
+    double value[kMaxBatch], err[kMaxBatch];
+    nodes.Pieces(arcs->t, arcs->nol_split, arc, end_var, end_arg, a, b, m_phi, m, rel, value, err);
+    for (int j = 0; j < m; ++j) {
+      Slot& p = arcs->pieces[arc[j]][slot[j]];
+      p.value = value[j];
+      p.err = err[j];
+    }
+  };
+  // Arc k of outer node i: its cuts and initial pieces, whose slots get
+  // everything but their values; the pieces go to the batches (in phi and
+  // in end_var apart: the node evaluator takes those in phi first).
+  auto start_arc = [&](const CharlieOuterNodes& o, int i, int k, Arcs* arcs, Batch* in_phi,
+                       Batch* in_end) {
+    const double c = o.c[i], s = o.s[i];
+    CharlieArcTerms& t = arcs->t[k];
+    t = CharlieArcTerms{mu * c, s_mu * s, 2 * c, mu};
+    const double phi_max = o.phi_max[i];
     const bool arc_end = phi_max < kPi<double>;
     const double nol0 = t.two_c * (t.p + t.r) - mu;  // NoL at phi_h = 0, its largest
     auto phi_at = [&](double nol) {
@@ -268,6 +336,7 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     int n_phi = 0, n_z = 0, n_log = 0, z_levels = 0;
     phi_cuts[n_phi++] = 0.0;
     const double nol_split = CharlieSplitNoL(ck, nol0);
+    arcs->nol_split[k] = nol_split;
     if (ck && 0.5 < nol0 && (!arc_end || 0.5 > nol_split)) phi_cuts[n_phi++] = o.phi_half[i];
     if (arc_end) {
       phi_cuts[n_phi++] = o.phi_split[i];
@@ -308,81 +377,76 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
       std::sort(z_cuts, z_cuts + n_z);
       std::sort(log_cuts, log_cuts + n_log);
     }
-    using Var = CharlieArcVar;
-    // The pieces, in slots left uninitialised (an array of GkPiece, whose
-    // members start at 0, was zeroed whole at every node).
-    struct Slot {
-      double a, b, value, err;
-      Var var;
-    };
-    constexpr int kMaxArcPieces = 96;
-    Slot pieces[kMaxArcPieces];
-    int n = 0;
-    // The end part's variable and its argument.
-    const Var end_var = ck ? Var::kZ : Var::kLog;
-    const double end_arg = ck ? power : eps;
-    // The m pieces [a[j], b[j]] (the first m_phi in phi, the others in
-    // end_var) into the slots at[j], in one call of the node evaluator:
-    // the lanes evaluate their nodes together.
-    auto put = [&](const double* a, const double* b, const int* at, int m_phi, int m,
-                   const double* const* nol_rel = nullptr) {
-      double value[kMaxArcPieces], err[kMaxArcPieces];
-      nodes.Pieces(t, end_var, end_arg, a, b, m_phi, m, nol_rel, nol_split, value, err);
-      for (int j = 0; j < m; ++j) {
-        pieces[at[j]] = Slot{a[j], b[j], value[j], err[j], j < m_phi ? Var::kPhi : end_var};
-      }
-    };
     // The initial pieces between the cuts.
-    {
-      double a[kMaxArcPieces], b[kMaxArcPieces];
-      int at[kMaxArcPieces];
-      auto add = [&](const double* cuts, int m) {
-        for (int i = 0; i + 1 < m; ++i) {
-          if (cuts[i + 1] > cuts[i]) {
-            a[n] = cuts[i];
-            b[n] = cuts[i + 1];
-            at[n] = n;
-            ++n;
-          }
+    Slot* pieces = arcs->pieces[k];
+    int n = 0;
+    // (Each cut read once, into a register: the compiler's paired load of
+    // cuts[j] and cuts[j + 1], just stored one by one, stalled on store
+    // forwarding.)
+    auto add = [&](const double* cuts, int m, Var var, Batch* q) {
+      double lo = cuts[0];
+      for (int j = 0; j + 1 < m; ++j) {
+        const double hi = cuts[j + 1];
+        if (hi > lo) {
+          pieces[n] = Slot{lo, hi, 0.0, 0.0, var, nullptr, -1};
+          q->a[q->m] = lo;
+          q->b[q->m] = hi;
+          q->arc[q->m] = k;
+          q->slot[q->m] = n;
+          q->rel[q->m] = nullptr;
+          ++q->m;
+          ++n;
         }
-      };
-      add(phi_cuts, n_phi);
-      const int m_phi = n;
-      add(z_cuts, n_z);
-      add(log_cuts, n_log);
-      // The z pieces between the levels alone (no cap cut among them):
-      // their nodes' NoL from z_nol, the lowest first.
-      const double* nol_rel[kMaxArcPieces];
-      const bool levels_only = z_levels > 0 && n_z == z_levels + 1 && n - m_phi == z_levels;
-      if (levels_only) {
-        for (int q = 0; q < m_phi; ++q) nol_rel[q] = nullptr;
-        for (int q = 0; q < z_levels; ++q) {
-          nol_rel[m_phi + q] = q == 0 ? z_nol[2 * (z_levels - 1) + 1] : z_nol[2 * (z_levels - 1 - q)];
-        }
+        lo = hi;
       }
-      put(a, b, at, m_phi, n, levels_only ? nol_rel : nullptr);
+    };
+    add(phi_cuts, n_phi, Var::kPhi, in_phi);
+    const int m_phi = n, first_end = in_end->m;
+    add(z_cuts, n_z, end_var, in_end);
+    add(log_cuts, n_log, end_var, in_end);
+    // The z pieces between the levels alone (no cap cut among them):
+    // their nodes' NoL from z_nol, the lowest first.
+    if (z_levels > 0 && n_z == z_levels + 1 && n - m_phi == z_levels) {
+      for (int q = 0; q < z_levels; ++q) {
+        Slot& p = pieces[m_phi + q];
+        p.rel = q == 0 ? z_nol[2 * (z_levels - 1) + 1] : z_nol[2 * (z_levels - 1 - q)];
+        p.bottom = q == 0 ? z_levels - 1 : -1;
+        in_end->rel[first_end + q] = p.rel;
+      }
     }
+    arcs->n[k] = n;
+  };
+  // J of arc k (its initial pieces evaluated) with its error: the worst
+  // piece bisected until the tolerance, or until |K15 - G7| is down to
+  // the rounding of the sum (a large weight D sin(theta_h) can ask for
+  // more).
+  auto finish_arc = [&](int k, Arcs* arcs, double inner_tol, double* err) {
+    Slot* pieces = arcs->pieces[k];
+    int& n = arcs->n[k];
     double v, e;
     auto sums = [&] {
       v = e = 0;
-      for (int k = 0; k < n; ++k) {
-        v += pieces[k].value;
-        e += pieces[k].err;
+      for (int j = 0; j < n; ++j) {
+        v += pieces[j].value;
+        e += pieces[j].err;
       }
     };
-    // The worst piece bisected until the tolerance, or until |K15 - G7| is
-    // down to the rounding of the sum (a large weight D sin(theta_h) can
-    // ask for more).
     for (sums(); e > std::max(inner_tol, 1e-13 * v) && n < kMaxArcPieces; sums()) {
       int w = 0;
-      for (int k = 1; k < n; ++k) {
-        if (pieces[k].err > pieces[w].err) w = k;
+      for (int j = 1; j < n; ++j) {
+        if (pieces[j].err > pieces[w].err) w = j;
       }
       const Slot p = pieces[w];
       const double m = 0.5 * (p.a + p.b);
+      // A bottom piece's halves take their rows of z_nol (once per
+      // texel and level, rather than a log and an exp at every node).
+      const double* h = p.bottom >= 0 ? z_halves_of(p.bottom) : nullptr;
+      const double* rel[2] = {h, h != nullptr ? h + 16 : nullptr};
+      pieces[w] = Slot{p.a, m, 0.0, 0.0, p.var, rel[0], -1};
+      pieces[n] = Slot{m, p.b, 0.0, 0.0, p.var, rel[1], -1};
       const double a[2] = {p.a, m}, b[2] = {m, p.b};
-      const int at[2] = {w, n++};
-      put(a, b, at, p.var == Var::kPhi ? 2 : 0, 2);
+      const int arc[2] = {k, k}, slot[2] = {w, n++};
+      put(arcs, a, b, rel, arc, slot, p.var == Var::kPhi ? 2 : 0, 2);
     }
     *err = e;
     return v;
@@ -399,6 +463,12 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
     return KronrodPieceBatch(a, b, 1.0, [&](const double* sv, double* v, double* e) {
       CharlieOuterNodes o;
       nodes.Outer(setup, sv, &o);
+      // The arcs' initial pieces of all 15 nodes go through the node
+      // evaluator in one call (long stages of independent vectors in the
+      // lanes), then each arc is refined on its own.
+      Arcs arcs;
+      Batch in_phi, in_end;
+      int node_of[15], n_arcs = 0;
       for (int i = 0; i < 15; ++i) {
         const double w = o.w[i];
         v[i] = e[i] = 0;
@@ -411,10 +481,26 @@ RuleResult CharlieAlbedoWith(const CharlieSheen<double>& sheen, double mu_in, do
           e[i] = w * j_bound;
           continue;
         }
+        // An empty arc: J = 0.
+        if (!(o.phi_max[i] > 0)) continue;
+        start_arc(o, i, n_arcs, &arcs, &in_phi, &in_end);
+        node_of[n_arcs++] = i;
+      }
+      const int m_phi = in_phi.m;
+      for (int j = 0; j < in_end.m; ++j) {
+        in_phi.a[m_phi + j] = in_end.a[j];
+        in_phi.b[m_phi + j] = in_end.b[j];
+        in_phi.rel[m_phi + j] = in_end.rel[j];
+        in_phi.arc[m_phi + j] = in_end.arc[j];
+        in_phi.slot[m_phi + j] = in_end.slot[j];
+      }
+      put(&arcs, in_phi.a, in_phi.b, in_phi.rel, in_phi.arc, in_phi.slot, m_phi, m_phi + in_end.m);
+      for (int k = 0; k < n_arcs; ++k) {
+        const int i = node_of[k];
         double err;
-        const double j = over_arc(o, i, 0.5 * tol / w, &err);
-        e[i] = w * err;
-        v[i] = w * j;
+        const double j = finish_arc(k, &arcs, 0.5 * tol / o.w[i], &err);
+        e[i] = o.w[i] * err;
+        v[i] = o.w[i] * j;
       }
     });
   };
