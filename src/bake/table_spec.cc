@@ -58,6 +58,8 @@ const char *WarpName(Warp w) {
     return "schlick-z";
   case Warp::kTwoSided:
     return "two-sided";
+  case Warp::kOneMinusSquare:
+    return "one-minus-square";
   }
   return "linear";
 }
@@ -117,8 +119,10 @@ Warp ParseWarp(const std::string &s) {
     return Warp::kSchlickZ;
   if (s == "two-sided")
     return Warp::kTwoSided;
+  if (s == "one-minus-square")
+    return Warp::kOneMinusSquare;
   Bad("--warp: unknown warp '" + s +
-      "' (expected linear, square, sqrt, tail for the gamma axis, "
+      "' (expected linear, square, sqrt, one-minus-square, tail for the gamma axis, "
       "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent "
       "axis)");
 }
@@ -197,6 +201,8 @@ double Axis::ValueAt(double fi) const {
     w = t * t;
   if (warp == Warp::kSqrt)
     w = std::sqrt(t);
+  if (warp == Warp::kOneMinusSquare)
+    w = t * (2 - t);  // 1 - (1 - t)^2, exact at both ends
   return min + (max - min) * w;
 }
 
@@ -243,6 +249,7 @@ std::string Axis::ToJson() const {
   case Warp::kLinear:
   case Warp::kSquare:
   case Warp::kSqrt:
+  case Warp::kOneMinusSquare:
     break;
   }
   if (map) {
@@ -357,6 +364,14 @@ const char *Definition(Meaning meaning, const BakeSpec &spec) {
            "f_T |cos(theta_i)| dwi of "
            "the rough dielectric's refraction lobe, Fresnel included: the "
            "energy it refracts";
+  }
+  if (glass && meaning == Meaning::kE &&
+      spec.part == DielectricPart::kTransmissionSchlick) {
+    return "T(mu) = integral over the lower hemisphere of (1 - (1 - |wo.h|)^5) "
+           "f_T |cos(theta_i)| dwi, f_T the rough dielectric's refraction lobe "
+           "without its Fresnel factor: the refraction weighted by the "
+           "complement of Schlick's weight (EEVEE's btdf_ggx; the renderer "
+           "multiplies it by 1 - F0)";
   }
   if (glass && meaning == Meaning::kE) {
     return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) "
@@ -593,12 +608,12 @@ void ValidateBakeSpec(const BakeSpec &spec) {
       continue;
     if (a->warp == Warp::kTail)
       Bad("--warp: tail is the gamma axis's warp (the " + a->name +
-          " axis takes linear, square or sqrt)");
+          " axis takes linear, square, sqrt or one-minus-square)");
     if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
       Bad("--warp: " + std::string(WarpName(a->warp)) + " is the " +
           (a->warp == Warp::kFresnelZ ? "ior" : "exponent") +
           " axis's warp (the " + a->name +
-          " axis takes linear, square or sqrt)");
+          " axis takes linear, square, sqrt or one-minus-square)");
     }
     CheckAxisSize(*a);
     // One entry may sit at one value (min = max), as the report's probes do.
@@ -686,7 +701,14 @@ void ValidateBakeSpec(const BakeSpec &spec) {
     // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
     // clamp of at most 100 bakes its last slices; a two-sided axis holds
     // both sides of the interface.
-    const double top = std::min(a.max, a.clamp_max);
+    // The Schlick-weighted refraction has no Fresnel factor: its axis may
+    // reach ior = inf unclamped (t = -h there).
+    const bool schlick = spec.part == DielectricPart::kTransmissionSchlick;
+    if (schlick && (spec.inverse || a.warp == Warp::kTwoSided)) {
+      Bad("--part transmission-schlick: light entering the medium only, ior >= 1 "
+          "(no --inverse, no two-sided axis)");
+    }
+    const double top = schlick ? 1.0 : std::min(a.max, a.clamp_max);
     if (a.warp != Warp::kTwoSided &&
         (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered ||
          !(a.min <= a.clamp_max))) {
