@@ -23,6 +23,7 @@ enum class EngineForm {
   kThreeDfgModule,       // three.js src/renderers/shaders/DFGLUTData.js: export getDFGLUT()
   kEnterprisePbrHeader,  // Enterprise PBR res/pbrlut.hpp: extern arrays, PBRLUT_IMPLEMENTATION
   kOpenPbrEnergyArrays,  // OpenPBR impl/data/openpbr_energy_arrays.h: unorm16 OpenPBR_*_Array
+  kEeveeLut,             // Blender EEVEE eevee_lut.cc: btdf_ggx[16][64][64][1], the rest Blender's own
 };
 
 struct PresetTable {

@@ -52,7 +52,11 @@ inline constexpr double kHalfPi = 1.5707963267948966;
 // size N = 2H, min < 1 < max): entries 0 to H - 1 hold eta < 1 with 1 / eta
 // linear from 1 / min down to 1, entries H to N - 1 eta linear from 1 up to
 // max; both middle entries are 1 (OpenPBR's layout, [OpenPbrBsdf]).
-enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ, kTwoSided };
+// kOneMinusSquare (view and lobe axes) is w(t) = 1 - (1 - t)^2: the
+// coordinate 1 - sqrt(1 - w) is linear in t, so over mu in [0, 1] sqrt(1 -
+// mu) = 1 - t (EEVEE's sqrt(1 - NoV) with its rows reversed; entries
+// gather at mu = 1 as the square warp gathers them at 0).
+enum class Warp { kLinear, kSquare, kSqrt, kTail, kFresnelZ, kSchlickZ, kTwoSided, kOneMinusSquare };
 enum class Placement { kCenters, kEdges };
 
 // quadrature: Gauss-Legendre over the sampler's unit square with the horizon

@@ -33,6 +33,7 @@ double IndexOf(const Axis& a, double v) {
   }
   if (a.warp == Warp::kSquare) t = std::sqrt(t);
   if (a.warp == Warp::kSqrt) t = t * t;
+  if (a.warp == Warp::kOneMinusSquare) t = 1 - std::sqrt(1 - t);
   return a.placement == Placement::kCenters ? t * a.size - 0.5 : t * (a.size - 1);
 }
 

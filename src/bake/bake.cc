@@ -323,7 +323,10 @@ std::string ModelJson(const BakeSpec& spec) {
     if (spec.part != DielectricPart::kBoth) {
       j["part"] = spec.part == DielectricPart::kReflection
                       ? "reflection: the reflection lobe alone, weighted by F (the energy the interface reflects)"
-                      : "transmission: the refraction lobe alone, weighted by 1 - F";
+                  : spec.part == DielectricPart::kTransmission
+                      ? "transmission: the refraction lobe alone, weighted by 1 - F"
+                      : "transmission-schlick: the refraction lobe alone without F, weighted by 1 - (1 - "
+                        "|wo.h|)^5 (EEVEE's btdf_ggx); eta up to inf, where the refraction is -h";
     }
     return j.dump();
   }
@@ -568,7 +571,9 @@ std::string IntegratorJson(const BakeSpec& spec) {
     j["smooth"] = spec.part == DielectricPart::kBoth ? "alpha < 1e-4 is the smooth interface: E = 1"
                   : spec.part == DielectricPart::kReflection
                       ? "alpha < 1e-4 is the smooth interface: E = F(eta, mu)"
-                      : "alpha < 1e-4 is the smooth interface: E = 1 - F(eta, mu)";
+                  : spec.part == DielectricPart::kTransmission
+                      ? "alpha < 1e-4 is the smooth interface: E = 1 - F(eta, mu)"
+                      : "alpha < 1e-4 is the smooth interface: E = 1 - (1 - mu)^5";
   } else if (spec.GenSchlick()) {
     j["mirror"] = "alpha < 1e-4 is a mirror: s = s_h(mu)";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {

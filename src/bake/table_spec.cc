@@ -27,51 +27,35 @@ namespace brdfbake {
 
 const char* TableName(TableKind t) {
   switch (t) {
-    case TableKind::kE:
-      return "E";
-    case TableKind::kEavg:
-      return "E_avg";
-    case TableKind::kDfg:
-      return "dfg";
-    case TableKind::kSelNorm:
-      return "sel_norm";
-    case TableKind::kGenSchlickS:
-      return "gen_schlick_s";
-    case TableKind::kGenSchlickIorS:
-      return "gen_schlick_ior_s";
+    case TableKind::kE: return "E";
+    case TableKind::kEavg: return "E_avg";
+    case TableKind::kDfg: return "dfg";
+    case TableKind::kSelNorm: return "sel_norm";
+    case TableKind::kGenSchlickS: return "gen_schlick_s";
+    case TableKind::kGenSchlickIorS: return "gen_schlick_ior_s";
   }
   return "E";
 }
 const char* WarpName(Warp w) {
   switch (w) {
-    case Warp::kLinear:
-      return "linear";
-    case Warp::kSquare:
-      return "square";
-    case Warp::kSqrt:
-      return "sqrt";
-    case Warp::kTail:
-      return "tail";
-    case Warp::kFresnelZ:
-      return "fresnel-z";
-    case Warp::kSchlickZ:
-      return "schlick-z";
-    case Warp::kTwoSided:
-      return "two-sided";
+    case Warp::kLinear: return "linear";
+    case Warp::kSquare: return "square";
+    case Warp::kSqrt: return "sqrt";
+    case Warp::kTail: return "tail";
+    case Warp::kFresnelZ: return "fresnel-z";
+    case Warp::kSchlickZ: return "schlick-z";
+    case Warp::kTwoSided: return "two-sided";
+    case Warp::kOneMinusSquare: return "one-minus-square";
   }
   return "linear";
 }
 const char* PlacementName(Placement p) { return p == Placement::kCenters ? "centers" : "edges"; }
 const char* IntegratorName(IntegratorKind k) {
   switch (k) {
-    case IntegratorKind::kQuadrature:
-      return "quadrature";
-    case IntegratorKind::kQmc:
-      return "qmc";
-    case IntegratorKind::kMc:
-      return "mc";
-    case IntegratorKind::kEngine:
-      return "engine";
+    case IntegratorKind::kQuadrature: return "quadrature";
+    case IntegratorKind::kQmc: return "qmc";
+    case IntegratorKind::kMc: return "mc";
+    case IntegratorKind::kEngine: return "engine";
   }
   return "quadrature";
 }
@@ -95,8 +79,9 @@ Warp ParseWarp(const std::string& s) {
   if (s == "fresnel-z") return Warp::kFresnelZ;
   if (s == "schlick-z") return Warp::kSchlickZ;
   if (s == "two-sided") return Warp::kTwoSided;
+  if (s == "one-minus-square") return Warp::kOneMinusSquare;
   Bad("{warp}: unknown warp '" + s +
-      "' (expected linear, square, sqrt, tail for the gamma axis, "
+      "' (expected linear, square, sqrt, one-minus-square, tail for the gamma axis, "
       "fresnel-z or two-sided for the ior axis, or schlick-z for the exponent axis)");
 }
 Placement ParsePlacement(const std::string& s) {
@@ -154,6 +139,7 @@ double Axis::ValueAt(double fi) const {
   double w = t;
   if (warp == Warp::kSquare) w = t * t;
   if (warp == Warp::kSqrt) w = std::sqrt(t);
+  if (warp == Warp::kOneMinusSquare) w = t * (2 - t);  // 1 - (1 - t)^2, exact at both ends
   return min + (max - min) * w;
 }
 
@@ -195,7 +181,7 @@ std::string Axis::ToJson() const {
     case Warp::kLinear:
     case Warp::kSquare:
     case Warp::kSqrt:
-      break;
+    case Warp::kOneMinusSquare: break;
   }
   if (map) {
     j["map"] = map;
@@ -209,40 +195,26 @@ std::string Axis::ToJson() const {
 int BakeSpec::EffectiveSamples() const {
   if (samples > 0) return samples;
   switch (integrator) {
-    case IntegratorKind::kQuadrature:
-      return 512;
-    case IntegratorKind::kQmc:
-      return 4096;
-    case IntegratorKind::kMc:
-      return 4096;
-    case IntegratorKind::kEngine:
-      return 1024;
+    case IntegratorKind::kQuadrature: return 512;
+    case IntegratorKind::kQmc: return 4096;
+    case IntegratorKind::kMc: return 4096;
+    case IntegratorKind::kEngine: return 1024;
   }
   return 32;
 }
 
 const char* MeaningName(Meaning m) {
   switch (m) {
-    case Meaning::kE:
-      return "E";
-    case Meaning::kOneMinusE:
-      return "1-E";
-    case Meaning::kEavg:
-      return "E_avg";
-    case Meaning::kOneMinusEavg:
-      return "1-E_avg";
-    case Meaning::kDfgScale:
-      return "dfg.scale";
-    case Meaning::kDfgBias:
-      return "dfg.bias";
-    case Meaning::kSelIntegral:
-      return "sel.integral";
-    case Meaning::kSelRatio:
-      return "sel.ratio";
-    case Meaning::kS:
-      return "s";
-    case Meaning::kError:
-      return "error";
+    case Meaning::kE: return "E";
+    case Meaning::kOneMinusE: return "1-E";
+    case Meaning::kEavg: return "E_avg";
+    case Meaning::kOneMinusEavg: return "1-E_avg";
+    case Meaning::kDfgScale: return "dfg.scale";
+    case Meaning::kDfgBias: return "dfg.bias";
+    case Meaning::kSelIntegral: return "sel.integral";
+    case Meaning::kSelRatio: return "sel.ratio";
+    case Meaning::kS: return "s";
+    case Meaning::kError: return "error";
   }
   return "E";
 }
@@ -294,6 +266,11 @@ const char* Definition(Meaning meaning, const BakeSpec& spec) {
     return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
            "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
   }
+  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kTransmissionSchlick) {
+    return "T(mu) = integral over the lower hemisphere of (1 - (1 - |wo.h|)^5) f_T |cos(theta_i)| dwi, f_T the "
+           "rough dielectric's refraction lobe without its Fresnel factor: the refraction weighted by the "
+           "complement of Schlick's weight (EEVEE's btdf_ggx; the renderer multiplies it by 1 - F0)";
+  }
   if (glass && meaning == Meaning::kE) {
     return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
            "the rough dielectric, Fresnel included: reflection plus refraction";
@@ -330,23 +307,15 @@ TableShape ShapeOf(const BakeSpec& spec) {
   for (size_t i = 0; i < s.axes.size(); ++i) (i == 0 ? s.width : s.height) *= s.axes[i].size;
   std::vector<Meaning> meanings;
   switch (spec.table) {
-    case TableKind::kE:
-      meanings = {spec.complement ? Meaning::kOneMinusE : Meaning::kE};
-      break;
-    case TableKind::kEavg:
-      meanings = {spec.complement ? Meaning::kOneMinusEavg : Meaning::kEavg};
-      break;
+    case TableKind::kE: meanings = {spec.complement ? Meaning::kOneMinusE : Meaning::kE}; break;
+    case TableKind::kEavg: meanings = {spec.complement ? Meaning::kOneMinusEavg : Meaning::kEavg}; break;
     case TableKind::kDfg:
       meanings = {Meaning::kDfgScale, Meaning::kDfgBias};
       if (spec.complement) meanings.push_back(Meaning::kOneMinusE);
       break;
-    case TableKind::kSelNorm:
-      meanings = {Meaning::kSelIntegral, Meaning::kSelRatio};
-      break;
+    case TableKind::kSelNorm: meanings = {Meaning::kSelIntegral, Meaning::kSelRatio}; break;
     case TableKind::kGenSchlickS:
-    case TableKind::kGenSchlickIorS:
-      meanings = {Meaning::kS};
-      break;
+    case TableKind::kGenSchlickIorS: meanings = {Meaning::kS}; break;
   }
   s.value_channels = int(meanings.size());
   if (spec.error_channel) meanings.push_back(Meaning::kError);
@@ -476,10 +445,10 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   for (const Axis* a : AxesOf(spec)) {
     if (ParameterAxis(*a)) continue;
     if (a->warp == Warp::kTail)
-      Bad("{warp}: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
+      Bad("{warp}: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square, sqrt or one-minus-square)");
     if (a->warp == Warp::kFresnelZ || a->warp == Warp::kSchlickZ) {
       Bad("{warp}: " + std::string(WarpName(a->warp)) + " is the " + (a->warp == Warp::kFresnelZ ? "ior" : "exponent") +
-          " axis's warp (the " + a->name + " axis takes linear, square or sqrt)");
+          " axis's warp (the " + a->name + " axis takes linear, square, sqrt or one-minus-square)");
     }
     CheckAxisSize(*a);
     // One entry may sit at one value (min = max), as the report's probes do.
@@ -550,7 +519,14 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     // The axis may end at ior = inf (z = 1, as Cycles' tables do) when a
     // clamp of at most 100 bakes its last slices; a two-sided axis holds
     // both sides of the interface.
-    const double top = std::min(a.max, a.clamp_max);
+    // The Schlick-weighted refraction has no Fresnel factor: its axis may
+    // reach ior = inf unclamped (t = -h there).
+    const bool schlick = spec.part == DielectricPart::kTransmissionSchlick;
+    if (schlick && (spec.inverse || a.warp == Warp::kTwoSided)) {
+      Bad("{part} transmission-schlick: light entering the medium only, ior >= 1 (no {inverse}, no two-sided "
+          "axis)");
+    }
+    const double top = schlick ? 1.0 : std::min(a.max, a.clamp_max);
     if (a.warp != Warp::kTwoSided &&
         (!(a.min >= 1) || !(top <= kMaxFresnelIndex) || !ordered || !(a.min <= a.clamp_max))) {
       Bad("{range}: the ior axis must satisfy 1 <= min < max <= 100 (light leaving the medium, "

@@ -395,6 +395,38 @@ std::vector<Preset> MakePresets() {
     }
     p.push_back(o);
   }
+  {
+    // Blender EEVEE (4.2 and later, [Blender]): eevee_lut.cc's
+    // btdf_ggx[16][64][64][1], [slice][row][column] with the column i at
+    // z = F0^(1/4) = i / 63 (ior = (1 + z^2) / (1 - z^2), 1 to inf), the
+    // row j at sqrt(1 - NoV) = j / 63 and the slice k at roughness k / 16,
+    // where the renderer reads it (utility_tx_sample_bsdf_lut: layer 16 r
+    // + 4; its generator wrote r = k / 15). The value is the refraction
+    // lobe without F weighted by 1 - (1 - |wo.h|)^5, separable masking
+    // (eevee_lut_comp.glsl, ggx_btdf_gt_one). Baked over mu (the
+    // one-minus-square warp: mu = 1 - (1 - t)^2, the rows reversed by the
+    // writer) x roughness x ior; the writer puts them in EEVEE's order.
+    // The other tables of the file (the LTC fits, the split sums brdf_ggx
+    // and bsdf_ggx, blue noise, the SSS profiles) are not baked: the file
+    // #includes Blender's own (docs/engines.md says why).
+    Preset e{"eevee",
+             "Blender EEVEE's eevee_lut.cc: btdf_ggx[16][64][64][1] (the refraction weighted by 1 - (1 - wo.h)^5, "
+             "separable masking; x = F0^(1/4), y = sqrt(1 - NoV), slices at roughness k / 16), float; the "
+             "other tables #included from Blender's own file kept as eevee_lut_blender.cc",
+             {},
+             "eevee_lut.cc",
+             EngineForm::kEeveeLut};
+    BakeSpec s = Spec(TableKind::kE, 64, 16, Placement::kEdges);
+    s.model.kind = ModelKind::kGgxGlass;
+    s.part = DielectricPart::kTransmissionSchlick;
+    s.masking = Masking::kSeparable;
+    s.mu.warp = Warp::kOneMinusSquare;
+    s.roughness.max = 15.0 / 16;
+    s.ior = Axis{"ior", 64, 1.0, kInfinity, Warp::kFresnelZ, Placement::kEdges};
+    s.tolerance = 1e-6;  // EEVEE stores it as half (RGBA16F), 2.4e-4 near 0.5
+    e.tables.push_back(Entry(s, Layout({{"T", Source::kE}}, PixelType::kFloat), Container::kHeader, "", "btdf_ggx"));
+    p.push_back(e);
+  }
   // The sizes the engines' code fixes (PresetTable::size_fixed).
   for (Preset& preset : p) {
     for (PresetTable& pt : preset.tables) {
@@ -575,6 +607,56 @@ std::string OpenPbrEnergyArrays(const Preset& preset, const std::vector<Table>& 
          arrays + "#endif  // !OPENPBR_USE_TEXTURE_LUTS\n\n#endif  // OPENPBR_ENERGY_ARRAYS_H\n";
 }
 
+// Blender EEVEE's eevee_lut.cc (source/blender/draw/engines/eevee_next/,
+// [Blender]): its btdf_ggx[16][64][64][1] in namespace blender::eevee::lut,
+// [k][j][i][0] = slice k (roughness), row j (sqrt(1 - NoV) = j / 63: the
+// baked mu entry 63 - j), column i (ior entry i). Every other table of the
+// file is Blender's own: the shipped eevee_lut.cc, kept beside this one as
+// eevee_lut_blender.cc, is #included with its btdf_ggx renamed away, so
+// this file defines the same symbols as the one it replaces.
+std::string EeveeLut(const Preset& preset, const std::vector<Table>& tables, const std::vector<Image>& images) {
+  if (preset.tables.size() != 1 || images[0].pixel != PixelType::kFloat || images[0].channels != 1 ||
+      images[0].axes.size() != 3) {
+    Bad("eevee_lut.cc holds one float table over mu, roughness and ior");
+  }
+  const Image& im = images[0];
+  const int n_mu = im.axes[0].size, n_r = im.axes[1].size, n_ior = im.axes[2].size;
+  const std::string sym = preset.tables[0].symbol;
+  const std::string dims = "[" + std::to_string(n_r) + "][" + std::to_string(n_mu) + "][" +
+                           std::to_string(n_ior) + "][1]";
+  std::string s = "/* EEVEE's lookup tables (source/blender/draw/engines/eevee_next/eevee_lut.cc) with " + sym +
+                  " baked by brdfbake " + std::string(BRDFBAKE_VERSION) + ". Do not edit: bake again instead.\n";
+  s += ConventionComment(tables[0], im, preset.name, " * ");
+  s += " * The array is in EEVEE's order, not the axes' order above: " + sym +
+       "[k][j][i][0] holds roughness entry k, mu entry " + std::to_string(n_mu - 1) +
+       " - j (sqrt(1 - NoV) = j / " + std::to_string(n_mu - 1) + "), ior entry i (F0^(1/4) = i / " +
+       std::to_string(n_ior - 1) + ").\n */\n\n";
+  s += "/* Not baked by brdfbake: ltc_mat_ggx, ltc_mag_ggx, ltc_disk_integral, brdf_ggx, bsdf_ggx, blue_noise,\n"
+       " * burley_sss_profile, random_walk_sss_profile. They are Blender's own: keep the shipped eevee_lut.cc\n"
+       " * beside this file as eevee_lut_blender.cc (it is compiled only through this #include); its " +
+       sym + "\n * is renamed away and unused. */\n";
+  s += "#define " + sym + " " + sym + "_blender\n#include \"eevee_lut_blender.cc\"\n#undef " + sym + "\n\n";
+  s += "namespace blender::eevee::lut {\n\n";
+  s += "/* The declaration of eevee_lut.hh, which the renaming above hid. */\nextern const float " + sym + dims +
+       ";\n\n";
+  s += "const float " + sym + dims + " = {\n";
+  for (int k = 0; k < n_r; ++k) {
+    s += "    {\n";
+    for (int j = 0; j < n_mu; ++j) {
+      const int i_mu = n_mu - 1 - j;
+      s += "        {";
+      for (int i = 0; i < n_ior; ++i) {
+        const double v = im.values[(size_t(i) * n_r + k) * n_mu + i_mu];
+        s += (i ? (i % 8 == 0 ? ",\n         " : ", ") : "") + std::string("{") + FloatLiteral(v) + "}";
+      }
+      s += "},\n";
+    }
+    s += "    },\n";
+  }
+  s += "};\n\n}  // namespace blender::eevee::lut\n";
+  return s;
+}
+
 // The container a run writes table `pt` as: the preset's own, or --format
 // where the engine loads that container.
 Container ContainerFor(const Preset& preset, const PresetTable& pt, const std::string& format) {
@@ -604,6 +686,10 @@ std::string ShaderFile(const PresetRun& run, const PresetTable& pt, ShaderLangua
 }  // namespace
 
 std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) {
+  if (preset.header_form == EngineForm::kEeveeLut && !run.shaders.empty()) {
+    Bad("{shader}: " + preset.name + " samples " + preset.header_file +
+        "'s tables with its own shader (utility_tx_sample_bsdf_lut); no lookup is written");
+  }
   std::vector<PresetFile> files;
   for (size_t k = 0; k < preset.tables.size(); ++k) {
     const PresetTable& pt = preset.tables[k];
@@ -733,6 +819,10 @@ void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vec
         WriteFileAtomically(f.path, OpenPbrEnergyArrays(preset, tables, images));
         continue;
       }
+      if (preset.header_form == EngineForm::kEeveeLut) {
+        WriteFileAtomically(f.path, EeveeLut(preset, tables, images));
+        continue;
+      }
       std::vector<std::pair<const Table*, const Image*>> arrays;
       std::vector<std::string> symbols;
       for (size_t k = 0; k < preset.tables.size(); ++k) {
@@ -779,7 +869,7 @@ const Preset& FindPreset(const std::string& name) {
   Bad("{preset}: unknown preset '" + name + "' (expected " + names + ")" +
       DidYouMean(name, all,
                  {{"ue4", "unreal"}, {"ue5", "unreal"}, {"unreal-engine", "unreal"}, {"unity", "hdrp"},
-                  {"three.js", "three"}, {"threejs", "three"}, {"blender", "cycles"},
+                  {"three.js", "three"}, {"threejs", "three"}, {"blender", "cycles"}, {"eevee-next", "eevee"},
                   {"enterprise", "enterprise-pbr"}, {"dassault", "enterprise-pbr"}}));
 }
 

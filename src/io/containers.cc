@@ -620,7 +620,9 @@ std::vector<std::pair<std::string, std::string>> ImageConventions(const Table& t
       {"brdfbake.table", im.table_name.empty() ? std::string(TableName(t.spec.table)) : im.table_name},
       {"brdfbake.model", t.model_json},
       {"brdfbake.masking", MaskingName(t.spec.masking)},
-      {"brdfbake.fresnel", !im.fresnel.empty()   ? im.fresnel
+      {"brdfbake.fresnel", !im.fresnel.empty() ? im.fresnel
+                           : t.spec.Glass() && t.spec.part == DielectricPart::kTransmissionSchlick
+                               ? kSchlickComplementFresnel
                            : t.spec.Glass()      ? "dielectric"
                            : t.spec.GenSchlick() ? "generalized Schlick: mix(F0, F90, s)"
                                                  : "one"},

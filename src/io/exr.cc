@@ -80,7 +80,10 @@ void WriteExr(const Table& table, const std::string& path) {
   put("brdfbake.table", TableName(spec.table));
   put("brdfbake.model", table.model_json);
   put("brdfbake.masking", MaskingName(spec.masking));
-  put("brdfbake.fresnel", spec.Glass() ? "dielectric" : "one");
+  put("brdfbake.fresnel", spec.Glass() && spec.part == DielectricPart::kTransmissionSchlick
+                              ? kSchlickComplementFresnel
+                          : spec.Glass() ? "dielectric"
+                                         : "one");
   nlohmann::json axes = nlohmann::json::array();
   for (const Axis& a : table.axes) axes.push_back(nlohmann::json::parse(a.ToJson()));
   put("brdfbake.axes", axes.dump());

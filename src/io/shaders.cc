@@ -72,6 +72,7 @@ std::string AxisCoordinate(const Axis& a, bool hlsl) {
   std::string t = hlsl ? "saturate(" + x + ")" : "clamp(" + x + ", 0.0, 1.0)";
   if (a.warp == Warp::kSquare) t = "sqrt(" + t + ")";
   if (a.warp == Warp::kSqrt) t = "(" + t + ") * (" + t + ")";
+  if (a.warp == Warp::kOneMinusSquare) t = "(1.0 - sqrt(1.0 - " + t + "))";
   if (a.placement == Placement::kEdges) {
     return "(" + t + " * " + Lit(a.size - 1) + " + 0.5) / " + Lit(a.size);
   }

@@ -50,7 +50,9 @@ namespace hn = hwy::HWY_NAMESPACE;
 // the largest term, more next to the critical angle, where F has an
 // infinite slope in c (tests/lanes/glass_lanes_test.cc bounds the
 // albedos of both paths against each other on every target). `part`
-// drops the refraction or the reflection term, as the reference does.
+// drops the refraction or the reflection term, as the reference does;
+// kTransmissionSchlick weights the refraction by 1 - (1 - c)^5 and forms
+// no F (its eta may be inf: 1 / eta = 0, t = -h).
 struct SimdGlassNodes {
   using V = hn::Vec<DF64>;
   const GlassFrame* frame;
@@ -79,9 +81,12 @@ struct SimdGlassNodes {
       const V lambda = hn::Div(p, hn::Mul(hn::Set(d, 2.0), hn::MulAdd(z, hn::Sqrt(hn::Add(z2, p)), z2)));
       return separable ? hn::Div(one, hn::Add(one, lambda)) : hn::Div(g1o, hn::Add(one_lo, lambda));
     };
-    // All lanes true or all false: the part's terms.
-    const auto keep_r = hn::Ne(hn::Set(d, part == DielectricPart::kTransmission ? 0.0 : 1.0), zero);
+    // All lanes true or all false: the part's terms, and the refraction's
+    // weight (1 - F, or Schlick's complement 1 - (1 - c)^5).
+    const bool schlick = part == DielectricPart::kTransmissionSchlick;
+    const auto keep_r = hn::Ne(hn::Set(d, RefractionPart(part) ? 0.0 : 1.0), zero);
     const auto keep_t = hn::Ne(hn::Set(d, part == DielectricPart::kReflection ? 0.0 : 1.0), zero);
+    const auto use_schlick = hn::Ne(hn::Set(d, schlick ? 1.0 : 0.0), zero);
     for (size_t i = 0; i < 16; i += N) {
       const V th = hn::Load(d, in + i);
       const V ct = hn::Cos(d, th), st = hn::Sin(d, th);
@@ -104,7 +109,9 @@ struct SimdGlassNodes {
       const V ec = hn::Mul(eta, c), et = hn::Mul(eta, cos_t);
       const V r_parl = hn::Div(hn::Sub(ec, cos_t), hn::Add(ec, cos_t));
       const V r_perp = hn::Div(hn::Sub(c, et), hn::Add(c, et));
-      const V fr = hn::IfThenElse(tir, one, hn::Mul(half, hn::MulAdd(r_parl, r_parl, hn::Mul(r_perp, r_perp))));
+      // F is not formed for the Schlick weight (eta may be inf there).
+      const V fr = hn::IfThenElse(use_schlick, zero,
+                                  hn::IfThenElse(tir, one, hn::Mul(half, hn::MulAdd(r_parl, r_parl, hn::Mul(r_perp, r_perp)))));
       // Reflection r = 2 c h - wo (wo = (so, 0, mu)).
       const V two_c = hn::Add(c, c);
       const V rx = hn::MulSub(two_c, hx, so), ry = hn::Mul(two_c, hy), rz = hn::MulSub(two_c, hz, mu);
@@ -121,7 +128,10 @@ struct SimdGlassNodes {
       const auto t_ok = hn::And(hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero)), keep_t);
       const V tz_safe = hn::IfThenElse(t_ok, hn::Neg(tz), one);
       const V pt = hn::Mul(alpha2, hn::MulAdd(tx, tx, hn::Mul(ty, ty)));
-      w = hn::Add(w, hn::IfThenElseZero(t_ok, hn::Mul(hn::Sub(one, fr), g2_over_g1(pt, tz_safe))));
+      const V omc = hn::Sub(one, c), omc2s = hn::Mul(omc, omc);
+      const V s5 = hn::Mul(hn::Mul(omc2s, omc2s), omc);
+      const V weight_t = hn::IfThenElse(use_schlick, hn::Sub(one, s5), hn::Sub(one, fr));
+      w = hn::Add(w, hn::IfThenElseZero(t_ok, hn::Mul(weight_t, g2_over_g1(pt, tz_safe))));
       hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
     }
     for (int i = 0; i < 15; ++i) v[i] = out[i];
@@ -132,7 +142,7 @@ RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, doub
                       DielectricPart part) {
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
-  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const GlassFrame frame(bsdf.ndf().alpha_x(), GlassRuleEta(bsdf.eta(), eta, part), mu);
   const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
   const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
   return GlassAlbedoWith(frame, tol, max_pieces, nodes);
@@ -142,7 +152,7 @@ void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi
                 DielectricPart part) {
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
                                                      DielectricTransport::kImportance);
-  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const GlassFrame frame(bsdf.ndf().alpha_x(), GlassRuleEta(bsdf.eta(), eta, part), mu);
   const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
   const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
   nodes(GlassRay{std::cos(phi), std::sin(phi)}, theta, v);

@@ -320,7 +320,7 @@ TEST(PresetTest, Khronos) {
 TEST(PresetTest, SizeFixedByTheEngine) {
   for (const Preset& p : Presets()) {
     const bool fixed = p.name == "filament" || p.name == "cycles" || p.name == "enterprise-pbr" || p.name == "hdrp" ||
-                       p.name == "openpbr";
+                       p.name == "openpbr" || p.name == "eevee";
     for (const PresetTable& pt : p.tables) EXPECT_EQ(pt.size_fixed, fixed) << p.name << " " << pt.symbol;
   }
 }

@@ -27,7 +27,7 @@ using GlassRef = RoughDielectric<double, GgxNdf<double>>;
 
 // Cuts graded by 4 from `from` towards `to` (both sides of `to` when it is
 // inside [lo, hi]) down to the distance `finest`.
-void GradeTowards(double to, double lo, double hi, double finest, std::vector<double>* cuts) {
+inline void GradeTowards(double to, double lo, double hi, double finest, std::vector<double>* cuts) {
   if (!(to >= lo && to <= hi)) return;
   cuts->push_back(to);
   for (double w = 0.25 * (hi - lo); w > finest; w *= 0.25) {

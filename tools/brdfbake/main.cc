@@ -526,7 +526,9 @@ struct BakeOptions {
                   "eta = 1/ior, with total internal reflection (Cycles' inverse tables)");
     app->add_option("--part", part,
                     "ggx-glass: both (reflection plus refraction) | reflection (the energy the interface "
-                    "reflects, weighted by F) | transmission (the refraction alone, weighted by 1 - F)")
+                    "reflects, weighted by F) | transmission (the refraction alone, weighted by 1 - F) | "
+                    "transmission-schlick (the refraction without F, weighted by 1 - (1 - wo.h)^5: EEVEE's "
+                    "btdf_ggx; the ior axis may reach inf)")
         ->capture_default_str();
     app->add_option("-o,--output", output,
                     "output file: .exr, .h/.hpp/.inc, .js/.mjs, .ktx2 or .dds (with --preset: a "
@@ -556,8 +558,11 @@ struct BakeOptions {
       spec.part = brdfbake::DielectricPart::kReflection;
     } else if (part == "transmission") {
       spec.part = brdfbake::DielectricPart::kTransmission;
+    } else if (part == "transmission-schlick") {
+      spec.part = brdfbake::DielectricPart::kTransmissionSchlick;
     } else if (part != "both") {
-      Bad("--part: unknown part '" + part + "' (expected both, reflection or transmission)");
+      Bad("--part: unknown part '" + part +
+          "' (expected both, reflection, transmission or transmission-schlick)");
     }
     if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);

@@ -98,10 +98,31 @@ inline const char* DielectricTransportName(DielectricTransport t) {
 // refraction (the energy albedo), the reflection lobe alone (the energy a
 // rough dielectric reflects, weighted by F) or the refraction lobe alone
 // (weighted by 1 - F). Reflection plus refraction is their sum.
-enum class DielectricPart { kBoth, kReflection, kTransmission };
+// kTransmissionSchlick is the refraction lobe weighted by 1 - (1 -
+// |wo.h|)^5 instead of 1 - F, the complement of Schlick's weight with F0 =
+// 0 ([Schlick94]): EEVEE's btdf_ggx ([Blender], eevee_lut_comp.glsl's
+// ggx_btdf_gt_one), which its renderer multiplies by 1 - F0. It does not
+// depend on F, so the index may exceed the Fresnel model's range: it
+// takes any eta >= 1 up to inf, where the refraction is -h.
+enum class DielectricPart { kBoth, kReflection, kTransmission, kTransmissionSchlick };
 
 inline const char* DielectricPartName(DielectricPart p) {
-  return p == DielectricPart::kBoth ? "both" : p == DielectricPart::kReflection ? "reflection" : "transmission";
+  switch (p) {
+    case DielectricPart::kBoth: return "both";
+    case DielectricPart::kReflection: return "reflection";
+    case DielectricPart::kTransmission: return "transmission";
+    case DielectricPart::kTransmissionSchlick: return "transmission-schlick";
+  }
+  return "both";
+}
+
+// kTransmissionSchlick's weight, as the files' brdfbake.fresnel states it.
+inline constexpr const char* kSchlickComplementFresnel =
+    "none on the refraction: weighted by 1 - (1 - |wo.h|)^5 (Schlick's complement, F0 = 0)";
+
+// Whether the part counts the refraction lobe alone (with either weight).
+inline bool RefractionPart(DielectricPart p) {
+  return p == DielectricPart::kTransmission || p == DielectricPart::kTransmissionSchlick;
 }
 
 template <typename T>

@@ -64,14 +64,24 @@ namespace brdfbake {
 // eta -> 1: the refraction straight through, weighted by G2 / G1(wo).
 // `part` keeps the reflection or the refraction term of the bracket alone
 // (the rule, its cuts and pieces are the same; each part is as accurate as
-// the sum).
+// the sum). kTransmissionSchlick's weight is smooth in wo.h and has no
+// critical angle (eta >= 1): the same cuts serve it. `eta`, when given,
+// replaces the bsdf's clamped index in the rule (kTransmissionSchlick
+// only, eta >= 1 up to inf).
 RuleResult GlassAlbedo(const RoughDielectric<double, GgxNdf<double>>& bsdf, double mu, double tol, int max_pieces,
-                       DielectricPart part = DielectricPart::kBoth);
+                       DielectricPart part = DielectricPart::kBoth, double eta = 0);
 
 // The albedo of the smooth interface (alpha = 0): exactly 1, with no
 // error; its reflection F(eta, mu) and its refraction 1 - F.
 inline RuleResult SmoothGlassAlbedo(double eta = 1, double mu = 1, DielectricPart part = DielectricPart::kBoth) {
   RuleResult out;
+  out.pieces = 1;
+  if (part == DielectricPart::kTransmissionSchlick) {
+    // h = n: 1 - (1 - mu)^5, whatever eta >= 1.
+    const double m = 1 - std::clamp(mu, 0.0, 1.0);
+    out.value = 1 - m * m * m * m * m;
+    return out;
+  }
   const double f = part == DielectricPart::kBoth ? 0 : FresnelDielectric(eta, std::clamp(mu, 0.0, 1.0));
   out.value = part == DielectricPart::kBoth ? 1 : part == DielectricPart::kReflection ? f : 1 - f;
   out.pieces = 1;

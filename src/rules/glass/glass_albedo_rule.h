@@ -90,6 +90,13 @@ inline void GlassRoots(const GlassFrame& f, double cp, double sp, double theta_m
             [](const GlassRoot& x, const GlassRoot& y) { return x.theta < y.theta; });
 }
 
+// The index the rule runs at: the bsdf's (clamped to the Fresnel model's
+// [0.01, 100]), or for kTransmissionSchlick, whose weight has no Fresnel
+// factor, the index asked for, up to inf (t = -h there).
+inline double GlassRuleEta(double bsdf_eta, double eta, DielectricPart part) {
+  return part == DielectricPart::kTransmissionSchlick && eta >= 1 ? eta : bsdf_eta;
+}
+
 // What a ray's nodes depend on.
 struct GlassRay {
   double cp, sp;
@@ -108,7 +115,7 @@ struct ScalarGlassNodes {
     const GlassFrame& f = *frame;
     const Vec3<double> wo{f.so, 0, f.mu};
     const double c = std::clamp(Dot(wo, h), 0.0, 1.0);
-    const double fr = FresnelDielectric(f.eta, c);
+    const double fr = part == DielectricPart::kTransmissionSchlick ? 0.0 : FresnelDielectric(f.eta, c);
     auto g2_over_g1 = [&](const Vec3<double>& wi) {
       const double li = bsdf->Lambda(wi);
       if (bsdf->masking() == Masking::kSeparable) return 1 / (1 + li);
@@ -116,10 +123,19 @@ struct ScalarGlassNodes {
     };
     double w = 0;
     const Vec3<double> r = h * (2 * c) - wo;
-    if (r.z > 0 && fr > 0 && part != DielectricPart::kTransmission) w += fr * g2_over_g1(r);
-    const double ct2 = 1 - (1 - c) * (1 + c) / (f.eta * f.eta);
+    if (r.z > 0 && fr > 0 && !RefractionPart(part)) w += fr * g2_over_g1(r);
+    // 1 / eta is 0 at eta = inf (kTransmissionSchlick), where t = -h.
+    const double inv_eta = 1 / f.eta;
+    const double ct2 = 1 - (1 - c) * (1 + c) * inv_eta * inv_eta;
+    if (part == DielectricPart::kTransmissionSchlick) {
+      // The complement of Schlick's weight, (1 - (1 - c)^5) (kSchlick).
+      const double s = (1 - c) * (1 - c) * (1 - c) * (1 - c) * (1 - c);
+      const Vec3<double> t = wo * -inv_eta + h * (c * inv_eta - std::sqrt(std::max(ct2, 0.0)));
+      if (ct2 > 0 && t.z < 0) w += (1 - s) * g2_over_g1(t);
+      return w;
+    }
     if (ct2 > 0 && fr < 1 && part != DielectricPart::kReflection) {
-      const Vec3<double> t = wo * (-1 / f.eta) + h * (c / f.eta - std::sqrt(ct2));
+      const Vec3<double> t = wo * -inv_eta + h * (c * inv_eta - std::sqrt(ct2));
       if (t.z < 0) w += (1 - fr) * g2_over_g1(t);
     }
     return w;
