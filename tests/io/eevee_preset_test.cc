@@ -31,6 +31,7 @@
 #include "lanes/quadrature_simd.h"
 #include "rules/glass/glass_albedo.h"
 #include "util/file_util.h"
+#include "util/preset_util.h"
 
 namespace brdfbake {
 namespace {
@@ -40,20 +41,11 @@ using test::Numbers;
 using test::Slurp;
 using test::WriteText;
 
-struct Baked {
-  std::vector<Table> tables;
-  std::vector<Image> images;
-};
+using Baked = test::BakedPreset;
 
+// The preset, baked once for every test here.
 const Baked& Eevee() {
-  static const Baked b = [] {
-    Baked out;
-    for (const PresetTable& pt : FindPreset("eevee").tables) {
-      out.tables.push_back(Bake(pt.spec));
-      out.images.push_back(ArrangePresetTable(pt, out.tables.back()));
-    }
-    return out;
-  }();
+  static const Baked b = test::BakePreset("eevee");
   return b;
 }
 
