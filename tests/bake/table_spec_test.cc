@@ -147,6 +147,7 @@ TEST(TableSpecTest, IntegratorsAllowed) {
   for (BakeSpec s : {Small(TableKind::kE, ModelKind::kGgxGlass), Small(TableKind::kE, ModelKind::kGgxAniso),
                      Small(TableKind::kGenSchlickS, ModelKind::kGgx), Small(TableKind::kSelNorm, ModelKind::kSel)}) {
     EXPECT_EQ(TableIntegrators(s), std::vector<IntegratorKind>{IntegratorKind::kQuadrature});
+    if (!ModelBuilt(s.model.kind)) continue;  // the build's refusal comes first
     s.integrator = IntegratorKind::kQmc;
     try {
       ValidateBakeSpec(s);
