@@ -806,16 +806,30 @@ ModelKind EngineModel(const std::string& group) {
 // The preset's table of a kind for the engine's model: GGX, the Charlie
 // sheen with a masking visibility (conty-kulla, or the engine's variant of
 // it), or ggx-glass entering or (`inverse`) leaving the medium; nullptr if
-// it has none.
+// it has none. An engine whose glass E entering the medium is the
+// refraction weighted by Schlick's complement (EEVEE's btdf_ggx, which its
+// renderer scales by 1 - F0) serves it with that table when it has no
+// table of both lobes.
 const PresetTable* EngineTable(const Preset& preset, TableKind kind, ModelKind model = ModelKind::kGgx,
                                bool inverse = false) {
+  const PresetTable* schlick = nullptr;
   for (const PresetTable& pt : preset.tables) {
     if (pt.spec.table != kind || pt.spec.model.kind != model || pt.over != PresetTable::Over::kNone) continue;
-    if (pt.spec.inverse != inverse || pt.spec.part != DielectricPart::kBoth) continue;
+    if (pt.spec.inverse != inverse) continue;
+    if (pt.spec.part == DielectricPart::kTransmissionSchlick && !schlick) schlick = &pt;
+    if (pt.spec.part != DielectricPart::kBoth) continue;
     if (model == ModelKind::kCharlie && !SheenHasLambda(pt.spec.model.visibility)) continue;
     return &pt;
   }
-  return nullptr;
+  return schlick;
+}
+
+// Whether the preset ships a glass table of its own: then the scene's
+// glass tables are the engine's, and a kind or side it does not ship is
+// served by its renderer's own means, not by a file it never reads.
+bool EngineHasGlass(const Preset& preset) {
+  return std::any_of(preset.tables.begin(), preset.tables.end(),
+                     [](const PresetTable& pt) { return pt.spec.model.kind == ModelKind::kGgxGlass; });
 }
 
 // The preset's table whose layout carries the Charlie sheen E in a channel
@@ -883,6 +897,20 @@ std::vector<TableKind> GlassKinds(const Scene& scene) {
     if (k == TableKind::kE || k == TableKind::kEavg) kinds.push_back(k);
   }
   return kinds;
+}
+
+// Whether a preset's own glass table serves one of the scene's
+// transmissive groups.
+bool EngineServesGlass(const Scene& scene) {
+  if (scene.engine.preset.empty()) return false;
+  const Preset& preset = FindPreset(scene.engine.preset);
+  const bool volume = std::any_of(scene.materials.begin(), scene.materials.end(),
+                                  [](const SceneMaterial& m) { return m.transmission && m.volume; });
+  for (TableKind k : GlassKinds(scene)) {
+    if (EngineTable(preset, k, ModelKind::kGgxGlass, false)) return true;
+    if (volume && EngineTable(preset, k, ModelKind::kGgxGlass, true)) return true;
+  }
+  return false;
 }
 
 // One table slot of a plan: its kind and material group; `generic` when
@@ -1620,7 +1648,7 @@ void ApplySceneOverrides(Scene* scene, const SceneOverrides& overrides) {
     // unorm16 codes of values that may exceed 1).
     if (c == Container::kPng) Bad("--format png: a scene's tables are written as exr, header, js, ktx2, dds or inc");
   }
-  if (!e.preset.empty() && SceneKinds(*scene).empty()) {
+  if (!e.preset.empty() && SceneKinds(*scene).empty() && !EngineServesGlass(*scene)) {
     Bad("engine preset '" + e.preset + "' samples " + PresetTablesText(FindPreset(e.preset)) +
         ", none of the scene's tables");
   }
@@ -1772,21 +1800,31 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
                     Range(box.ior_min, box.ior_max) +
                     "): the rough dielectric over GGX (ggx-glass: reflection by the exact Fresnel plus refraction, "
                     "[Walter07])";
+    // An engine with glass tables of its own gets those only; one without
+    // gets brdfbake's files.
+    const bool engine_glass = planner.preset() && EngineHasGlass(*planner.preset());
+    const PresetTable* schlick = planner.GlassEngine(TableKind::kE, false);
+    if (schlick && schlick->spec.part != DielectricPart::kTransmissionSchlick) schlick = nullptr;
     if (glass_kinds.empty()) {
       d += "; the engine samples no E or E_avg table, so no glass table is baked";
+    } else if (schlick) {
+      d += "; engine preset '" + scene.engine.preset + "' ships its own glass table for light entering the medium, " +
+           schlick->symbol +
+           ": the refraction without F weighted by 1 - (1 - wo.h)^5, which its renderer scales by 1 - F0, at the "
+           "engine's axes and size, its lookup error measured over the materials' range";
     } else {
-      bool own = planner.preset() != nullptr;
-      for (TableKind k : glass_kinds) own &= planner.GlassEngine(k, false) != nullptr;
-      d += own ? ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), the ior axis in z = F0^(1/4)"
-               : ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), over the materials' ior range "
-                 "only, the ior axis in z = F0^(1/4)";
+      d += engine_glass ? ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), the ior axis in z = "
+                          "F0^(1/4)"
+                        : ": its E over (mu, roughness, ior) and E_avg over (roughness, ior), over the materials' ior "
+                          "range only, the ior axis in z = F0^(1/4)";
       d += volume ? "; a volume (KHR_materials_volume) also lets light leave the medium: the inverse tables "
                     "(eta = 1 / ior, total internal reflection beyond the critical angle)"
                   : "; thin-walled (no KHR_materials_volume): light only enters, eta = ior";
       if (planner.preset()) {
-        d += own ? "; engine preset '" + scene.engine.preset + "' ships its own glass tables: those, at the "
-                       "engine's axes and size, their lookup error measured over the materials' range"
-                 : "; engine preset '" + scene.engine.preset + "' ships no glass table: brdfbake's own EXR files";
+        d += engine_glass ? "; engine preset '" + scene.engine.preset + "' ships its own glass tables: those, at the "
+                                "engine's axes and size, their lookup error measured over the materials' range"
+                          : "; engine preset '" + scene.engine.preset + "' ships no glass table: brdfbake's own EXR "
+                                                                        "files";
       }
     }
     d += "; its specular reflection looks up the isotropic GGX tables as the opaque materials do";
@@ -1797,6 +1835,18 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       for (TableKind k : glass_kinds) {
         const std::string label = std::string(TableName(k)) + " " + group;
         const PresetTable* et = planner.GlassEngine(k, inverse);
+        if (!et && engine_glass) {
+          const PresetTable* entering = planner.GlassEngine(k, false);
+          const bool two_sided = inverse && entering && entering->spec.ior.warp == Warp::kTwoSided;
+          std::string n = std::string(TableName(k)) + " of the glass" +
+                          (inverse ? " leaving the medium (the volumes)" : " entering the medium") +
+                          ": engine preset '" + scene.engine.preset + "'";
+          n += two_sided ? " holds it in its own glass table, whose ior axis covers both sides (eta = 1 / ior below "
+                           "1), so no table of its own is baked"
+                         : " samples no such table of its own (its renderer serves it otherwise), so none is baked";
+          plan.notes.push_back(n);
+          continue;
+        }
         PlannedTable p = et ? planner.PlanEngineGlass(*et, box, label)
                             : planner.PlanGlass(planner.GlassBase(k, box, inverse), label);
         p.group = group;
@@ -2068,9 +2118,12 @@ std::string PlanText(const Scene& scene, const ScenePlan& plan) {
     const PlannedTable& p = plan.tables[i];
     const Table& t = p.table;
     // The sheen has a visibility term, not a masking variant.
-    const std::string shape = p.spec.model.kind == ModelKind::kCharlie
-                                  ? std::string(SheenVisibilityName(p.spec.model.visibility)) + " visibility"
-                                  : MaskingName(p.spec.masking);
+    std::string shape = p.spec.model.kind == ModelKind::kCharlie
+                            ? std::string(SheenVisibilityName(p.spec.model.visibility)) + " visibility"
+                            : MaskingName(p.spec.masking);
+    if (p.spec.Glass() && p.spec.part != DielectricPart::kBoth) {
+      shape += std::string(", part ") + DielectricPartName(p.spec.part);
+    }
     os << "table " << i + 1 << ": " << p.file << " (" << TableName(p.spec.table) << ", " << shape << "), " << p.why
        << "\n";
     os << "  materials:";

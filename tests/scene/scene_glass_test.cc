@@ -166,6 +166,72 @@ TEST(SceneGlassTest, EngineGlassTablesServeUnderCycles) {
   }
 }
 
+// Under EEVEE, whose one baked glass table is btdf_ggx (the refraction
+// weighted by Schlick's complement, light entering the medium), the
+// transmissive materials get that table in eevee_lut.cc and nothing the
+// renderer does not read: no E_avg, no inverse table, no GGX table (its
+// brdf_ggx is Blender's own).
+TEST(SceneGlassTest, EngineGlassUnderEeveeIsItsBtdfTableAlone) {
+  if (!ModelBuilt(ModelKind::kGgxGlass)) GTEST_SKIP() << "glass is not built (BRDFBAKE_MODELS)";
+  const std::string dir = Scratch("eevee");
+  WriteText(dir + "/g.gltf", kGlassGltf);
+  Scene s = LoadScene(dir + "/g.gltf");
+  ApplySceneOverrides(&s, {{"--preset", "eevee"}});
+  const ScenePlan plan = PlanScene(s);
+  ASSERT_EQ(plan.tables.size(), 1u) << PlanText(s, plan);
+  const PlannedTable& p = plan.tables[0];
+  EXPECT_EQ(p.file, "eevee_lut.cc");
+  EXPECT_EQ(p.spec.part, DielectricPart::kTransmissionSchlick);
+  EXPECT_FALSE(p.spec.inverse);
+  EXPECT_TRUE(p.size_fixed);
+  EXPECT_EQ(p.spec.ior.max, kInfinity);
+  EXPECT_EQ(p.materials, (std::vector<std::string>{"pane", "bottle"}));
+  // Its lookup error over the materials' range is measured and stated.
+  EXPECT_GT(p.interpolation_error, 0) << PlanText(s, plan);
+  EXPECT_GE(p.total_error, p.interpolation_error);
+  const std::string notes = Joined(plan.notes), decisions = Joined(plan.decisions);
+  EXPECT_NE(decisions.find("btdf_ggx"), std::string::npos) << decisions;
+  EXPECT_NE(notes.find("E_avg of the glass entering the medium: engine preset 'eevee' samples no such table"),
+            std::string::npos) << notes;
+  EXPECT_NE(notes.find("E of the glass leaving the medium (the volumes): engine preset 'eevee'"), std::string::npos)
+      << notes;
+  EXPECT_NE(PlanText(s, plan).find("part transmission-schlick"), std::string::npos);
+  std::filesystem::create_directories(dir + "/out");
+  const std::vector<std::string> files = WriteScenePlan(s, plan, dir + "/out");
+  EXPECT_EQ(files.size(), 2u);  // eevee_lut.cc and the manifest
+  const std::string source = test::Slurp(dir + "/out/eevee_lut.cc");
+  EXPECT_NE(source.find("btdf_ggx[16][64][64][1]"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir + "/out/E_avg_ggx-glass.exr"));
+
+  // A scene without transmissive materials has nothing for EEVEE's table.
+  Scene opaque = LoadScene(dir + "/g.gltf");
+  opaque.materials.erase(opaque.materials.begin(), opaque.materials.begin() + 2);
+  opaque.materials.pop_back();
+  try {
+    ApplySceneOverrides(&opaque, {{"--preset", "eevee"}});
+    FAIL() << "an opaque scene was accepted under eevee";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("samples ggx-glass E, none of the scene's tables"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Under openpbr the entering table's two-sided ior axis holds the
+// volumes' side: no table of their own.
+TEST(SceneGlassTest, EngineGlassUnderOpenPbrHoldsTheVolumesOnItsTwoSidedAxis) {
+  if (!ModelBuilt(ModelKind::kGgxGlass)) GTEST_SKIP() << "glass is not built (BRDFBAKE_MODELS)";
+  const std::string dir = Scratch("openpbr");
+  WriteText(dir + "/g.gltf", kGlassGltf);
+  Scene o = LoadScene(dir + "/g.gltf");
+  ApplySceneOverrides(&o, {{"--preset", "openpbr"}});
+  const ScenePlan op = PlanScene(o);
+  for (const PlannedTable& t : op.tables) {
+    EXPECT_FALSE(t.spec.Glass() && t.spec.inverse) << t.file;
+    EXPECT_EQ(t.file, "openpbr_energy_arrays.h");
+  }
+  EXPECT_NE(Joined(op.notes).find("whose ior axis covers both sides"), std::string::npos) << Joined(op.notes);
+}
+
 // The stated error of a glass E bounds a GPU's lookup at random (mu,
 // roughness, ior): bilinear in each ior slice, the two slices blended.
 TEST(SceneGlassTest, PlannedGlassErrorBoundsRandomLookups) {
