@@ -56,7 +56,8 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress = nullptr);
 void ReleaseBakeCaches();
 
 // One texel of the E / dfg tables (brdfbake/estimate.h) with the spec's
-// model, masking and integrator at (roughness, mu).
+// model, masking and integrator at (roughness, mu); of gen_schlick_s and
+// gen_schlick_ior_s (in `e`) at the one exponent or ior of a size-1 axis.
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed = 0);
 

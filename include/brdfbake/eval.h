@@ -27,6 +27,10 @@ namespace brdfbake {
 //               through the same integrator as `bake`); columns with the
 //               integrator's error estimate
 //   E_avg       none (a function of roughness alone)
+//   gen_schlick_s, gen_schlick_ior_s
+//               the view wo: the generalized Schlick factor s of a GGX
+//               lobe (bake's tables of that name) at one `exponent`, or at
+//               the dielectric shape of one ior (model.ior in [1, 100])
 // Sweeps: "mu" (cos theta), "theta" (degrees), "roughness" (the table
 // quantities only; alpha = r^2, the view at mu_o), or "none" (one row at
 // mu_o and the model's roughness sqrt(alpha), table quantities only).
@@ -39,6 +43,7 @@ struct EvalRequest {
   double phi_o = 0.0;  // azimuth of wo, radians
   double phi = 0.0;    // azimuth of the swept direction, radians
   double anisotropy = 0.0;  // ggx-aniso (E, E_avg): KHR_materials_anisotropy strength
+  double exponent = 5.0;    // gen_schlick_s: s_h = (1 - wo.h)^exponent, in [0, inf]
   std::string sweep = "mu";  // mu | theta | roughness | none
   double from = 0.0, to = 1.0;
   int count = 11;
@@ -49,7 +54,8 @@ const std::vector<std::string>& EvalQuantities();
 // Throws std::invalid_argument (one line, naming the bad input) on bad input.
 void ValidateEvalRequest(const EvalRequest& req);
 
-// True for E, dfg and E_avg (the quantities the tables hold).
+// True for E, dfg, E_avg, gen_schlick_s and gen_schlick_ior_s (the
+// quantities the tables hold).
 bool IsTableQuantity(const std::string& q);
 
 // Writes a header line and `count` rows. Throws on bad input before writing.

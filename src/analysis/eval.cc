@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "base/error.h"
+#include "base/text.h"
 #include "brdfbake/bake.h"
 
 namespace brdfbake {
@@ -25,12 +26,18 @@ std::string Fmt(double v) {
 }  // namespace
 
 const std::vector<std::string>& EvalQuantities() {
-  static const std::vector<std::string> kQ = {"D",   "Lambda", "G1", "G2",   "brdf",
-                                              "pdf", "K",      "E",  "dfg", "E_avg"};
+  static const std::vector<std::string> kQ = {"D", "Lambda", "G1",  "G2",    "brdf",          "pdf",
+                                              "K", "E",      "dfg", "E_avg", "gen_schlick_s", "gen_schlick_ior_s"};
   return kQ;
 }
 
-bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg"; }
+namespace {
+
+bool IsGenSchlick(const std::string& q) { return q == "gen_schlick_s" || q == "gen_schlick_ior_s"; }
+
+}  // namespace
+
+bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg" || IsGenSchlick(q); }
 
 void ValidateEvalRequest(const EvalRequest& req) {
   const bool aniso = req.model.kind == ModelKind::kGgxAniso;
@@ -52,7 +59,19 @@ void ValidateEvalRequest(const EvalRequest& req) {
     for (const std::string& k : EvalQuantities()) ok |= q == k;
     if (!ok) {
       Bad("{quantity}: unknown quantity '" + q +
-          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg or E_avg)");
+          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s or gen_schlick_ior_s)");
+    }
+    if (IsGenSchlick(q)) {
+      if (req.model.kind != ModelKind::kGgx) {
+        Bad("{quantity}: " + q + " is baked for model ggx only (got '" + std::string(req.model.name()) + "')");
+      }
+      if (q == "gen_schlick_s" && !(req.exponent >= 0)) {
+        Bad("{exponent} must be >= 0 or inf (s_h = (1 - wo.h)^exponent; got " + ExactText(req.exponent) + ")");
+      }
+      if (q == "gen_schlick_ior_s" && !(req.model.ior >= 1 && req.model.ior <= kMaxFresnelIndex)) {
+        Bad("{ior}: gen_schlick_ior_s takes the dielectric shape at an ior in [1, 100] (got " +
+            ExactText(req.model.ior) + ")");
+      }
     }
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
@@ -155,6 +174,18 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
     const EavgEstimate e = IntegrateEavg(spec, roughness);
     return "," + Fmt(std::clamp(e.value, 0.0, StoredEMax(spec))) + "," + Fmt(e.error);
   }
+  if (IsGenSchlick(q)) {
+    // One slice of the table: its third axis at the one value asked for
+    // (clamped as the bake clamps it).
+    const bool exponent = q == "gen_schlick_s";
+    spec.table = exponent ? TableKind::kGenSchlickS : TableKind::kGenSchlickIorS;
+    Axis& slice = exponent ? spec.exponent : spec.ior;
+    slice.size = 1;
+    slice.placement = Placement::kCenters;
+    slice.min = slice.max = exponent ? req.exponent : req.model.ior;
+    const TexelEstimate v = IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0));
+    return "," + Fmt(std::clamp(v.e, 0.0, 1.0)) + "," + Fmt(v.err_e);
+  }
   spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
   const TexelEstimate v =
       ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)), StoredEMax(spec));
@@ -185,6 +216,8 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
       header << ",dfg_scale,dfg_bias,dfg_error";
     } else if (q == "E_avg") {
       header << ",E_avg,E_avg_error";
+    } else if (IsGenSchlick(q)) {
+      header << "," << q << "," << q << "_error";
     } else if (q == "brdf" && !grey) {
       header << ",brdf_r,brdf_g,brdf_b";
     } else {

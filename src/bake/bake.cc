@@ -1266,7 +1266,16 @@ EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double a
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
                              uint64_t texel_seed) {
   ValidateBakeSpec(spec);
-  if (spec.GenSchlick()) Bad(std::string("one texel of ") + TableName(spec.table) + " needs its slice: bake the table");
+  if (spec.GenSchlick()) {
+    // Its value depends on the slice: one exponent or ior, a size-1 axis.
+    const Axis& slice = spec.table == TableKind::kGenSchlickS ? spec.exponent : spec.ior;
+    if (slice.size != 1) {
+      Bad("{size}: one texel of " + std::string(TableName(spec.table)) + " is at one " + slice.name + " (got " +
+          std::to_string(slice.size) + " slices)");
+    }
+    const TexelEstimate v = GenSchlickTexel(spec, AlphaFromRoughness(roughness), mu, GenSchlickSlice(spec, 0));
+    return {v.e, 0, 0, v.err_e, 0, 0};
+  }
   const TexelEstimate v = Texel(spec, AlphaFromRoughness(roughness), mu, Mix64(spec.seed ^ texel_seed));
   return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
 }

@@ -44,7 +44,7 @@ bool IsParameterName(const std::string& name) {
       "output", "format", "shader", "symbol", "preset",
       // eval, grids and the report
       "quantity", "sweep", "from", "to", "count", "mu_o", "phi_o", "phi", "alpha", "alpha_x", "alpha_y", "roughness",
-      "anisotropy", "ior", "gamma", "visibility", "grid", "width", "height", "repeats"};
+      "anisotropy", "ior", "exponent", "gamma", "visibility", "grid", "width", "height", "repeats"};
   return std::any_of(std::begin(kNames), std::end(kNames), [&](const char* n) { return name == n; });
 }
 

@@ -712,8 +712,12 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run) 
         " only");
   }
   if (!preset.header_file.empty()) {
-    files.push_back({run.dir + "/" + preset.header_file, -1,
-                     std::to_string(preset.tables.size()) + " tables (" + preset.name + ")", Container::kHeader});
+    OutputFile header;
+    header.path = run.dir + "/" + preset.header_file;
+    header.table = -1;
+    header.what = std::to_string(preset.tables.size()) + " tables (" + preset.name + ")";
+    header.container = Container::kHeader;
+    files.push_back(header);
   }
   return files;
 }

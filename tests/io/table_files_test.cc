@@ -57,7 +57,9 @@ TEST(TableFilesTest, WritesWhatThePlanSays) {
   EXPECT_NE(test::Slurp(dir + "/E.h").find("brdfbake_E["), std::string::npos);
   EXPECT_NE(test::Slurp(dir + "/E.glsl").find("brdfbake_E("), std::string::npos);
   // A file of every table is its preset's to write.
-  OutputFile all{dir + "/all.h", -1};
+  OutputFile all;
+  all.path = dir + "/all.h";
+  all.table = -1;
   EXPECT_THROW(WriteOutputFile(all, t, im, ""), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(dir + "/all.h"));
 }

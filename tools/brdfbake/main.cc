@@ -244,7 +244,9 @@ struct ModelOptions {
 
   // `mirror_ok`: --roughness 0 (alpha 0, a mirror, as the tables hold it at
   // r = 0: E = 1) is accepted.
-  brdfbake::ModelParams Get(bool mirror_ok = false) const {
+  // `ior_ok`: --ior names the dielectric shape of gen_schlick_ior_s (eval)
+  // rather than a ggx-glass interface.
+  brdfbake::ModelParams Get(bool mirror_ok = false, bool ior_ok = false) const {
     brdfbake::ModelParams p;
     p.kind = brdfbake::ParseModelKind(model);
     if (Given(app, "--gamma") && p.kind != brdfbake::ModelKind::kStudentT) {
@@ -259,7 +261,7 @@ struct ModelOptions {
       Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
     }
     p.visibility = brdfbake::ParseSheenVisibility(visibility);
-    if (Given(app, "--ior") && p.kind != brdfbake::ModelKind::kGgxGlass) {
+    if (Given(app, "--ior") && p.kind != brdfbake::ModelKind::kGgxGlass && !ior_ok) {
       Bad("--ior: model " + model + " has no index of refraction (only ggx-glass does; the Fresnel "
           "factor's is --eta)");
     }
@@ -1085,7 +1087,7 @@ int RunStabilityCommand(int samples, const std::string& seed_text) {
 struct EvalOptions {
   ModelOptions model;
   FresnelOptions fresnel;
-  std::string quantity = "D", masking = "height-correlated", sweep = "mu";
+  std::string quantity = "D", masking = "height-correlated", sweep = "mu", exponent = "5";
   EvalRequest req;
   double phi_deg = 0, phi_o_deg = 0;
   std::string grid_kind, grid_out, target = "best";
@@ -1098,7 +1100,12 @@ struct EvalOptions {
     model.Add(eval);
     fresnel.Add(eval);
     eval->add_option("--quantity,-q", quantity,
-                     "D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg (comma-separated)")
+                     "D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s (at --exponent), "
+                     "gen_schlick_ior_s (at --ior) (comma-separated)")
+        ->capture_default_str();
+    eval->add_option("--exponent", exponent,
+                     "gen_schlick_s: the Schlick exponent, s_h = (1 - wo.h)^exponent, in [0, inf] (baked "
+                     "within [0.0505, 49995], as the tables clamp it)")
         ->capture_default_str();
     eval->add_option("--masking", masking, "height-correlated | separable")->capture_default_str();
     eval->add_option("--sweep", sweep, "mu (cos theta), theta (degrees), roughness or none")
@@ -1192,7 +1199,15 @@ int RunEval(const EvalOptions& o) {
   if (tables_only && Given(o.app, "--phi")) {
     Bad("--phi: the table quantities E, dfg and E_avg have no swept direction (the view is --mu-o, --phi-o)");
   }
-  req.model = o.model.Get(tables_only);
+  const bool ior_s = std::find(req.quantities.begin(), req.quantities.end(), "gen_schlick_ior_s") !=
+                     req.quantities.end();
+  if (Given(o.app, "--exponent")) {
+    if (std::find(req.quantities.begin(), req.quantities.end(), "gen_schlick_s") == req.quantities.end()) {
+      Bad("--exponent: applies to the quantity gen_schlick_s only");
+    }
+  }
+  req.exponent = ParseNumberOrInf("--exponent", o.exponent);
+  req.model = o.model.Get(tables_only, ior_s);
   req.fresnel = o.fresnel.Get();
   req.masking = ParseMasking(o.masking);
   req.sweep = o.sweep;
