@@ -20,9 +20,11 @@
 namespace brdfbake {
 
 // What an output channel holds.
-// kS: the factor s of a gen_schlick table.
-enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kS, kZero, kOne };
-const char* SourceName(Source s);  // "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "s", "0", "1"
+// kS: the factor s of a gen_schlick table; kF82Bias: the term of an
+// f82_bias table.
+enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kS, kF82Bias, kZero, kOne };
+// "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "s", "f82_bias", "0", "1"
+const char* SourceName(Source s);
 
 const char* PixelTypeName(PixelType p);  // float, half, unorm16, unorm8
 

@@ -30,7 +30,11 @@ namespace brdfbake {
 // Schlick exponent (s_h = (1 - wo.h)^exponent) or x ior (s_h = (F(ior,
 // wo.h) - F0) / (1 - F0), the dielectric shape): Cycles'
 // table_ggx_gen_schlick_s and table_ggx_gen_schlick_ior_s.
-enum class TableKind { kE, kEavg, kDfg, kSelNorm, kGenSchlickS, kGenSchlickIorS };
+// kF82Bias (model ggx): the F82-tint term of a GGX reflection lobe, the
+// integral of (f / F) wo.h (1 - wo.h)^6 cos(theta_i) over mu x roughness
+// ([Hoffman19]; rules/glass/gen_schlick.h): the third channel of Blender
+// EEVEE's brdf_ggx.
+enum class TableKind { kE, kEavg, kDfg, kSelNorm, kGenSchlickS, kGenSchlickIorS, kF82Bias };
 
 inline constexpr double kInfinity = std::numeric_limits<double>::infinity();
 inline constexpr double kHalfPi = 1.5707963267948966;
@@ -191,6 +195,7 @@ enum class Meaning {
   kSelIntegral,   // sel_norm: the integral N of the squared ellipsoidal lobe
   kSelRatio,      // sel_norm: N / (4 pi alpha_x alpha_y)
   kS,             // gen_schlick: the factor s
+  kF82Bias,       // f82_bias: the F82-tint term
   kError,         // the integrator's error estimate per texel
 };
 // As the files' brdfbake.channels name it: E, 1-E, E_avg, 1-E_avg,

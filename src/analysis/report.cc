@@ -252,7 +252,7 @@ void ValidateReportSpec(const ReportSpec& spec) {
   if (spec.repeats < 1 || spec.repeats > 100) {
     Bad("{repeats} must be in [1, 100]");
   }
-  if (spec.table.Glass() || spec.table.GenSchlick()) {
+  if (spec.table.Glass() || spec.table.GenSchlick() || spec.table.table == TableKind::kF82Bias) {
     throw std::invalid_argument(std::string("report: ") +
                                 (spec.table.Glass() ? "ggx-glass" : TableName(spec.table.table)) +
                                 " has one integrator (the quadrature); its claims are checked by the tests "

@@ -231,6 +231,21 @@ TexelEstimate GenSchlickTexel(const BakeSpec& spec, double alpha, double mu, con
   return v;
 }
 
+// f82_bias: the F82-tint term at one texel by the visible-normal rule of
+// rules/glass/gen_schlick.h; below alpha 1e-4 the mirror, b(mu).
+TexelEstimate F82Texel(const BakeSpec& spec, double alpha, double mu) {
+  TexelEstimate v;
+  const double m = std::max(mu, kMuMin);
+  if (alpha < kMinAlpha<double>) {
+    v.e = F82TintWeight(m);
+    return v;
+  }
+  const RuleResult r = F82TintBias(alpha, spec.masking, m, spec.tolerance, spec.EffectiveSamples());
+  v.e = r.value;
+  v.err_e = r.error;
+  return v;
+}
+
 // The shape of s_h in slice k of a gen_schlick table: the exponent axis'
 // value or the dielectric shape at the ior axis' value, each clamped.
 GenSchlickShape GenSchlickSlice(const BakeSpec& spec, int k) {
@@ -296,6 +311,11 @@ std::string ModelJson(const BakeSpec& spec) {
     return j.dump();
   }
   j["alpha"] = "roughness^2";
+  if (spec.table == TableKind::kF82Bias) {
+    j["definition"] =
+        "isotropic GGX reflection lobe (F = 1); its energy weighted by wo.h (1 - wo.h)^6, the "
+        "F82 tint's shape ([Hoffman19]), taken over the visible normals ([Heitz18] eq. 3)";
+  }
   if (spec.GenSchlick()) {
     j["definition"] = "isotropic GGX reflection lobe; s averages s_h(wo.h) over its visible normals "
                       "([Heitz18] eq. 3), reflections below the surface counting 0 ([Cycles]'s "
@@ -386,6 +406,18 @@ std::string IntegratorJson(const BakeSpec& spec) {
                  "Gauss-Kronrod 15 in x graded towards 0 and in phi graded towards the peak of g, "
                  "worst pieces bisected; the tolerance applies to G",
                  "sum of |K15 - G7| of both rules");
+        break;
+      }
+      if (spec.table == TableKind::kF82Bias) {
+        describe(
+            "the visible normals of wo in the stretched configuration of [Heitz18]: polar "
+            "angles (theta, phi) about the view on the projected lune, each ray cut where the "
+            "reflection reaches the horizon (src/rules/glass/gen_schlick.h)",
+            "Gauss-Kronrod 15 over phi on pieces bisected worst first; along each ray "
+            "Gauss-Kronrod 15 on pieces graded towards the horizon and the lune's edge (double "
+            "scalar code)",
+            "3 x the sum over the phi pieces of |K15 - G7|, plus the rays' own sums carried "
+            "through the Kronrod weights");
         break;
       }
       if (spec.GenSchlick()) {
@@ -576,6 +608,8 @@ std::string IntegratorJson(const BakeSpec& spec) {
                       : "alpha < 1e-4 is the smooth interface: E = 1 - (1 - mu)^5";
   } else if (spec.GenSchlick()) {
     j["mirror"] = "alpha < 1e-4 is a mirror: s = s_h(mu)";
+  } else if (spec.table == TableKind::kF82Bias) {
+    j["mirror"] = "alpha < 1e-4 is a mirror: b = mu (1 - mu)^6";
   } else if (spec.model.kind != ModelKind::kDisneyDiffuse) {
     j["mirror"] = "alpha < 1e-4 is a mirror: E = 1";
   }
@@ -1165,9 +1199,11 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
         const int ry = y % ax_r.size, z = y / ax_r.size;
         const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
         v = spec.GenSchlick() ? GenSchlickTexel(spec, r * r, mu, GenSchlickSlice(spec, z))
-                              : Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+            : spec.table == TableKind::kF82Bias
+                ? F82Texel(spec, r * r, mu)
+                : Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       }
-      if (spec.table == TableKind::kE || spec.GenSchlick()) {
+      if (spec.table == TableKind::kE || spec.GenSchlick() || spec.table == TableKind::kF82Bias) {
         const double e = std::clamp(v.e, 0.0, e_max);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;
         error[idx] = v.err_e;
@@ -1274,6 +1310,10 @@ TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
           std::to_string(slice.size) + " slices)");
     }
     const TexelEstimate v = GenSchlickTexel(spec, AlphaFromRoughness(roughness), mu, GenSchlickSlice(spec, 0));
+    return {v.e, 0, 0, v.err_e, 0, 0};
+  }
+  if (spec.table == TableKind::kF82Bias) {
+    const TexelEstimate v = F82Texel(spec, AlphaFromRoughness(roughness), mu);
     return {v.e, 0, 0, v.err_e, 0, 0};
   }
   const TexelEstimate v = Texel(spec, AlphaFromRoughness(roughness), mu, Mix64(spec.seed ^ texel_seed));

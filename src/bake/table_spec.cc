@@ -33,6 +33,7 @@ const char* TableName(TableKind t) {
     case TableKind::kSelNorm: return "sel_norm";
     case TableKind::kGenSchlickS: return "gen_schlick_s";
     case TableKind::kGenSchlickIorS: return "gen_schlick_ior_s";
+    case TableKind::kF82Bias: return "f82_bias";
   }
   return "E";
 }
@@ -67,8 +68,10 @@ TableKind ParseTable(const std::string& s) {
   if (s == "sel_norm") return TableKind::kSelNorm;
   if (s == "gen_schlick_s") return TableKind::kGenSchlickS;
   if (s == "gen_schlick_ior_s") return TableKind::kGenSchlickIorS;
-  Bad("{table}: unknown table '" + s + "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s or gen_schlick_ior_s)" +
-      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s"},
+  if (s == "f82_bias") return TableKind::kF82Bias;
+  Bad("{table}: unknown table '" + s +
+      "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s, gen_schlick_ior_s or f82_bias)" +
+      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s", "f82_bias"},
                  {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}, {"gen_schlick", "gen_schlick_s"}}));
 }
 Warp ParseWarp(const std::string& s) {
@@ -214,6 +217,7 @@ const char* MeaningName(Meaning m) {
     case Meaning::kSelIntegral: return "sel.integral";
     case Meaning::kSelRatio: return "sel.ratio";
     case Meaning::kS: return "s";
+    case Meaning::kF82Bias: return "f82_bias";
     case Meaning::kError: return "error";
   }
   return "E";
@@ -252,6 +256,13 @@ const char* Definition(Meaning meaning, const BakeSpec& spec) {
   if (meaning == Meaning::kS && spec.table == TableKind::kGenSchlickS) {
     return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over the visible normals h of a GGX "
            "reflection lobe (r the reflection): the generalized Schlick Fresnel is mix(F0, F90, s); no masking weight";
+  }
+  if (meaning == Meaning::kF82Bias) {
+    return spec.masking == Masking::kSeparable
+               ? "b(mu) = integral of (f / F) b(wo.h) cos(theta_i) dwi, b(c) = c (1 - c)^6 ([Hoffman19]'s F82 "
+                 "tint: F = F0 scale + F90 bias - F82_tint b), GGX with separable masking"
+               : "b(mu) = integral of (f / F) b(wo.h) cos(theta_i) dwi, b(c) = c (1 - c)^6 ([Hoffman19]'s F82 "
+                 "tint: F = F0 scale + F90 bias - F82_tint b), GGX with height-correlated masking";
   }
   if (meaning == Meaning::kS) {
     return "s(mu) = integral D_wo(h) clamp((F(ior, wo.h) - F0) / (1 - F0), 0, 1) 1{r.z > 0} dh over the "
@@ -316,6 +327,7 @@ TableShape ShapeOf(const BakeSpec& spec) {
     case TableKind::kSelNorm: meanings = {Meaning::kSelIntegral, Meaning::kSelRatio}; break;
     case TableKind::kGenSchlickS:
     case TableKind::kGenSchlickIorS: meanings = {Meaning::kS}; break;
+    case TableKind::kF82Bias: meanings = {Meaning::kF82Bias}; break;
   }
   s.value_channels = int(meanings.size());
   if (spec.error_channel) meanings.push_back(Meaning::kError);
@@ -381,8 +393,8 @@ std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec) {
   // The rules of these tables have no sampling counterpart: their
   // integrands are integrated over their own domains (slope planes, the
   // lobe's sphere, both sides of an interface) or per slice.
-  if (spec.GenSchlick() || spec.table == TableKind::kSelNorm || m == ModelKind::kGgxGlass ||
-      m == ModelKind::kEllipsoid || m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
+  if (spec.GenSchlick() || spec.table == TableKind::kSelNorm || spec.table == TableKind::kF82Bias ||
+      m == ModelKind::kGgxGlass || m == ModelKind::kEllipsoid || m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
     return {IntegratorKind::kQuadrature};
   }
   return {IntegratorKind::kQuadrature, IntegratorKind::kQmc, IntegratorKind::kMc, IntegratorKind::kEngine};
@@ -408,6 +420,13 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           spec.model.name() + "')");
     }
     if (spec.complement) Bad("{complement}: " + table + " stores s itself");
+  }
+  if (spec.table == TableKind::kF82Bias) {
+    if (m != ModelKind::kGgx) {
+      Bad("{model}: f82_bias is the F82-tint term of a GGX reflection lobe (give {model} ggx; got '" +
+          std::string(spec.model.name()) + "')");
+    }
+    if (spec.complement) Bad("{complement}: f82_bias stores the term itself");
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
     Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +
@@ -438,7 +457,9 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (aniso && spec.table == TableKind::kDfg) Bad("{table}: ggx-aniso bakes E and E_avg (no dfg)");
   const std::vector<IntegratorKind> integrators = TableIntegrators(spec);
   if (std::find(integrators.begin(), integrators.end(), spec.integrator) == integrators.end()) {
-    Bad("{integrator}: " + std::string(gen_schlick || sel ? TableName(spec.table) : spec.model.name()) +
+    Bad("{integrator}: " +
+        std::string(gen_schlick || sel || spec.table == TableKind::kF82Bias ? TableName(spec.table)
+                                                                            : spec.model.name()) +
         " tables are baked with the quadrature only (got " + IntegratorName(spec.integrator) + ")");
   }
   // The view and lobe axes here; the parameter axes below.

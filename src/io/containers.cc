@@ -55,6 +55,7 @@ struct SourceReader {
   const Channel* scale = FindMeaning(t, Meaning::kDfgScale);
   const Channel* bias = FindMeaning(t, Meaning::kDfgBias);
   const Channel* gen_schlick = FindMeaning(t, Meaning::kS);
+  const Channel* f82 = FindMeaning(t, Meaning::kF82Bias);
 
   bool Has(Source s) const {
     switch (s) {
@@ -65,6 +66,7 @@ struct SourceReader {
       case Source::kScale: return scale != nullptr;
       case Source::kBias: return bias != nullptr;
       case Source::kS: return gen_schlick != nullptr;
+      case Source::kF82Bias: return f82 != nullptr;
       case Source::kZero:
       case Source::kOne: return true;
     }
@@ -89,6 +91,7 @@ struct SourceReader {
       case Source::kScale: return scale->values[i];
       case Source::kBias: return bias->values[i];
       case Source::kS: return gen_schlick->values[i];
+      case Source::kF82Bias: return f82->values[i];
       case Source::kZero: return 0.0;
       case Source::kOne: return 1.0;
     }
@@ -105,6 +108,7 @@ Source SourceOfMeaning(Meaning m) {
     case Meaning::kDfgScale: return Source::kScale;
     case Meaning::kDfgBias: return Source::kBias;
     case Meaning::kS: return Source::kS;
+    case Meaning::kF82Bias: return Source::kF82Bias;
     case Meaning::kSelIntegral:
     case Meaning::kSelRatio:
     case Meaning::kError: break;
@@ -398,6 +402,7 @@ const char* SourceName(Source s) {
     case Source::kScale: return "dfg.scale";
     case Source::kBias: return "dfg.bias";
     case Source::kS: return "s";
+    case Source::kF82Bias: return "f82_bias";
     case Source::kZero: return "0";
     case Source::kOne: return "1";
   }

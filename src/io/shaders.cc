@@ -225,6 +225,9 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   } else if (t.spec.GenSchlick()) {
     type = syn.f1();
     result = get("s");
+  } else if (t.spec.table == TableKind::kF82Bias) {
+    type = syn.f1();
+    result = get("f82_bias");
   } else if (dfg) {
     type = syn.f2();
     std::string scale = get("dfg.scale"), bias = get("dfg.bias"), e = get("E");

@@ -59,6 +59,9 @@ std::vector<BakeSpec> Specs() {
     sel.error_channel = true;
     specs.push_back(sel);
   }
+  BakeSpec f82 = Small(TableKind::kF82Bias, ModelKind::kGgx);
+  f82.error_channel = true;
+  specs.push_back(f82);
   if (ModelBuilt(ModelKind::kCharlie)) specs.push_back(Small(TableKind::kEavg, ModelKind::kCharlie));
   if (ModelBuilt(ModelKind::kGgxGlass)) {
     specs.push_back(Small(TableKind::kE, ModelKind::kGgxGlass));
@@ -145,7 +148,8 @@ TEST(TableSpecTest, ChannelNamesSortInTheirOrder) {
 TEST(TableSpecTest, IntegratorsAllowed) {
   EXPECT_EQ(TableIntegrators(Small(TableKind::kDfg, ModelKind::kGgx)).size(), 4u);
   for (BakeSpec s : {Small(TableKind::kE, ModelKind::kGgxGlass), Small(TableKind::kE, ModelKind::kGgxAniso),
-                     Small(TableKind::kGenSchlickS, ModelKind::kGgx), Small(TableKind::kSelNorm, ModelKind::kSel)}) {
+                     Small(TableKind::kGenSchlickS, ModelKind::kGgx), Small(TableKind::kSelNorm, ModelKind::kSel),
+                     Small(TableKind::kF82Bias, ModelKind::kGgx)}) {
     EXPECT_EQ(TableIntegrators(s), std::vector<IntegratorKind>{IntegratorKind::kQuadrature});
     if (!ModelBuilt(s.model.kind)) continue;  // the build's refusal comes first
     s.integrator = IntegratorKind::kQmc;

@@ -170,6 +170,16 @@ std::vector<Case> KindCases() {
     cases.push_back({"ellipsoid_E", "", 0, s});
   }
   {
+    // The F82-tint term, separable masking, as EEVEE's axes warp mu.
+    BakeSpec s;
+    s.table = TableKind::kF82Bias;
+    s.masking = Masking::kSeparable;
+    s.mu.size = 9;
+    s.mu.warp = Warp::kOneMinusSquare;
+    s.roughness.size = 7;
+    cases.push_back({"f82_bias", "", 0, s});
+  }
+  {
     BakeSpec s;
     s.table = TableKind::kDfg;
     centres(s.mu, 16);
@@ -258,6 +268,7 @@ std::vector<double> ModelLookup(const Table& t, const Image& im, const std::vect
     return {scale, bias};
   }
   if (t.spec.GenSchlick()) return {s[find("s")]};
+  if (t.spec.table == TableKind::kF82Bias) return {s[find("f82_bias")]};
   const bool eavg = t.spec.table == TableKind::kEavg;
   const int direct = find(eavg ? "E_avg" : "E");
   return {direct >= 0 ? s[direct] : 1 - s[find(eavg ? "1-E_avg" : "1-E")]};
@@ -461,10 +472,12 @@ void CheckResults(const Case& c, const Baked& b, const Points& p, const std::vec
         flat += stride * size_t(p.entries[i][k]);
         stride *= size_t(t.axes[k].size);
       }
-      // dfg: (scale, bias); E, E_avg, s: the value (1 - a stored complement).
+      // dfg: (scale, bias); E, E_avg, s, f82_bias: the value (1 - a stored
+      // complement).
       for (const Channel& ch : t.channels) {
-        if (ch.meaning == brdfbake::Meaning::kDfgScale || ch.meaning == brdfbake::Meaning::kDfgBias || ch.meaning == brdfbake::Meaning::kE ||
-            ch.meaning == brdfbake::Meaning::kEavg || ch.meaning == brdfbake::Meaning::kS) {
+        if (ch.meaning == brdfbake::Meaning::kDfgScale || ch.meaning == brdfbake::Meaning::kDfgBias ||
+            ch.meaning == brdfbake::Meaning::kE || ch.meaning == brdfbake::Meaning::kEavg ||
+            ch.meaning == brdfbake::Meaning::kS || ch.meaning == brdfbake::Meaning::kF82Bias) {
           stored.push_back(ch.values[flat]);
         }
         if (ch.meaning == brdfbake::Meaning::kOneMinusE || ch.meaning == brdfbake::Meaning::kOneMinusEavg) stored.push_back(1 - ch.values[flat]);

@@ -1,7 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The generalized Schlick factor (rules/glass/gen_schlick.h) against an
+// The generalized Schlick factor and the F82-tint term
+// (rules/glass/gen_schlick.h) against an
 // independent integration over the half vector (tests/reference/
 // reference_albedo.h, tanh-sinh over theta_h and the arc of valid
 // azimuths, sharing no code with the rule, which integrates over the
@@ -97,6 +98,69 @@ TEST(GenSchlickTest, ClaimsBoundTheErrorOverAGrid) {
         worst = std::max(worst, err / got.error);
         EXPECT_LE(err, got.error + fine.error)
             << "r " << r << " mu " << mu << " exponent " << shape.exponent << " eta " << shape.eta;
+        EXPECT_TRUE(std::isfinite(got.value));
+      }
+    }
+  }
+  std::printf("worst true error / claim %.3g\n", worst);
+}
+
+// The F82-tint term b(mu) = integral D G2 (wo.h) / mu b(wo.h) over the
+// half vector, both maskings: the same independent integration, cut at h =
+// wo where b's factor (1 - wo.h)^6 is smooth but its derivative scale is.
+double ReferenceF82(double alpha, Masking masking, double mu, double tol) {
+  const GgxNdf<double> ndf(alpha);
+  const double mu_o = std::max(mu, 1e-7);
+  return ReferenceHalfVectorIntegral(
+      mu_o, tol, 0.0,
+      [&](const Vec3<double>& h, const Vec3<double>& wo, const Vec3<double>& wi, double wo_h) {
+        return ndf.D(h) * G2(ndf, wi, wo, h, masking) * wo_h / wo.z * F82TintWeight(wo_h);
+      },
+      {std::acos(mu_o)});
+}
+
+TEST(F82TintTest, WeightIsCTimesOneMinusCToTheSixth) {
+  EXPECT_DOUBLE_EQ(F82TintWeight(0.3), 0.3 * std::pow(0.7, 6));
+  EXPECT_EQ(F82TintWeight(0.0), 0.0);
+  EXPECT_EQ(F82TintWeight(1.0), 0.0);
+  // Its largest value, at c = 1/7: (1/7) (6/7)^6.
+  EXPECT_NEAR(F82TintWeight(1.0 / 7), std::pow(6.0 / 7, 6) / 7, 1e-16);
+}
+
+// The rule against the independent integration, both maskings, narrow to
+// wide lobes, grazing to normal views; its claim bounds the true error.
+TEST(F82TintTest, AgreesWithIndependentIntegration) {
+  double worst = 0;
+  for (Masking masking : {Masking::kSeparable, Masking::kHeightCorrelated}) {
+    for (double alpha : {0.0225, 0.09, 0.3, 1.0}) {
+      for (double mu : {0.01, 0.1, 0.3, 0.8, 1.0}) {
+        const RuleResult got = F82TintBias(alpha, masking, mu, 1e-7, 4000);
+        const double ref = ReferenceF82(alpha, masking, mu, 1e-11);
+        const double err = std::abs(got.value - ref);
+        worst = std::max(worst, err / got.error);
+        EXPECT_LE(err, got.error + 1e-10) << MaskingName(masking) << " alpha " << alpha << " mu " << mu << ": rule "
+                                          << got.value << " (claim " << got.error << ") reference " << ref;
+        // Below the largest weight (1/7) (6/7)^6 times E <= 1.
+        EXPECT_GE(got.value, 0);
+        EXPECT_LE(got.value, std::pow(6.0 / 7, 6) / 7 + got.error);
+      }
+    }
+  }
+  std::printf("worst true error / claim %.3g\n", worst);
+}
+
+// At the grid's stiff ends (narrow lobes, grazing views) the claim at the
+// tables' tolerance bounds the distance to the rule converged at 1e-11.
+TEST(F82TintTest, ClaimsBoundTheErrorOverAGrid) {
+  double worst = 0;
+  for (Masking masking : {Masking::kSeparable, Masking::kHeightCorrelated}) {
+    for (double r : {0.011, 0.05, 0.2, 0.5, 0.9}) {
+      for (double mu : {1e-4, 0.02, 0.2, 0.6, 0.999}) {
+        const RuleResult got = F82TintBias(r * r, masking, mu, 1e-7, 4000);
+        const RuleResult fine = F82TintBias(r * r, masking, mu, 1e-11, 20000);
+        const double err = std::abs(got.value - fine.value);
+        worst = std::max(worst, err / got.error);
+        EXPECT_LE(err, got.error + fine.error) << MaskingName(masking) << " r " << r << " mu " << mu;
         EXPECT_TRUE(std::isfinite(got.value));
       }
     }

@@ -49,6 +49,7 @@ inline double TextureCoordinate(const Axis& a, double p) {
   }
   if (a.warp == Warp::kSquare) t = std::sqrt(t);
   if (a.warp == Warp::kSqrt) t = t * t;
+  if (a.warp == Warp::kOneMinusSquare) t = 1 - std::sqrt(1 - t);
   return a.placement == Placement::kCenters ? t : (t * (a.size - 1) + 0.5) / a.size;
 }
 

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "brdfbake/models/fresnel.h"
+#include "brdfbake/models/ggx.h"
 #include "rules/glass/glass_albedo_rule.h"
 
 namespace brdfbake {
@@ -42,7 +43,49 @@ struct GenSchlickNodes {
   }
 };
 
+// The integrand cos(theta) sin(theta) b(wo.h) G2(wo, r) / G1(wo) 1{r.z >
+// 0} along a ray (F82TintBias).
+struct F82Nodes {
+  const GlassFrame* frame;
+  GgxNdf<double> ndf;
+  Masking masking;
+  double lambda_o;
+  void operator()(const GlassRay& ray, const double* theta, double* v) const {
+    const GlassFrame& f = *frame;
+    for (int i = 0; i < 15; ++i) {
+      const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
+      const Vec3<double> m = f.M(ct, st, ray.cp, ray.sp);
+      const double len = std::sqrt(Dot(m, m));
+      v[i] = 0;
+      if (!(len > 0) || m.z < 0) continue;
+      const Vec3<double> h = m / len;
+      const double c = std::clamp(f.so * h.x + f.mu * h.z, 0.0, 1.0);
+      const Vec3<double> r = h * (2 * c) - Vec3<double>{f.so, 0, f.mu};
+      if (!(r.z > 0)) continue;
+      const double li = ndf.Lambda(r);
+      // Separable: G1(r); height-correlated: (1 + Lambda(wo)) / (1 +
+      // Lambda(wo) + Lambda(r)).
+      const double g = masking == Masking::kSeparable ? 1 / (1 + li) : (1 + lambda_o) / (1 + lambda_o + li);
+      v[i] = ct * st * F82TintWeight(c) * g;
+    }
+  }
+};
+
 }  // namespace
+
+double F82TintWeight(double c) {
+  c = std::clamp(c, 0.0, 1.0);
+  const double m = 1 - c, m2 = m * m;
+  return c * m2 * m2 * m2;
+}
+
+RuleResult F82TintBias(double alpha, Masking masking, double mu, double tol, int max_pieces) {
+  // eta 1: the reflection's horizon alone (as GenSchlickFactor).
+  const GlassFrame frame(alpha, 1.0, mu);
+  const GgxNdf<double> ndf(alpha);
+  const double lambda_o = ndf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
+  return GlassAlbedoWith(frame, tol, max_pieces, F82Nodes{&frame, ndf, masking, lambda_o});
+}
 
 RuleResult GenSchlickFactor(double alpha, const GenSchlickShape& shape, double mu, double tol,
                             int max_pieces) {

@@ -24,6 +24,7 @@
 #ifndef BRDFBAKE_SRC_RULES_GLASS_GEN_SCHLICK_H_
 #define BRDFBAKE_SRC_RULES_GLASS_GEN_SCHLICK_H_
 
+#include "brdfbake/models/brdf.h"
 #include "quadrature/kronrod.h"
 
 namespace brdfbake {
@@ -43,6 +44,22 @@ double GenSchlickWeight(const GenSchlickShape& shape, double c);
 // 1e-7.
 RuleResult GenSchlickFactor(double alpha, const GenSchlickShape& shape, double mu, double tol,
                             int max_pieces);
+
+// The F82-tint term of a GGX reflection lobe with F = 1: the energy its
+// facets reflect weighted by b(wo.h) = wo.h (1 - wo.h)^6, the shape of the
+// F82 correction of [Hoffman19] (Schlick's Fresnel at the metal's
+// measured reflectance at 82 degrees), as Blender EEVEE's brdf_ggx stores
+// it in its third channel ([Blender], eevee_lut_comp.glsl's metal_bias):
+//   b(mu) = integral of (f / F)(wi, wo) b(wo.h) cos(theta_i) dwi
+//         = integral D_wo(h) b(wo.h) G2(wo, r) / G1(wo) 1{r.z > 0} dh,
+// f the GGX BRDF of width `alpha` (> 0) with `masking`, over the same
+// rays as s above (their pieces graded to the reflection's horizon, where
+// G2 falls to 0). To the absolute tolerance `tol`, at most `max_pieces`
+// pieces over the rays' angle; mu is taken at least 1e-7.
+RuleResult F82TintBias(double alpha, Masking masking, double mu, double tol, int max_pieces);
+
+// b(wo.h) = c (1 - c)^6 at c = wo.h clamped to [0, 1]; the mirror's b(mu).
+double F82TintWeight(double c);
 
 }  // namespace brdfbake
 
