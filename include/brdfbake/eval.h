@@ -31,6 +31,8 @@ namespace brdfbake {
 //               the view wo: the generalized Schlick factor s of a GGX
 //               lobe (bake's tables of that name) at one `exponent`, or at
 //               the dielectric shape of one ior (model.ior in [1, 100])
+//   f82_bias    the view wo: the F82-tint term of a GGX lobe (the table of
+//               that name) with the request's masking
 // Sweeps: "mu" (cos theta), "theta" (degrees), "roughness" (the table
 // quantities only; alpha = r^2, the view at mu_o), or "none" (one row at
 // mu_o and the model's roughness sqrt(alpha), table quantities only).
@@ -54,8 +56,8 @@ const std::vector<std::string>& EvalQuantities();
 // Throws std::invalid_argument (one line, naming the bad input) on bad input.
 void ValidateEvalRequest(const EvalRequest& req);
 
-// True for E, dfg, E_avg, gen_schlick_s and gen_schlick_ior_s (the
-// quantities the tables hold).
+// True for E, dfg, E_avg, gen_schlick_s, gen_schlick_ior_s and f82_bias
+// (the quantities the tables hold).
 bool IsTableQuantity(const std::string& q);
 
 // Writes a header line and `count` rows. Throws on bad input before writing.

@@ -26,18 +26,21 @@ std::string Fmt(double v) {
 }  // namespace
 
 const std::vector<std::string>& EvalQuantities() {
-  static const std::vector<std::string> kQ = {"D", "Lambda", "G1",  "G2",    "brdf",          "pdf",
-                                              "K", "E",      "dfg", "E_avg", "gen_schlick_s", "gen_schlick_ior_s"};
+  static const std::vector<std::string> kQ = {"D",       "Lambda", "G1",  "G2",    "brdf",          "pdf",
+                                              "K",       "E",      "dfg", "E_avg", "gen_schlick_s", "gen_schlick_ior_s",
+                                              "f82_bias"};
   return kQ;
 }
 
 namespace {
 
 bool IsGenSchlick(const std::string& q) { return q == "gen_schlick_s" || q == "gen_schlick_ior_s"; }
+// The GGX lobe's Fresnel-shape tables: one value per view and roughness.
+bool IsFresnelShape(const std::string& q) { return IsGenSchlick(q) || q == "f82_bias"; }
 
 }  // namespace
 
-bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg" || IsGenSchlick(q); }
+bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q == "E_avg" || IsFresnelShape(q); }
 
 void ValidateEvalRequest(const EvalRequest& req) {
   const bool aniso = req.model.kind == ModelKind::kGgxAniso;
@@ -59,9 +62,10 @@ void ValidateEvalRequest(const EvalRequest& req) {
     for (const std::string& k : EvalQuantities()) ok |= q == k;
     if (!ok) {
       Bad("{quantity}: unknown quantity '" + q +
-          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s or gen_schlick_ior_s)");
+          "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s, gen_schlick_ior_s or "
+          "f82_bias)");
     }
-    if (IsGenSchlick(q)) {
+    if (IsFresnelShape(q)) {
       if (req.model.kind != ModelKind::kGgx) {
         Bad("{quantity}: " + q + " is baked for model ggx only (got '" + std::string(req.model.name()) + "')");
       }
@@ -186,6 +190,11 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
     const TexelEstimate v = IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0));
     return "," + Fmt(std::clamp(v.e, 0.0, 1.0)) + "," + Fmt(v.err_e);
   }
+  if (q == "f82_bias") {
+    spec.table = TableKind::kF82Bias;
+    const TexelEstimate v = IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0));
+    return "," + Fmt(std::max(v.e, 0.0)) + "," + Fmt(v.err_e);
+  }
   spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
   const TexelEstimate v =
       ClampToRange(IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0)), StoredEMax(spec));
@@ -216,7 +225,7 @@ void EvalCsv(const EvalRequest& req, std::ostream& out) {
       header << ",dfg_scale,dfg_bias,dfg_error";
     } else if (q == "E_avg") {
       header << ",E_avg,E_avg_error";
-    } else if (IsGenSchlick(q)) {
+    } else if (IsFresnelShape(q)) {
       header << "," << q << "," << q << "_error";
     } else if (q == "brdf" && !grey) {
       header << ",brdf_r,brdf_g,brdf_b";

@@ -147,7 +147,8 @@ TEST(EvalTest, ThetaSweepMatchesMu) {
 
 // eval's gen_schlick_s and gen_schlick_ior_s are the bake's tables at one
 // exponent or ior: the value of every texel of a one-slice table, and its
-// error; a bad exponent or ior is refused naming it.
+// error; f82_bias is the table's texel; a bad exponent or ior is refused
+// naming it.
 TEST(EvalTest, GenSchlickIsTheBakedSlice) {
   for (const char* q : {"gen_schlick_s", "gen_schlick_ior_s"}) {
     const bool exponent = std::string(q) == "gen_schlick_s";
@@ -191,6 +192,28 @@ TEST(EvalTest, GenSchlickIsTheBakedSlice) {
         EXPECT_LE(error, spec.tolerance) << q;
       }
     }
+  }
+  // f82_bias: the table's texel, either masking.
+  for (Masking masking : {Masking::kSeparable, Masking::kHeightCorrelated}) {
+    BakeSpec f82;
+    f82.table = TableKind::kF82Bias;
+    f82.masking = masking;
+    const TexelEstimate want = IntegrateTexel(f82, 0.5, 0.25);
+    EvalRequest req;
+    req.quantities = {"f82_bias"};
+    req.sweep = "none";
+    req.masking = masking;
+    req.mu_o = 0.25;
+    req.model.alpha_x = req.model.alpha_y = 0.25;  // roughness 0.5
+    std::ostringstream out;
+    EvalCsv(req, out);
+    EXPECT_EQ(out.str().substr(0, out.str().find('\n')), "mu,roughness,f82_bias,f82_bias_error");
+    std::istringstream row(out.str().substr(out.str().find('\n') + 1));
+    double mu = 0, rough = 0, value = 0, error = 0;
+    char c;
+    row >> mu >> c >> rough >> c >> value >> c >> error;
+    EXPECT_EQ(value, want.e) << MaskingName(masking);
+    EXPECT_EQ(error, want.err_e);
   }
   EvalRequest bad;
   bad.quantities = {"gen_schlick_s"};

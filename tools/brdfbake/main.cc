@@ -1102,7 +1102,7 @@ struct EvalOptions {
     fresnel.Add(eval);
     eval->add_option("--quantity,-q", quantity,
                      "D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s (at --exponent), "
-                     "gen_schlick_ior_s (at --ior) (comma-separated)")
+                     "gen_schlick_ior_s (at --ior), f82_bias (comma-separated)")
         ->capture_default_str();
     eval->add_option("--exponent", exponent,
                      "gen_schlick_s: the Schlick exponent, s_h = (1 - wo.h)^exponent, in [0, inf] (baked "
