@@ -21,53 +21,48 @@ double GenSchlickWeight(const GenSchlickShape& shape, double c) {
 
 namespace {
 
-// The integrand cos(theta) sin(theta) W(h) along a ray of the lune
-// (glass_albedo_rule.h), W = s_h(wo.h) 1{r.z > 0}.
+// The integrand cos(theta) sin(theta) W(h) 1{r.z > 0} along a ray of the
+// lune (glass_albedo_rule.h) at its 15 angles, r the reflection of wo
+// about h; weight(h, c) is W at c = wo.h.
+template <class Weight>
+void ReflectionNodes(const GlassFrame& f, const GlassRay& ray, const double* theta, double* v, const Weight& weight) {
+  for (int i = 0; i < 15; ++i) {
+    const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
+    const Vec3<double> m = f.M(ct, st, ray.cp, ray.sp);
+    const double len = std::sqrt(Dot(m, m));
+    v[i] = 0;
+    if (!(len > 0) || m.z < 0) continue;
+    const Vec3<double> h = m / len;
+    const double c = std::clamp(f.so * h.x + f.mu * h.z, 0.0, 1.0);
+    // r.z = 2 c h.z - mu.
+    if (!(2 * c * h.z - f.mu > 0)) continue;
+    v[i] = ct * st * weight(h, c);
+  }
+}
+
+// W = s_h(wo.h) (GenSchlickFactor).
 struct GenSchlickNodes {
   const GlassFrame* frame;
   GenSchlickShape shape;
   void operator()(const GlassRay& ray, const double* theta, double* v) const {
-    const GlassFrame& f = *frame;
-    for (int i = 0; i < 15; ++i) {
-      const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
-      const Vec3<double> m = f.M(ct, st, ray.cp, ray.sp);
-      const double len = std::sqrt(Dot(m, m));
-      v[i] = 0;
-      if (!(len > 0) || m.z < 0) continue;
-      const Vec3<double> h = m / len;
-      const double c = std::clamp(f.so * h.x + f.mu * h.z, 0.0, 1.0);
-      // r.z = 2 c h.z - mu.
-      if (!(2 * c * h.z - f.mu > 0)) continue;
-      v[i] = ct * st * GenSchlickWeight(shape, c);
-    }
+    ReflectionNodes(*frame, ray, theta, v, [&](const Vec3<double>&, double c) { return GenSchlickWeight(shape, c); });
   }
 };
 
-// The integrand cos(theta) sin(theta) b(wo.h) G2(wo, r) / G1(wo) 1{r.z >
-// 0} along a ray (F82TintBias).
+// W = b(wo.h) G2(wo, r) / G1(wo) (F82TintBias).
 struct F82Nodes {
   const GlassFrame* frame;
   GgxNdf<double> ndf;
   Masking masking;
   double lambda_o;
   void operator()(const GlassRay& ray, const double* theta, double* v) const {
-    const GlassFrame& f = *frame;
-    for (int i = 0; i < 15; ++i) {
-      const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
-      const Vec3<double> m = f.M(ct, st, ray.cp, ray.sp);
-      const double len = std::sqrt(Dot(m, m));
-      v[i] = 0;
-      if (!(len > 0) || m.z < 0) continue;
-      const Vec3<double> h = m / len;
-      const double c = std::clamp(f.so * h.x + f.mu * h.z, 0.0, 1.0);
-      const Vec3<double> r = h * (2 * c) - Vec3<double>{f.so, 0, f.mu};
-      if (!(r.z > 0)) continue;
-      const double li = ndf.Lambda(r);
+    ReflectionNodes(*frame, ray, theta, v, [&](const Vec3<double>& h, double c) {
+      const double li = ndf.Lambda(h * (2 * c) - Vec3<double>{frame->so, 0, frame->mu});
       // Separable: G1(r); height-correlated: (1 + Lambda(wo)) / (1 +
       // Lambda(wo) + Lambda(r)).
       const double g = masking == Masking::kSeparable ? 1 / (1 + li) : (1 + lambda_o) / (1 + lambda_o + li);
-      v[i] = ct * st * F82TintWeight(c) * g;
-    }
+      return F82TintWeight(c) * g;
+    });
   }
 };
 
