@@ -62,16 +62,16 @@ const char* IntegratorName(IntegratorKind k) {
 }
 
 TableKind ParseTable(const std::string& s) {
-  if (s == "E") return TableKind::kE;
-  if (s == "E_avg") return TableKind::kEavg;
-  if (s == "dfg") return TableKind::kDfg;
-  if (s == "sel_norm") return TableKind::kSelNorm;
-  if (s == "gen_schlick_s") return TableKind::kGenSchlickS;
-  if (s == "gen_schlick_ior_s") return TableKind::kGenSchlickIorS;
-  if (s == "f82_bias") return TableKind::kF82Bias;
-  Bad("{table}: unknown table '" + s +
-      "' (expected E, E_avg, dfg, sel_norm, gen_schlick_s, gen_schlick_ior_s or f82_bias)" +
-      DidYouMean(s, {"E", "E_avg", "dfg", "sel_norm", "gen_schlick_s", "gen_schlick_ior_s", "f82_bias"},
+  static constexpr TableKind kKinds[] = {TableKind::kE,       TableKind::kEavg,        TableKind::kDfg,
+                                         TableKind::kSelNorm, TableKind::kGenSchlickS, TableKind::kGenSchlickIorS,
+                                         TableKind::kF82Bias};
+  std::vector<std::string> names;
+  for (TableKind k : kKinds) {
+    if (s == TableName(k)) return k;
+    names.push_back(TableName(k));
+  }
+  Bad("{table}: unknown table '" + s + "' (expected " + OrList(names) + ")" +
+      DidYouMean(s, names,
                  {{"albedo", "E"}, {"eavg", "E_avg"}, {"brdf_lut", "dfg"}, {"gen_schlick", "gen_schlick_s"}}));
 }
 Warp ParseWarp(const std::string& s) {

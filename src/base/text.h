@@ -135,6 +135,13 @@ inline std::string NearestChoice(const std::string& given, const std::vector<std
   return best;
 }
 
+// "a, b or c": the choices of a message.
+inline std::string OrList(const std::vector<std::string>& names) {
+  std::string list;
+  for (size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return list;
+}
+
 // "; did you mean 'x'?" for NearestChoice x, else "".
 inline std::string DidYouMean(const std::string& given, const std::vector<std::string>& choices,
                               const std::vector<std::pair<std::string, std::string>>& aliases = {}) {

@@ -301,9 +301,7 @@ SheenVisibility ParseSheenVisibility(const std::string& name) {
     if (name == SheenVisibilityName(v)) return v;
     names.push_back(SheenVisibilityName(v));
   }
-  std::string list;
-  for (size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-  Bad("unknown sheen visibility '" + name + "' (expected " + list + ")" +
+  Bad("unknown sheen visibility '" + name + "' (expected " + OrList(names) + ")" +
       DidYouMean(name, names, {{"ashikhmin", "neubelt"}, {"kulla", "conty-kulla"}, {"enterprise", "enterprise-pbr"}}));
 }
 

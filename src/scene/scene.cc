@@ -832,6 +832,15 @@ bool EngineHasGlass(const Preset& preset) {
                      [](const PresetTable& pt) { return pt.spec.model.kind == ModelKind::kGgxGlass; });
 }
 
+// Whether a scene bakes the glass table of `kind` entering or (`inverse`)
+// leaving the medium: always without a preset or under one that ships no
+// glass table (brdfbake's own file), else only where the engine has it.
+bool GlassSlotBaked(const Scene& scene, TableKind kind, bool inverse) {
+  if (scene.engine.preset.empty()) return true;
+  const Preset& preset = FindPreset(scene.engine.preset);
+  return !EngineHasGlass(preset) || EngineTable(preset, kind, ModelKind::kGgxGlass, inverse) != nullptr;
+}
+
 // The preset's table whose layout carries the Charlie sheen E in a channel
 // of its own (Filament's and Godot's cloth, MaterialX's sheen), or nullptr.
 const PresetTable* SheenChannelTable(const Preset& preset) {
@@ -1678,6 +1687,7 @@ std::vector<Slot> PossibleSlots(const Scene& scene) {
   for (const auto& [group, aniso] : groups) {
     for (TableKind k : group == kSheenGroup ? sheen_kinds : IsGlassGroup(group) ? glass_kinds : kinds) {
       if (aniso && k == TableKind::kDfg) continue;
+      if (IsGlassGroup(group) && !GlassSlotBaked(scene, k, group == kGlassInverseGroup)) continue;
       slots.push_back(SlotOf(scene, k, group, aniso));
     }
   }
@@ -1834,8 +1844,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
       const std::string group = inverse ? kGlassInverseGroup : kGlassGroup;
       for (TableKind k : glass_kinds) {
         const std::string label = std::string(TableName(k)) + " " + group;
-        const PresetTable* et = planner.GlassEngine(k, inverse);
-        if (!et && engine_glass) {
+        if (!GlassSlotBaked(scene, k, inverse)) {
           const PresetTable* entering = planner.GlassEngine(k, false);
           const bool two_sided = inverse && entering && entering->spec.ior.warp == Warp::kTwoSided;
           std::string n = std::string(TableName(k)) + " of the glass" +
@@ -1847,6 +1856,7 @@ ScenePlan PlanScene(const Scene& scene, const std::function<void(const std::stri
           plan.notes.push_back(n);
           continue;
         }
+        const PresetTable* et = planner.GlassEngine(k, inverse);
         PlannedTable p = et ? planner.PlanEngineGlass(*et, box, label)
                             : planner.PlanGlass(planner.GlassBase(k, box, inverse), label);
         p.group = group;
