@@ -63,6 +63,8 @@ struct ImageLayout {
 // The default layout of a table: x = mu, y = roughness, the table's own
 // channels (without `error`), its pixel type.
 ImageLayout DefaultLayout(const Table& table);
+// The same from the spec, before its bake (ShapeOf's channels).
+ImageLayout DefaultLayout(const BakeSpec& spec);
 // The same layout for loaders that know only R, G, B and A: the channels
 // renamed R, G, B, A in order and padded to four (B = 0, A = 1); their
 // meanings stay in the file's conventions. Throws std::invalid_argument

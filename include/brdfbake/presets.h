@@ -100,8 +100,14 @@ std::vector<PresetFile> PresetFiles(const Preset& preset, const PresetRun& run);
 Image ArrangePresetTable(const PresetTable& pt, const Table& table, int threads = 0,
                          double tolerance = 0, const ProgressFn& progress = nullptr);
 
-// Writes them (each through an AtomicFile) from the baked tables and their
-// arrangements, one per preset table.
+// Writes file `f` of the preset's tables (through an AtomicFile) from the
+// baked tables and their arrangements, one per preset table: a file of all
+// of them (table -1) in the preset's header form, a table's in its form or
+// its container.
+void WritePresetFile(const Preset& preset, const PresetFile& f, const std::vector<Table>& tables,
+                     const std::vector<Image>& images);
+
+// Writes every file of PresetFiles(preset, run).
 void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vector<Table>& tables,
                       const std::vector<Image>& images);
 

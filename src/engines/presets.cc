@@ -811,40 +811,43 @@ Image ArrangePresetTable(const PresetTable& pt, const Table& table, int threads,
   return ArrangeTables(table, others, pt.layout);
 }
 
+void WritePresetFile(const Preset& preset, const PresetFile& f, const std::vector<Table>& tables,
+                     const std::vector<Image>& images) {
+  if (f.table < 0) {
+    if (preset.header_form == EngineForm::kEnterprisePbrHeader) {
+      WriteFileAtomically(f.path, EnterprisePbrHeader(preset, tables, images));
+      return;
+    }
+    if (preset.header_form == EngineForm::kOpenPbrEnergyArrays) {
+      WriteFileAtomically(f.path, OpenPbrEnergyArrays(preset, tables, images));
+      return;
+    }
+    if (preset.header_form == EngineForm::kEeveeLut) {
+      WriteFileAtomically(f.path, EeveeLut(preset, tables, images));
+      return;
+    }
+    std::vector<std::pair<const Table*, const Image*>> arrays;
+    std::vector<std::string> symbols;
+    for (size_t k = 0; k < preset.tables.size(); ++k) {
+      arrays.push_back({&tables[k], &images[k]});
+      symbols.push_back(preset.tables[k].symbol);
+    }
+    WriteHeader(arrays, symbols, f.path, preset.name);
+    return;
+  }
+  const PresetTable& pt = preset.tables[f.table];
+  const Table& t = tables[f.table];
+  const Image& im = images[f.table];
+  if (!f.lookup && f.container == pt.container && pt.form == EngineForm::kThreeDfgModule) {
+    WriteFileAtomically(f.path, ThreeDfgModule(t, im, preset.name));
+    return;
+  }
+  WriteOutputFile(f, t, im, preset.name);
+}
+
 void WritePresetFiles(const Preset& preset, const PresetRun& run, const std::vector<Table>& tables,
                       const std::vector<Image>& images) {
-  for (const PresetFile& f : PresetFiles(preset, run)) {
-    if (f.table < 0) {
-      if (preset.header_form == EngineForm::kEnterprisePbrHeader) {
-        WriteFileAtomically(f.path, EnterprisePbrHeader(preset, tables, images));
-        continue;
-      }
-      if (preset.header_form == EngineForm::kOpenPbrEnergyArrays) {
-        WriteFileAtomically(f.path, OpenPbrEnergyArrays(preset, tables, images));
-        continue;
-      }
-      if (preset.header_form == EngineForm::kEeveeLut) {
-        WriteFileAtomically(f.path, EeveeLut(preset, tables, images));
-        continue;
-      }
-      std::vector<std::pair<const Table*, const Image*>> arrays;
-      std::vector<std::string> symbols;
-      for (size_t k = 0; k < preset.tables.size(); ++k) {
-        arrays.push_back({&tables[k], &images[k]});
-        symbols.push_back(preset.tables[k].symbol);
-      }
-      WriteHeader(arrays, symbols, f.path, preset.name);
-      continue;
-    }
-    const PresetTable& pt = preset.tables[f.table];
-    const Table& t = tables[f.table];
-    const Image& im = images[f.table];
-    if (!f.lookup && f.container == pt.container && pt.form == EngineForm::kThreeDfgModule) {
-      WriteFileAtomically(f.path, ThreeDfgModule(t, im, preset.name));
-      continue;
-    }
-    WriteOutputFile(f, t, im, preset.name);
-  }
+  for (const PresetFile& f : PresetFiles(preset, run)) WritePresetFile(preset, f, tables, images);
 }
 
 const std::vector<Preset>& Presets() {

@@ -456,15 +456,25 @@ Container ContainerFromPath(const std::string& path) {
       "; bake writes .exr, .h/.hpp (header), .inc (array body), .js/.mjs, .ktx2, .dds or .png");
 }
 
-ImageLayout DefaultLayout(const Table& table) {
+namespace {
+
+// The layout of `channels` (a table's or ShapeOf's) without the error.
+template <class Channels>
+ImageLayout ChannelsLayout(const Channels& channels, bool half) {
   ImageLayout l;
-  for (const Channel& c : table.channels) {
+  for (const auto& c : channels) {
     if (c.meaning == Meaning::kError) continue;
     l.channels.push_back({c.name, SourceOfMeaning(c.meaning)});
   }
-  l.pixel = table.spec.half ? PixelType::kHalf : PixelType::kFloat;
+  l.pixel = half ? PixelType::kHalf : PixelType::kFloat;
   return l;
 }
+
+}  // namespace
+
+ImageLayout DefaultLayout(const Table& table) { return ChannelsLayout(table.channels, table.spec.half); }
+
+ImageLayout DefaultLayout(const BakeSpec& spec) { return ChannelsLayout(ShapeOf(spec).channels, spec.half); }
 
 ImageLayout RgbaLayout(const ImageLayout& layout) {
   if (layout.channels.size() > 4) {

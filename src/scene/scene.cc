@@ -29,6 +29,7 @@
 #include "brdfbake/models/fresnel.h"
 #include "brdfbake/models/slope_ndf.h"
 #include "brdfbake/output_file.h"
+#include "brdfbake/outputs.h"
 #include "brdfbake/probe.h"
 #include "brdfbake/report.h"
 #include "brdfbake/version.h"
@@ -2177,45 +2178,38 @@ std::vector<std::string> WriteScenePlan(const Scene& scene, const ScenePlan& pla
   if (!scene.engine.format.empty()) manifest["engine"]["format"] = scene.engine.format;
   manifest["overrides"] = nlohmann::json::object();
   for (const auto& [option, value] : scene.overrides) manifest["overrides"][option] = value;
-  // Each table's files: its own, then the others that hold it.
-  std::vector<std::string> own(plan.tables.size());
-  std::vector<nlohmann::json> extra(plan.tables.size(), nlohmann::json::array());
+  // The tables in the engine's files (its preset) or their own, through
+  // the one orchestration of outputs.h.
+  OutputSet set;
+  std::vector<Table> tables;
+  for (const PlannedTable& p : plan.tables) tables.push_back(p.table);
   if (!scene.engine.preset.empty()) {
-    const Preset sp = ScenePreset(scene, slots, planned);
-    const PresetRun run = ScenePresetRun(scene, dir);
-    std::vector<Table> tables;
-    std::vector<Image> images;
-    for (size_t i = 0; i < plan.tables.size(); ++i) {
-      tables.push_back(plan.tables[i].table);
-      images.push_back(ArrangePresetTable(sp.tables[i], plan.tables[i].table, plan.tables[i].table.spec.threads));
-    }
-    WritePresetFiles(sp, run, tables, images);
-    for (const PresetFile& f : PresetFiles(sp, run)) {
-      const std::string name = std::filesystem::path(f.path).filename().string();
-      if (f.table < 0) {
-        for (size_t i = 0; i < plan.tables.size(); ++i) {
-          if (sp.tables[i].file.empty()) own[i] = name;
-        }
-      } else if (!f.lookup && own[size_t(f.table)].empty()) {
-        own[size_t(f.table)] = name;
-      } else {
-        extra[size_t(f.table)].push_back(name);
-      }
-    }
+    set = PresetOutputs(ScenePreset(scene, slots, planned), ScenePresetRun(scene, dir));
   } else {
     for (size_t i = 0; i < plan.tables.size(); ++i) {
-      const PlannedTable& p = plan.tables[i];
-      const Image im = ArrangeTable(p.table, p.layout);
-      const std::vector<OutputFile> files = OwnFilesOf(scene, slots[i], dir, int(i));
-      for (const OutputFile& f : files) {
-        WriteOutputFile(f, p.table, im, "");
-        const std::string name = f.path.substr(dir.size() + 1);  // dir + "/" + name
-        if (&f == &files.front()) {
-          own[i] = name;
-        } else {
-          extra[i].push_back(name);
-        }
+      PresetTable pt;
+      pt.spec = plan.tables[i].table.spec;
+      pt.layout = plan.tables[i].layout;
+      set.preset.tables.push_back(pt);
+      for (const OutputFile& f : OwnFilesOf(scene, slots[i], dir, int(i))) set.files.push_back(f);
+    }
+  }
+  WriteOutputs(set, tables, ArrangeOutputs(set, tables));
+  // Each table's files: its own (the first that holds it alone; a
+  // preset's header for a table without a file of its own), then the
+  // others that hold it.
+  std::vector<std::string> own(plan.tables.size());
+  std::vector<nlohmann::json> extra(plan.tables.size(), nlohmann::json::array());
+  for (const OutputFile& f : set.files) {
+    const std::string name = std::filesystem::path(f.path).filename().string();
+    if (f.table < 0) {
+      for (size_t i = 0; i < plan.tables.size(); ++i) {
+        if (set.preset.tables[i].file.empty()) own[i] = name;
       }
+    } else if (!f.lookup && own[size_t(f.table)].empty()) {
+      own[size_t(f.table)] = name;
+    } else {
+      extra[size_t(f.table)].push_back(name);
     }
   }
   manifest["tables"] = nlohmann::json::array();

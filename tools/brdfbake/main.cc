@@ -21,6 +21,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -38,6 +39,7 @@
 #include "brdfbake/grid.h"
 #include "brdfbake/model.h"
 #include "brdfbake/output_file.h"
+#include "brdfbake/outputs.h"
 #include "brdfbake/presets.h"
 #include "brdfbake/report.h"
 #include "brdfbake/scene.h"
@@ -768,6 +770,12 @@ class Progress {
   void Finish() {
     if (shown_) std::fprintf(stderr, "\n");
   }
+  // Finish, then start over for the next stage.
+  void Restart() {
+    Finish();
+    shown_ = false;
+    start_ = std::chrono::steady_clock::now();
+  }
 
  private:
   bool tty_;
@@ -823,28 +831,6 @@ void PrintWrote(const std::string& path, const brdfbake::Table& table, const std
               brdfbake::IntegratorName(table.spec.integrator), table.seconds, claim);
 }
 
-// A table's default array and lookup name: brdfbake_<model>_<table>
-// (brdfbake_ggx_E, brdfbake_ggx_aniso_E_avg), so that two tables' headers
-// can be included together.
-std::string DefaultSymbol(const brdfbake::BakeSpec& spec) {
-  std::string s = std::string("brdfbake_") + spec.model.name() + "_" + brdfbake::TableName(spec.table);
-  for (char& c : s) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return s;
-}
-
-// --symbol must be an identifier in C, C++, JavaScript and the shading
-// languages: a letter or _, then letters, digits or _.
-void CheckSymbol(const std::string& s) {
-  bool ok = !s.empty() && s.size() <= 200 && !std::isdigit(static_cast<unsigned char>(s[0]));
-  for (char c : s) ok &= (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 128) || c == '_';
-  if (!ok) Bad("--symbol: '" + OneLine(s) + "' is not an identifier (a letter or _, then letters, digits or _)");
-  if (s.rfind("gl_", 0) == 0 || s.find("__") != std::string::npos) {
-    Bad("--symbol: '" + s + "' is reserved in GLSL (gl_ prefix or __)");
-  }
-}
-
 // The languages of --shader ("glsl,hlsl"), each once.
 std::vector<brdfbake::ShaderLanguage> ShaderLanguages(const std::string& list) {
   std::vector<brdfbake::ShaderLanguage> langs;
@@ -878,45 +864,17 @@ int RunPreset(const BakeOptions& opts) {
   run.dir = dir;
   run.format = opts.format;
   run.shaders = ShaderLanguages(opts.shader);
-  const std::vector<brdfbake::PresetFile> files = brdfbake::PresetFiles(preset, run);
+  const brdfbake::OutputSet set = brdfbake::PresetOutputs(preset, run);
   MakeOutputDirectory(dir);
-  for (const brdfbake::PresetFile& f : files) brdfbake::CheckOutputPath(f.path);
-
-  std::vector<brdfbake::Table> tables;
-  std::vector<brdfbake::Image> images;
-  tables.reserve(preset.tables.size());
-  images.reserve(preset.tables.size());
-  // Every table's file must fit in memory once its bake is done: checked
-  // for all of them before the first bake.
-  int64_t all_values = 0;
-  size_t held = 0;
-  for (const brdfbake::PresetTable& pt : preset.tables) {
-    all_values += brdfbake::BakeOutputValues(pt.spec);
-    held += brdfbake::BakeOutputBytes(pt.spec) * (1 + pt.with.size());
-    // A model family the build leaves out fails here, before any work.
-    for (const brdfbake::BakeSpec& w : pt.with) brdfbake::ValidateBakeSpec(w);
-  }
-  for (const brdfbake::PresetFile& f : files) {
-    if (!f.lookup) brdfbake::CheckContainerMemory(f.container, all_values, held, f.path);
-  }
-  for (const brdfbake::PresetTable& pt : preset.tables) {
-    brdfbake::BakeSpec spec = pt.spec;
-    spec.threads = opts.threads;
-    if (Given(opts.app, "--tolerance")) spec.tolerance = opts.tolerance;
-    brdfbake::ValidateBakeSpec(spec);
-    Progress progress;
-    tables.push_back(brdfbake::Bake(spec, [&](int64_t d, int64_t n) { progress(d, n); }));
-    progress.Finish();
-    Progress with_progress;
-    images.push_back(brdfbake::ArrangePresetTable(pt, tables.back(), opts.threads,
-                                                  Given(opts.app, "--tolerance") ? opts.tolerance : 0,
-                                                  [&](int64_t d, int64_t n) { with_progress(d, n); }));
-    if (!pt.with.empty()) with_progress.Finish();
-  }
-  brdfbake::WritePresetFiles(preset, run, tables, images);
-  for (const brdfbake::PresetFile& f : files) {
+  brdfbake::CheckOutputs(set);
+  Progress progress;
+  const brdfbake::BakedOutputs baked = brdfbake::BakeOutputs(
+      set, opts.threads, Given(opts.app, "--tolerance") ? std::optional<double>(opts.tolerance) : std::nullopt,
+      [&](int64_t d, int64_t n) { progress(d, n); }, [&] { progress.Restart(); });
+  brdfbake::WriteOutputs(set, baked.tables, baked.images);
+  for (const brdfbake::OutputFile& f : set.files) {
     if (f.table >= 0 && !f.lookup) {
-      PrintWrote(f.path, tables[f.table], f.what, &images[f.table]);
+      PrintWrote(f.path, baked.tables[f.table], f.what, &baked.images[f.table]);
     } else {
       std::printf("wrote %s: %s\n", OneLine(f.path).c_str(), f.what.c_str());
     }
@@ -966,71 +924,33 @@ int RunBake(const BakeOptions& opts) {
     if (Given(opts.app, o)) Bad(std::string(o) + ": applies to scene bakes (bake SCENE -o DIR) and plan");
   }
   if (!opts.preset.empty()) return RunPreset(opts);
-  const brdfbake::BakeSpec spec = opts.Get();
-  const brdfbake::Container container =
-      opts.format.empty() ? brdfbake::ContainerFromPath(opts.output) : brdfbake::ParseContainer(opts.format);
-  if (!opts.format.empty() && brdfbake::ContainerFromPath(opts.output) != container) {
-    Bad("-o: '" + opts.output + "' does not name a " + opts.format + " file");
-  }
-  if (opts.pixel == "unorm16" && container != brdfbake::Container::kDds && container != brdfbake::Container::kPng) {
-    Bad("--pixel unorm16: only the dds and png formats hold unorm16 pixels");
-  }
-  if (opts.pixel == "unorm8" && container != brdfbake::Container::kPng) {
-    Bad("--pixel unorm8: only the png format holds unorm8 pixels");
-  }
-  if (container == brdfbake::Container::kPng && opts.pixel != "unorm8" && opts.pixel != "unorm16") {
-    Bad("-o: png holds unorm8 or unorm16 pixels: give --pixel unorm8 or unorm16 (got " + opts.pixel + ")");
-  }
-  const std::vector<brdfbake::ShaderLanguage> langs = ShaderLanguages(opts.shader);
-  if (spec.table == brdfbake::TableKind::kSelNorm && container != brdfbake::Container::kExr) {
-    Bad("-o: sel_norm tables are written as .exr");
-  }
-  if (!langs.empty()) brdfbake::CheckShaderTable(spec);
+  brdfbake::TableRequest request;
+  request.spec = opts.Get();
+  request.output = opts.output;
+  request.format = opts.format;
+  if (opts.pixel == "unorm16") request.pixel = brdfbake::PixelType::kUnorm16;
+  if (opts.pixel == "unorm8") request.pixel = brdfbake::PixelType::kUnorm8;
+  request.shaders = ShaderLanguages(opts.shader);
   if (opts.channels != "named" && opts.channels != "rgba") {
     Bad("--channels: unknown value '" + opts.channels + "' (expected named or rgba)");
   }
-  const bool rgba = opts.channels == "rgba";
-  if (rgba && spec.table == brdfbake::TableKind::kSelNorm) {
-    Bad("--channels rgba: sel_norm tables are written as their own EXR channels only");
-  }
-  if (rgba && spec.error_channel) {
-    Bad("--channels rgba: the error channel has no place among R, G, B and A; bake it with --channels named");
-  }
-  if (rgba && (container == brdfbake::Container::kHeader || container == brdfbake::Container::kJs ||
-               container == brdfbake::Container::kInc)) {
-    Bad("--channels rgba: applies to the image containers (exr, ktx2, dds), not to " +
-        std::string(brdfbake::ContainerName(container)));
-  }
-  const std::string symbol = opts.symbol.empty() ? DefaultSymbol(spec) : opts.symbol;
-  CheckSymbol(symbol);
-  const bool table_exr = container == brdfbake::Container::kExr && !rgba;
-  const std::vector<brdfbake::OutputFile> files =
-      brdfbake::OwnTableFiles(opts.output, container, table_exr, false, langs, symbol);
+  request.rgba = opts.channels == "rgba";
+  request.symbol = opts.symbol;
+  const brdfbake::BakeSpec& spec = request.spec;
+  const brdfbake::OutputSet set = brdfbake::TableOutputs(request);
   MakeParentDirectory(opts.output);
-  for (const brdfbake::OutputFile& f : files) brdfbake::CheckOutputPath(f.path);
-  const bool arranged = files.size() > 1 || !table_exr;
-  if (arranged) {
-    brdfbake::CheckContainerMemory(container, brdfbake::BakeOutputValues(spec),
-                                   brdfbake::BakeOutputBytes(spec), opts.output);
-  }
+  brdfbake::CheckOutputs(set);
   Progress progress;
-  const brdfbake::Table table = brdfbake::Bake(spec, [&](int64_t d, int64_t t) { progress(d, t); });
+  const brdfbake::BakedOutputs baked =
+      brdfbake::BakeOutputs(set, spec.threads, std::nullopt, [&](int64_t d, int64_t t) { progress(d, t); });
   progress.Finish();
-  brdfbake::Image image;  // the arrangement of a non-EXR container and of the shader lookup
-  if (arranged) {
-    brdfbake::ImageLayout layout = brdfbake::DefaultLayout(table);
-    if (opts.pixel == "unorm16") layout.pixel = brdfbake::PixelType::kUnorm16;
-    if (opts.pixel == "unorm8") layout.pixel = brdfbake::PixelType::kUnorm8;
-    if (rgba) layout = brdfbake::RgbaLayout(layout);
-    image = brdfbake::ArrangeTable(table, layout);
-  }
-  for (const brdfbake::OutputFile& f : files) {
-    brdfbake::WriteOutputFile(f, table, image, "");
+  brdfbake::WriteOutputs(set, baked.tables, baked.images);
+  for (const brdfbake::OutputFile& f : set.files) {
     if (f.lookup) {
       std::printf("wrote %s: %s lookup %s\n", OneLine(f.path).c_str(), brdfbake::ShaderLanguageName(f.language),
-                  symbol.c_str());
+                  f.symbol.c_str());
     } else {
-      PrintWrote(f.path, table, brdfbake::TableName(spec.table), table_exr ? nullptr : &image);
+      PrintWrote(f.path, baked.tables[0], brdfbake::TableName(spec.table), f.table_exr ? nullptr : &baked.images[0]);
     }
   }
   if (spec.roughness.placement == brdfbake::Placement::kEdges) {
