@@ -19,11 +19,27 @@
 
 namespace brdfbake {
 
-// What an output channel holds.
-// kS: the factor s of a gen_schlick table; kF82Bias: the term of an
-// f82_bias table.
-enum class Source { kE, kOneMinusE, kEavg, kOneMinusEavg, kScale, kBias, kS, kF82Bias, kZero, kOne };
-// "E", "1-E", "E_avg", "1-E_avg", "dfg.scale", "dfg.bias", "s", "f82_bias", "0", "1"
+// What an output channel holds: a channel of the table by its meaning, or
+// the constant 0 or 1. A channel source has the value of its Meaning, so
+// every meaning is a source (SourceOfMeaning) without an enumerator of its
+// own; the enumerators name the ones layouts pick. E and 1-E (E_avg and
+// 1-E_avg) each come from the other too, and E from dfg.scale + dfg.bias.
+enum class Source : int {
+  kE = int(Meaning::kE),
+  kOneMinusE = int(Meaning::kOneMinusE),
+  kEavg = int(Meaning::kEavg),
+  kOneMinusEavg = int(Meaning::kOneMinusEavg),
+  kScale = int(Meaning::kDfgScale),
+  kBias = int(Meaning::kDfgBias),
+  kS = int(Meaning::kS),  // the factor s of a gen_schlick table
+  kZero = kMeaningCount,
+  kOne,
+};
+// The source of a table's channel of meaning m; throws a ParameterError for
+// the meanings no image holds (sel_norm's, the error).
+Source SourceOfMeaning(Meaning m);
+// A channel source's MeaningName ("E", "dfg.scale", "s", "f82_bias"), "0"
+// or "1".
 const char* SourceName(Source s);
 
 const char* PixelTypeName(PixelType p);  // float, half, unorm16, unorm8

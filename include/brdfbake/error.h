@@ -33,6 +33,10 @@ class ParameterError : public std::invalid_argument {
 // GridRequest's and the report's fields and the output's settings.
 bool IsParameterName(const std::string& name);
 
+// A marked text (an error's, or help text naming parameters) with each
+// marked parameter as spell(name).
+std::string SpellParameters(const std::string& marked, const std::function<std::string(const std::string&)>& spell);
+
 // e's message with its marks (ParameterError) or as it is.
 std::string ErrorText(const std::exception& e);
 

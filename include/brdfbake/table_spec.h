@@ -78,6 +78,10 @@ enum class Placement { kCenters, kEdges };
 enum class IntegratorKind { kQuadrature, kQmc, kMc, kEngine };
 
 const char* TableName(TableKind t);
+// Every table kind's name with a note where it needs one, for the command
+// line's help: "E | E_avg | dfg | sel_norm (with {model} sel) | ...", the
+// parameters marked as in error messages (error.h).
+std::string TableKindsHelp();
 const char* WarpName(Warp w);
 const char* PlacementName(Placement p);
 const char* IntegratorName(IntegratorKind k);
@@ -196,8 +200,9 @@ enum class Meaning {
   kSelRatio,      // sel_norm: N / (4 pi alpha_x alpha_y)
   kS,             // gen_schlick: the factor s
   kF82Bias,       // f82_bias: the F82-tint term
-  kError,         // the integrator's error estimate per texel
+  kError,         // the integrator's error estimate per texel (the last)
 };
+inline constexpr int kMeaningCount = int(Meaning::kError) + 1;
 // As the files' brdfbake.channels name it: E, 1-E, E_avg, 1-E_avg,
 // dfg.scale, dfg.bias, sel.integral, sel.ratio, s, error.
 const char* MeaningName(Meaning m);

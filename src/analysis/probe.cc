@@ -99,8 +99,11 @@ int AxisIndex(const Table& t, const char* name) {
 
 std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptions& o) {
   const BakeSpec& s = t.spec;
-  const bool supported = (s.table == TableKind::kE || s.table == TableKind::kEavg || s.table == TableKind::kDfg) &&
-                         (s.model.kind != ModelKind::kEllipsoid);
+  // ExactTableValues knows E, E_avg, dfg and the tables of one quantity
+  // over mu x roughness (f82_bias); not the slope-plane tables, nor
+  // gen_schlick's slices.
+  const bool supported =
+      s.model.kind != ModelKind::kEllipsoid && s.table != TableKind::kSelNorm && !s.GenSchlick();
   if (!supported) Bad(std::string("lookup error: no probe for ") + TableName(s.table) + " tables of " + s.model.name());
   if (!o.points.empty() && o.points.size() != t.axes.size()) Bad("lookup error: one probe kind per table axis");
   std::vector<std::vector<double>> pos(t.axes.size());
@@ -192,7 +195,8 @@ std::vector<double> ExactTableValues(const Table& t, const std::vector<double>& 
   }
   const double mu = std::max(value("mu", s.mu.min), s.mu.clamp_min);
   const TexelEstimate v = ClampToRange(IntegrateTexel(one, r, mu), e_max);
-  if (s.table == TableKind::kE) {
+  if (s.table != TableKind::kDfg) {
+    // E, or a table of one quantity of its own (f82_bias), in v.e.
     out.push_back(s.complement ? 1 - v.e : v.e);
   } else {
     out.push_back(v.scale);

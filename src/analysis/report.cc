@@ -175,7 +175,9 @@ std::vector<ReportRow> BudgetLadders(const ReportSpec& spec, const Table& ref,
       {IntegratorKind::kMc, "samples", {64, 256, 1024, 4096, 16384}},
       {IntegratorKind::kEngine, "samples", {64, 256, 1024, 4096}},
   };
+  const std::vector<IntegratorKind> allowed = TableIntegrators(spec.table);
   for (const Ladder& ladder : ladders) {
+    if (std::find(allowed.begin(), allowed.end(), ladder.kind) == allowed.end()) continue;
     for (double budget : ladder.budgets) {
       BakeSpec s = spec.table;
       s.integrator = ladder.kind;
@@ -252,11 +254,17 @@ void ValidateReportSpec(const ReportSpec& spec) {
   if (spec.repeats < 1 || spec.repeats > 100) {
     Bad("{repeats} must be in [1, 100]");
   }
-  if (spec.table.Glass() || spec.table.GenSchlick() || spec.table.table == TableKind::kF82Bias) {
+  // The ladders and the interpolation study run over mu x roughness (and
+  // gamma); a table with another axis of its own (ior, exponent) and the
+  // quadrature alone has neither to show.
+  const std::vector<Axis> axes = ShapeOf(spec.table).axes;
+  if (!axes.empty() && ParameterAxis(axes.back()) && !spec.table.HasGammaAxis() &&
+      TableIntegrators(spec.table).size() == 1) {
     throw std::invalid_argument(std::string("report: ") +
                                 (spec.table.Glass() ? "ggx-glass" : TableName(spec.table.table)) +
-                                " has one integrator (the quadrature); its claims are checked by the tests "
-                                "against independent integration");
+                                " has one integrator (the quadrature) and an axis over " + axes.back().name +
+                                " the report does not interpolate; its claims are checked by the tests against "
+                                "independent integration");
   }
 }
 
@@ -278,8 +286,15 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   report.reference_seconds = ref.seconds;
   report.reference_claimed_error = ref.integration_error;
   report.rows = BudgetLadders(spec, ref, say);
+  // The interpolation study probes tables over mu x roughness (and gamma)
+  // against their exact values (probe.h); the slope-plane tables (sel_norm
+  // over alpha_x x alpha_y, the ellipsoid over mu x phi_o) have the
+  // ladder alone.
+  bool plane = true;
+  for (const Axis& a : ShapeOf(spec.table).axes) plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma";
+  if (!plane) say("no interpolation study: the table's axes are not mu x roughness");
   // With a gamma axis, the error of linear lookup between gamma slices.
-  for (int n : spec.interpolation_sizes) {
+  for (int n : plane ? spec.interpolation_sizes : std::vector<int>{}) {
     BakeSpec s = spec.table;
     s.integrator = IntegratorKind::kQuadrature;
     s.tolerance = std::min(s.tolerance, 1e-8);

@@ -1203,7 +1203,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
                 ? F82Texel(spec, r * r, mu)
                 : Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       }
-      if (spec.table == TableKind::kE || spec.GenSchlick() || spec.table == TableKind::kF82Bias) {
+      if (spec.table != TableKind::kDfg) {
+        // E, or a table of one quantity of its own (gen_schlick's s,
+        // f82_bias) in v.e.
         const double e = std::clamp(v.e, 0.0, e_max);  // ClampToRange's E
         v0[idx] = spec.complement ? 1.0 - e : e;
         error[idx] = v.err_e;

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -25,18 +26,64 @@
 
 namespace brdfbake {
 
-const char* TableName(TableKind t) {
-  switch (t) {
-    case TableKind::kE: return "E";
-    case TableKind::kEavg: return "E_avg";
-    case TableKind::kDfg: return "dfg";
-    case TableKind::kSelNorm: return "sel_norm";
-    case TableKind::kGenSchlickS: return "gen_schlick_s";
-    case TableKind::kGenSchlickIorS: return "gen_schlick_ior_s";
-    case TableKind::kF82Bias: return "f82_bias";
+namespace {
+
+// Every table kind in one row: its name, what `--table`'s help says of it
+// (marked parameters), whether the quadrature alone bakes it, and for a
+// term of the GGX lobe alone (gen_schlick, f82_bias) what it is and what
+// it stores in place of a complement.
+struct KindRow {
+  TableKind kind;
+  const char* name;
+  const char* help;  // "" or a note after the name; rows with one note share it
+  bool quadrature_only;
+  const char* ggx_term;  // nullptr for the tables of every model
+  const char* stores;
+};
+
+constexpr KindRow kKindRows[] = {
+    {TableKind::kE, "E", "", false, nullptr, nullptr},
+    {TableKind::kEavg, "E_avg", "", false, nullptr, nullptr},
+    {TableKind::kDfg, "dfg", "", false, nullptr, nullptr},
+    {TableKind::kSelNorm, "sel_norm", "with {model} sel", true, nullptr, nullptr},
+    {TableKind::kGenSchlickS, "gen_schlick_s",
+     "the generalized Schlick factor s of GGX over mu x roughness x exponent or ior", true,
+     "the Fresnel factor of a GGX reflection lobe", "s itself"},
+    {TableKind::kGenSchlickIorS, "gen_schlick_ior_s",
+     "the generalized Schlick factor s of GGX over mu x roughness x exponent or ior", true,
+     "the Fresnel factor of a GGX reflection lobe", "s itself"},
+    {TableKind::kF82Bias, "f82_bias",
+     "GGX's F82-tint term, wo.h (1 - wo.h)^6 weighting its energy, over mu x roughness", true,
+     "the F82-tint term of a GGX reflection lobe", "the term itself"},
+};
+
+const KindRow& RowOf(TableKind t) {
+  for (const KindRow& r : kKindRows) {
+    if (r.kind == t) return r;
   }
-  return "E";
+  return kKindRows[0];
 }
+
+}  // namespace
+
+const char* TableName(TableKind t) { return RowOf(t).name; }
+
+std::string TableKindsHelp() {
+  std::string help;
+  for (size_t k = 0; k < std::size(kKindRows); ++k) {
+    const KindRow& r = kKindRows[k];
+    const bool shares_next = k + 1 < std::size(kKindRows) && *r.help && std::string(r.help) == kKindRows[k + 1].help;
+    help += r.name;
+    if (shares_next) {
+      help += ", ";
+      continue;
+    }
+    if (*r.help) help += std::string(" (") + r.help + ")";
+    if (k + 1 < std::size(kKindRows)) help += " | ";
+  }
+  return help;
+}
+
 const char* WarpName(Warp w) {
   switch (w) {
     case Warp::kLinear: return "linear";
@@ -62,13 +109,10 @@ const char* IntegratorName(IntegratorKind k) {
 }
 
 TableKind ParseTable(const std::string& s) {
-  static constexpr TableKind kKinds[] = {TableKind::kE,       TableKind::kEavg,        TableKind::kDfg,
-                                         TableKind::kSelNorm, TableKind::kGenSchlickS, TableKind::kGenSchlickIorS,
-                                         TableKind::kF82Bias};
   std::vector<std::string> names;
-  for (TableKind k : kKinds) {
-    if (s == TableName(k)) return k;
-    names.push_back(TableName(k));
+  for (const KindRow& r : kKindRows) {
+    if (s == r.name) return r.kind;
+    names.push_back(r.name);
   }
   Bad("{table}: unknown table '" + s + "' (expected " + OrList(names) + ")" +
       DidYouMean(s, names,
@@ -393,8 +437,8 @@ std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec) {
   // The rules of these tables have no sampling counterpart: their
   // integrands are integrated over their own domains (slope planes, the
   // lobe's sphere, both sides of an interface) or per slice.
-  if (spec.GenSchlick() || spec.table == TableKind::kSelNorm || spec.table == TableKind::kF82Bias ||
-      m == ModelKind::kGgxGlass || m == ModelKind::kEllipsoid || m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
+  if (RowOf(spec.table).quadrature_only || m == ModelKind::kGgxGlass || m == ModelKind::kEllipsoid ||
+      m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
     return {IntegratorKind::kQuadrature};
   }
   return {IntegratorKind::kQuadrature, IntegratorKind::kQmc, IntegratorKind::kMc, IntegratorKind::kEngine};
@@ -412,21 +456,13 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     Bad("{table}: ggx-glass bakes E and E_avg (reflection plus refraction; no dfg)");
   }
   if (spec.inverse && !glass) Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
-  const bool gen_schlick = spec.GenSchlick();
-  if (gen_schlick) {
-    const std::string table = TableName(spec.table);
+  const KindRow& kind = RowOf(spec.table);
+  if (kind.ggx_term) {
     if (m != ModelKind::kGgx) {
-      Bad("{model}: " + table + " is the Fresnel factor of a GGX reflection lobe (give {model} ggx; got '" +
+      Bad(std::string("{model}: ") + kind.name + " is " + kind.ggx_term + " (give {model} ggx; got '" +
           spec.model.name() + "')");
     }
-    if (spec.complement) Bad("{complement}: " + table + " stores s itself");
-  }
-  if (spec.table == TableKind::kF82Bias) {
-    if (m != ModelKind::kGgx) {
-      Bad("{model}: f82_bias is the F82-tint term of a GGX reflection lobe (give {model} ggx; got '" +
-          std::string(spec.model.name()) + "')");
-    }
-    if (spec.complement) Bad("{complement}: f82_bias stores the term itself");
+    if (spec.complement) Bad(std::string("{complement}: ") + kind.name + " stores " + kind.stores);
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
     Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +
@@ -458,8 +494,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   const std::vector<IntegratorKind> integrators = TableIntegrators(spec);
   if (std::find(integrators.begin(), integrators.end(), spec.integrator) == integrators.end()) {
     Bad("{integrator}: " +
-        std::string(gen_schlick || sel || spec.table == TableKind::kF82Bias ? TableName(spec.table)
-                                                                            : spec.model.name()) +
+        std::string(kind.quadrature_only ? kind.name : spec.model.name()) +
         " tables are baked with the quadrature only (got " + IntegratorName(spec.integrator) + ")");
   }
   // The view and lobe axes here; the parameter axes below.

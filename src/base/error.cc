@@ -8,11 +8,10 @@
 #include <string>
 
 namespace brdfbake {
-namespace {
 
 // Each "{name}" of a parameter in `text` as spell(name); other braces as
 // they are.
-std::string Spelled(const std::string& text, const std::function<std::string(const std::string&)>& spell) {
+std::string SpellParameters(const std::string& text, const std::function<std::string(const std::string&)>& spell) {
   std::string out;
   size_t i = 0;
   while (i < text.size()) {
@@ -33,8 +32,6 @@ std::string Spelled(const std::string& text, const std::function<std::string(con
   return out + text.substr(i);
 }
 
-}  // namespace
-
 bool IsParameterName(const std::string& name) {
   static const char* const kNames[] = {
       // BakeSpec and its axes
@@ -49,10 +46,10 @@ bool IsParameterName(const std::string& name) {
 }
 
 ParameterError::ParameterError(const std::string& text)
-    : std::invalid_argument(Spelled(text, [](const std::string& n) { return n; })), text_(text) {}
+    : std::invalid_argument(SpellParameters(text, [](const std::string& n) { return n; })), text_(text) {}
 
 std::string ParameterError::Render(const std::function<std::string(const std::string&)>& spell) const {
-  return Spelled(text_, spell);
+  return SpellParameters(text_, spell);
 }
 
 std::string ErrorText(const std::exception& e) {

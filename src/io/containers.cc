@@ -37,40 +37,35 @@
 namespace brdfbake {
 namespace {
 
-const Channel* FindMeaning(const Table& t, Meaning meaning) {
-  for (const Channel& c : t.channels) {
-    if (c.meaning == meaning) return &c;
-  }
-  return nullptr;
-}
-
 // The value of `s` at texel i of the table, in double (before rounding).
 // Returns false when the table does not hold it.
 struct SourceReader {
-  const Table& t;
-  const Channel* e = FindMeaning(t, Meaning::kE);
-  const Channel* one_minus_e = FindMeaning(t, Meaning::kOneMinusE);
-  const Channel* eavg = FindMeaning(t, Meaning::kEavg);
-  const Channel* one_minus_eavg = FindMeaning(t, Meaning::kOneMinusEavg);
-  const Channel* scale = FindMeaning(t, Meaning::kDfgScale);
-  const Channel* bias = FindMeaning(t, Meaning::kDfgBias);
-  const Channel* gen_schlick = FindMeaning(t, Meaning::kS);
-  const Channel* f82 = FindMeaning(t, Meaning::kF82Bias);
+  explicit SourceReader(const Table& table) {
+    for (const Channel& c : table.channels) {
+      if (!of[int(c.meaning)]) of[int(c.meaning)] = &c;
+    }
+    e = Of(Meaning::kE);
+    one_minus_e = Of(Meaning::kOneMinusE);
+    eavg = Of(Meaning::kEavg);
+    one_minus_eavg = Of(Meaning::kOneMinusEavg);
+    scale = Of(Meaning::kDfgScale);
+    bias = Of(Meaning::kDfgBias);
+  }
+  // The first channel of each meaning.
+  const Channel* of[kMeaningCount] = {};
+  const Channel* Of(Meaning m) const { return of[int(m)]; }
+  const Channel *e, *one_minus_e, *eavg, *one_minus_eavg, *scale, *bias;
 
   bool Has(Source s) const {
     switch (s) {
-      case Source::kE: return e || one_minus_e || (scale && bias);
-      case Source::kOneMinusE: return one_minus_e || e || (scale && bias);
-      case Source::kEavg: return eavg || one_minus_eavg;
-      case Source::kOneMinusEavg: return one_minus_eavg || eavg;
-      case Source::kScale: return scale != nullptr;
-      case Source::kBias: return bias != nullptr;
-      case Source::kS: return gen_schlick != nullptr;
-      case Source::kF82Bias: return f82 != nullptr;
+      case Source::kE:
+      case Source::kOneMinusE: return e || one_minus_e || (scale && bias);
+      case Source::kEavg:
+      case Source::kOneMinusEavg: return eavg || one_minus_eavg;
       case Source::kZero:
       case Source::kOne: return true;
+      default: return Of(Meaning(int(s))) != nullptr;
     }
-    return false;
   }
   // Derived values (a sum of two channels) carry the sum of two errors.
   bool Derived(Source s) const {
@@ -88,33 +83,25 @@ struct SourceReader {
         return std::max(0.0, 1.0 - (scale->values[i] + bias->values[i]));
       case Source::kEavg: return eavg ? eavg->values[i] : 1.0 - one_minus_eavg->values[i];
       case Source::kOneMinusEavg: return one_minus_eavg ? one_minus_eavg->values[i] : 1.0 - eavg->values[i];
-      case Source::kScale: return scale->values[i];
-      case Source::kBias: return bias->values[i];
-      case Source::kS: return gen_schlick->values[i];
-      case Source::kF82Bias: return f82->values[i];
       case Source::kZero: return 0.0;
       case Source::kOne: return 1.0;
+      default: return Of(Meaning(int(s)))->values[i];
     }
-    return 0.0;
   }
 };
 
+}  // namespace
+
 Source SourceOfMeaning(Meaning m) {
-  switch (m) {
-    case Meaning::kE: return Source::kE;
-    case Meaning::kOneMinusE: return Source::kOneMinusE;
-    case Meaning::kEavg: return Source::kEavg;
-    case Meaning::kOneMinusEavg: return Source::kOneMinusEavg;
-    case Meaning::kDfgScale: return Source::kScale;
-    case Meaning::kDfgBias: return Source::kBias;
-    case Meaning::kS: return Source::kS;
-    case Meaning::kF82Bias: return Source::kF82Bias;
-    case Meaning::kSelIntegral:
-    case Meaning::kSelRatio:
-    case Meaning::kError: break;
+  if (m == Meaning::kSelIntegral || m == Meaning::kSelRatio || m == Meaning::kError) {
+    Bad(std::string("the ") + MeaningName(m) +
+        " channel has no image layout (sel_norm tables are written as their own EXR only: no rgba, other "
+        "containers or shaders)");
   }
-  Bad(std::string("the ") + MeaningName(m) + " channel has no image layout (sel_norm tables are written as their own EXR only: no rgba, other containers or shaders)");
+  return Source(int(m));
 }
+
+namespace {
 
 void PutU32(std::string* out, uint32_t v) {
   for (int k = 0; k < 4; ++k) out->push_back(static_cast<char>((v >> (8 * k)) & 0xff));
@@ -395,18 +382,10 @@ std::string DdsBytes(const Image& im) {
 
 const char* SourceName(Source s) {
   switch (s) {
-    case Source::kE: return "E";
-    case Source::kOneMinusE: return "1-E";
-    case Source::kEavg: return "E_avg";
-    case Source::kOneMinusEavg: return "1-E_avg";
-    case Source::kScale: return "dfg.scale";
-    case Source::kBias: return "dfg.bias";
-    case Source::kS: return "s";
-    case Source::kF82Bias: return "f82_bias";
     case Source::kZero: return "0";
     case Source::kOne: return "1";
+    default: return MeaningName(Meaning(int(s)));
   }
-  return "0";
 }
 
 const char* PixelTypeName(PixelType p) {

@@ -218,16 +218,18 @@ std::string ShaderFunction(const Table& t, const Image& im, ShaderLanguage lang,
   // one channel, over the image's own axes.
   const bool formed = !im.table_name.empty();
   const bool dfg = t.spec.table == TableKind::kDfg && !formed;
+  // A table of one quantity of its own (gen_schlick's s, f82_bias): its
+  // first channel's meaning, which is neither E nor E_avg.
+  const Meaning first = t.channels.empty() ? Meaning::kE : t.channels[0].meaning;
+  const bool own_quantity = !dfg && first != Meaning::kE && first != Meaning::kOneMinusE &&
+                            first != Meaning::kEavg && first != Meaning::kOneMinusEavg;
   std::string result, type;
   if (formed) {
     type = syn.f1();
     result = "s.x";
-  } else if (t.spec.GenSchlick()) {
+  } else if (own_quantity) {
     type = syn.f1();
-    result = get("s");
-  } else if (t.spec.table == TableKind::kF82Bias) {
-    type = syn.f1();
-    result = get("f82_bias");
+    result = get(MeaningName(first));
   } else if (dfg) {
     type = syn.f2();
     std::string scale = get("dfg.scale"), bias = get("dfg.bias"), e = get("E");

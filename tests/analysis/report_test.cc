@@ -12,10 +12,13 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "brdfbake/model.h"
 
 namespace brdfbake {
 namespace {
@@ -79,6 +82,57 @@ void CheckReport(TableKind kind) {
 TEST(ReportTest, ETable) { CheckReport(TableKind::kE); }
 TEST(ReportTest, DfgTable) { CheckReport(TableKind::kDfg); }
 TEST(ReportTest, EavgTable) { CheckReport(TableKind::kEavg); }
+
+// A table the quadrature alone bakes has its ladder alone (no sampling
+// rows that its spec would refuse), with the claims bounding the error;
+// one over mu x roughness (f82_bias) has its interpolation study, the
+// slope-plane tables (sel_norm, the ellipsoid) none; tables with an axis
+// of their own (gen_schlick's exponent) are refused.
+TEST(ReportTest, QuadratureOnlyTablesHaveTheirLadderAlone) {
+  struct Case {
+    TableKind table;
+    ModelKind model;
+    size_t interpolation_rows;
+  };
+  std::vector<Case> cases = {{TableKind::kF82Bias, ModelKind::kGgx, 1}};
+  if (ModelBuilt(ModelKind::kSel)) cases.push_back({TableKind::kSelNorm, ModelKind::kSel, 0});
+  if (ModelBuilt(ModelKind::kEllipsoid)) cases.push_back({TableKind::kE, ModelKind::kEllipsoid, 0});
+  for (const Case& c : cases) {
+    ReportSpec spec;
+    spec.table.table = c.table;
+    spec.table.model.kind = c.model;
+    spec.table.mu.size = spec.table.roughness.size = spec.table.phi.size = 3;
+    spec.table.alpha_x.size = spec.table.alpha_y.size = 3;
+    spec.table.integrator = IntegratorKind::kQuadrature;
+    spec.repeats = 1;
+    spec.reference_tolerance = 1e-10;
+    spec.interpolation_sizes = {3};
+    spec.interpolation_probes = 2;
+    const Report r = RunReport(spec);
+    ASSERT_EQ(r.rows.size(), 6u) << TableName(c.table);
+    for (const ReportRow& row : r.rows) {
+      EXPECT_EQ(row.integrator, "quadrature");
+      EXPECT_LE(row.max_abs_error, row.claimed_max_error + 2 * r.reference_claimed_error)
+          << TableName(c.table) << " " << row.budget;
+    }
+    ASSERT_EQ(r.interpolation.size(), c.interpolation_rows) << TableName(c.table);
+    for (const InterpolationRow& row : r.interpolation) {
+      EXPECT_GT(row.probes, 0);
+      EXPECT_TRUE(std::isfinite(row.max_abs_error));
+      EXPECT_GT(row.max_abs_error, 0.0);
+    }
+  }
+  ReportSpec gen;
+  gen.table.table = TableKind::kGenSchlickS;
+  gen.table.mu.size = gen.table.roughness.size = gen.table.exponent.size = 2;
+  try {
+    RunReport(gen);
+    ADD_FAILURE() << "gen_schlick_s was reported";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("an axis over exponent the report does not interpolate"), std::string::npos)
+        << e.what();
+  }
+}
 
 TEST(ReportTest, SvgScalesAreLogarithmic) {
   const std::string svg = LogLogSvg("t", "x", "y", {{"a", {1e-3, 1e-1}, {1e-6, 1e-2}}}, "note");

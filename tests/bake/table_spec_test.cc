@@ -145,6 +145,22 @@ TEST(TableSpecTest, ChannelNamesSortInTheirOrder) {
   EXPECT_FALSE(ParameterAxis(s.mu));
 }
 
+// One row per kind (table_spec.cc): the help lists every kind in order,
+// notes shared by neighbours once, and each name parses back to its kind.
+TEST(TableSpecTest, KindsHelpListsEveryKind) {
+  EXPECT_EQ(TableKindsHelp(),
+            "E | E_avg | dfg | sel_norm (with {model} sel) | gen_schlick_s, gen_schlick_ior_s (the generalized "
+            "Schlick factor s of GGX over mu x roughness x exponent or ior) | f82_bias (GGX's F82-tint term, wo.h "
+            "(1 - wo.h)^6 weighting its energy, over mu x roughness)");
+  EXPECT_EQ(SpellParameters("sel_norm (with {model} sel)", [](const std::string& p) { return "--" + p; }),
+            "sel_norm (with --model sel)");
+  for (TableKind k : {TableKind::kE, TableKind::kEavg, TableKind::kDfg, TableKind::kSelNorm, TableKind::kGenSchlickS,
+                      TableKind::kGenSchlickIorS, TableKind::kF82Bias}) {
+    EXPECT_EQ(ParseTable(TableName(k)), k);
+    EXPECT_NE(TableKindsHelp().find(TableName(k)), std::string::npos);
+  }
+}
+
 TEST(TableSpecTest, IntegratorsAllowed) {
   EXPECT_EQ(TableIntegrators(Small(TableKind::kDfg, ModelKind::kGgx)).size(), 4u);
   for (BakeSpec s : {Small(TableKind::kE, ModelKind::kGgxGlass), Small(TableKind::kE, ModelKind::kGgxAniso),

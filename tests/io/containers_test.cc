@@ -121,6 +121,32 @@ double Edge(int i, int n) { return double(i) / (n - 1); }
 
 constexpr double kHalfRel = 0x1p-10;  // half rounding (with the double-to-float step)
 
+// Every meaning an image can hold is a layout source of the same name,
+// without an enumerator of its own (containers.h); the others are
+// refused by name.
+TEST(ContainersTest, EveryMeaningIsASource) {
+  for (int k = 0; k < kMeaningCount; ++k) {
+    const Meaning m = Meaning(k);
+    if (m == Meaning::kSelIntegral || m == Meaning::kSelRatio || m == Meaning::kError) {
+      EXPECT_THROW(SourceOfMeaning(m), std::invalid_argument) << MeaningName(m);
+      continue;
+    }
+    EXPECT_STREQ(SourceName(SourceOfMeaning(m)), MeaningName(m));
+  }
+  EXPECT_STREQ(SourceName(Source::kScale), "dfg.scale");
+  EXPECT_STREQ(SourceName(Source::kZero), "0");
+  EXPECT_STREQ(SourceName(Source::kOne), "1");
+  // An f82_bias table's default layout reads its one channel.
+  BakeSpec spec;
+  spec.table = TableKind::kF82Bias;
+  spec.mu.size = spec.roughness.size = 3;
+  const Table t = Bake(spec);
+  const Image im = ArrangeTable(t, DefaultLayout(t));
+  ASSERT_EQ(im.channel_sources.size(), 1u);
+  EXPECT_EQ(im.channel_sources[0], "f82_bias");
+  for (size_t i = 0; i < im.values.size(); ++i) EXPECT_EQ(float(im.values[i]), t.channels[0].stored[i]);
+}
+
 TEST(PresetTest, Filament) {
   SKIP_UNLESS_BUILT("filament");
   const Baked b = BakePreset(TableOf("filament"));

@@ -453,10 +453,7 @@ struct BakeOptions {
   void Add(CLI::App* a, bool report) {
     app = a;
     for_report = report;
-    app->add_option("--table,-t", table,
-                    "E | E_avg | dfg | sel_norm (with --model sel) | gen_schlick_s, gen_schlick_ior_s (the "
-                    "generalized Schlick factor s of GGX over mu x roughness x exponent or ior) | f82_bias "
-                    "(GGX's F82-tint term, wo.h (1 - wo.h)^6 weighting its energy, over mu x roughness)");
+    app->add_option("--table,-t", table, brdfbake::SpellParameters(brdfbake::TableKindsHelp(), FlagOf));
     app->add_option("--model,-m", model,
                     "ggx | beckmann | std | ggx-aniso (anisotropic GGX, KHR_materials_anisotropy) | "
                     "ellipsoid (one material: --alpha-x/-y, --theta-x/-y/-z) | sel (--table sel_norm) | "
