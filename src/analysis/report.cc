@@ -290,8 +290,9 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   // against their exact values (probe.h); the slope-plane tables (sel_norm
   // over alpha_x x alpha_y, the ellipsoid over mu x phi_o) have the
   // ladder alone.
-  bool plane = true;
-  for (const Axis& a : ShapeOf(spec.table).axes) plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma";
+  const std::vector<Axis> axes = ShapeOf(spec.table).axes;
+  bool plane = !axes.empty();  // the ellipsoid's E_avg is one value
+  for (const Axis& a : axes) plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma";
   if (!plane) say("no interpolation study: the table's axes are not mu x roughness");
   // With a gamma axis, the error of linear lookup between gamma slices.
   for (int n : plane ? spec.interpolation_sizes : std::vector<int>{}) {

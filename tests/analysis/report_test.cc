@@ -96,7 +96,10 @@ TEST(ReportTest, QuadratureOnlyTablesHaveTheirLadderAlone) {
   };
   std::vector<Case> cases = {{TableKind::kF82Bias, ModelKind::kGgx, 1}};
   if (ModelBuilt(ModelKind::kSel)) cases.push_back({TableKind::kSelNorm, ModelKind::kSel, 0});
-  if (ModelBuilt(ModelKind::kEllipsoid)) cases.push_back({TableKind::kE, ModelKind::kEllipsoid, 0});
+  if (ModelBuilt(ModelKind::kEllipsoid)) {
+    cases.push_back({TableKind::kE, ModelKind::kEllipsoid, 0});
+    cases.push_back({TableKind::kEavg, ModelKind::kEllipsoid, 0});  // one value
+  }
   for (const Case& c : cases) {
     ReportSpec spec;
     spec.table.table = c.table;
