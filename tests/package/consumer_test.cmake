@@ -26,13 +26,19 @@ foreach(f include/brdfbake/batch.h include/brdfbake/models/ggx.h include/brdfbak
   endif()
 endforeach()
 
-# find_package against the installed tree: build and run both programs.
+# find_package against the installed tree: build and run every program.
 run(${CMAKE_COMMAND} -S ${SOURCE_DIR}/examples/consumer -B ${WORK_DIR}/installed
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
 run(${CMAKE_COMMAND} --build ${WORK_DIR}/installed -j2)
 run(${WORK_DIR}/installed/shade)
 run(${WORK_DIR}/installed/mixed_batch)
 run(${WORK_DIR}/installed/bake_one)
+run(${WORK_DIR}/installed/bake_preset ${WORK_DIR}/baked)
+foreach(f DFGLUTData.js DFGLUTData.glsl dfg.ktx2)
+  if(NOT EXISTS ${WORK_DIR}/baked/${f})
+    message(FATAL_ERROR "bake_preset did not write ${f}")
+  endif()
+endforeach()
 
 # pkg-config against the installed tree: the batch examples compiled and
 # linked with brdfbake-core's flags alone.
