@@ -34,7 +34,7 @@ struct OutputSet {
 struct TableRequest {
   BakeSpec spec;
   std::string output;  // the table's file
-  std::string format;  // a container name; empty: the one output's extension names
+  std::string format;  // a container name; empty: the one the output's extension names
   // kUnorm16 or kUnorm8: the image containers' pixels; kFloat: the table's
   // own (half when spec.half).
   PixelType pixel = PixelType::kFloat;
