@@ -50,6 +50,12 @@ struct ProbeResult {
   std::vector<double> worst_at;    // the axes' values (Table::axes order) at the largest error
 };
 
+// Whether LookupError can probe tables of `spec` (it knows their exact
+// values): E, E_avg, dfg and tables of one quantity over (mu,) roughness,
+// over gamma or ior slices too, and ggx-aniso E and E_avg; not sel_norm,
+// the ellipsoid or gen_schlick.
+bool ProbeSupports(const BakeSpec& spec);
+
 // The probe positions `options` gives along each of the table's axes.
 std::vector<std::vector<double>> ProbePositions(const Table& table, const ProbeOptions& options = {});
 
@@ -57,9 +63,8 @@ std::vector<std::vector<double>> ProbePositions(const Table& table, const ProbeO
 // positions, over every value channel (all but "error"). The exact values are the table's own integrator at each point,
 // moved into the stored range as the bake stores them; they are computed in
 // parallel and reduced serially, so the result does not depend on the
-// thread count. E, E_avg and dfg over (mu,) roughness (+ gamma, or ior for
-// ggx-glass), and ggx-aniso E and E_avg; throws std::invalid_argument for
-// the others.
+// thread count. Throws std::invalid_argument for the tables ProbeSupports
+// refuses.
 ProbeResult LookupError(const Table& table, const ProbeOptions& options = {});
 
 // The exact values of the table's channels (as LookupError compares them)

@@ -97,14 +97,18 @@ int AxisIndex(const Table& t, const char* name) {
 
 }  // namespace
 
+bool ProbeSupports(const BakeSpec& s) {
+  // ExactTableValues knows E, E_avg, dfg and the tables of one quantity
+  // over mu x roughness (f82_bias), over gamma or ior slices too; not the
+  // slope-plane tables, nor gen_schlick's slices.
+  return s.model.kind != ModelKind::kEllipsoid && s.table != TableKind::kSelNorm && !s.GenSchlick();
+}
+
 std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptions& o) {
   const BakeSpec& s = t.spec;
-  // ExactTableValues knows E, E_avg, dfg and the tables of one quantity
-  // over mu x roughness (f82_bias); not the slope-plane tables, nor
-  // gen_schlick's slices.
-  const bool supported =
-      s.model.kind != ModelKind::kEllipsoid && s.table != TableKind::kSelNorm && !s.GenSchlick();
-  if (!supported) Bad(std::string("lookup error: no probe for ") + TableName(s.table) + " tables of " + s.model.name());
+  if (!ProbeSupports(s)) {
+    Bad(std::string("lookup error: no probe for ") + TableName(s.table) + " tables of " + s.model.name());
+  }
   if (!o.points.empty() && o.points.size() != t.axes.size()) Bad("lookup error: one probe kind per table axis");
   std::vector<std::vector<double>> pos(t.axes.size());
   for (size_t k = 0; k < t.axes.size(); ++k) {

@@ -230,6 +230,7 @@ bool PlaneInterpolation(const BakeSpec& s_in, int n, int interpolation_probes,
   const bool one_d = s.table == TableKind::kEavg;
   s.roughness.size = n;
   if (!one_d) s.mu.size = n;
+  if (s.Glass()) s.ior.size = n;  // n entries on every axis: an n^3 cube (E_avg n^2)
   if (n < 2) return false;  // no cell to probe
   const Table t = Bake(s);
   ProbeOptions o;
@@ -254,11 +255,12 @@ void ValidateReportSpec(const ReportSpec& spec) {
   if (spec.repeats < 1 || spec.repeats > 100) {
     Bad("{repeats} must be in [1, 100]");
   }
-  // The ladders and the interpolation study run over mu x roughness (and
-  // gamma); a table with another axis of its own (ior, exponent) and the
-  // quadrature alone has neither to show.
+  // The interpolation study probes the table over all its axes (gamma and
+  // ior slices too); a table with an axis of its own the probe does not
+  // know (gen_schlick's exponent or ior) and the quadrature alone has
+  // neither study to show.
   const std::vector<Axis> axes = ShapeOf(spec.table).axes;
-  if (!axes.empty() && ParameterAxis(axes.back()) && !spec.table.HasGammaAxis() &&
+  if (!axes.empty() && ParameterAxis(axes.back()) && !ProbeSupports(spec.table) &&
       TableIntegrators(spec.table).size() == 1) {
     throw std::invalid_argument(std::string("report: ") +
                                 (spec.table.Glass() ? "ggx-glass" : TableName(spec.table.table)) +
@@ -286,13 +288,15 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   report.reference_seconds = ref.seconds;
   report.reference_claimed_error = ref.integration_error;
   report.rows = BudgetLadders(spec, ref, say);
-  // The interpolation study probes tables over mu x roughness (and gamma)
-  // against their exact values (probe.h); the slope-plane tables (sel_norm
-  // over alpha_x x alpha_y, the ellipsoid over mu x phi_o) have the
-  // ladder alone.
+  // The interpolation study probes tables over mu x roughness (and gamma
+  // or ior slices) against their exact values (probe.h); the slope-plane
+  // tables (sel_norm over alpha_x x alpha_y, the ellipsoid over mu x
+  // phi_o) have the ladder alone.
   const std::vector<Axis> axes = ShapeOf(spec.table).axes;
-  bool plane = !axes.empty();  // the ellipsoid's E_avg is one value
-  for (const Axis& a : axes) plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma";
+  bool plane = !axes.empty() && ProbeSupports(spec.table);  // the ellipsoid's E_avg is one value
+  for (const Axis& a : axes) {
+    plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma" || a.name == "ior";
+  }
   if (!plane) say("no interpolation study: the table's axes are not mu x roughness");
   // With a gamma axis, the error of linear lookup between gamma slices.
   for (int n : plane ? spec.interpolation_sizes : std::vector<int>{}) {

@@ -85,9 +85,10 @@ TEST(ReportTest, EavgTable) { CheckReport(TableKind::kEavg); }
 
 // A table the quadrature alone bakes has its ladder alone (no sampling
 // rows that its spec would refuse), with the claims bounding the error;
-// one over mu x roughness (f82_bias) has its interpolation study, the
-// slope-plane tables (sel_norm, the ellipsoid) none; tables with an axis
-// of their own (gen_schlick's exponent) are refused.
+// one over mu x roughness (f82_bias), or over ior slices too (ggx-glass),
+// has its interpolation study, the slope-plane tables (sel_norm, the
+// ellipsoid) none; tables with an axis of their own the probe does not
+// know (gen_schlick's exponent) are refused.
 TEST(ReportTest, QuadratureOnlyTablesHaveTheirLadderAlone) {
   struct Case {
     TableKind table;
@@ -96,6 +97,11 @@ TEST(ReportTest, QuadratureOnlyTablesHaveTheirLadderAlone) {
   };
   std::vector<Case> cases = {{TableKind::kF82Bias, ModelKind::kGgx, 1}};
   if (ModelBuilt(ModelKind::kSel)) cases.push_back({TableKind::kSelNorm, ModelKind::kSel, 0});
+  if (ModelBuilt(ModelKind::kGgxGlass)) {
+    // Over ior slices too: the study's tables are n^3 (E_avg n^2).
+    cases.push_back({TableKind::kE, ModelKind::kGgxGlass, 1});
+    cases.push_back({TableKind::kEavg, ModelKind::kGgxGlass, 1});
+  }
   if (ModelBuilt(ModelKind::kEllipsoid)) {
     cases.push_back({TableKind::kE, ModelKind::kEllipsoid, 0});
     cases.push_back({TableKind::kEavg, ModelKind::kEllipsoid, 0});  // one value
@@ -105,7 +111,7 @@ TEST(ReportTest, QuadratureOnlyTablesHaveTheirLadderAlone) {
     spec.table.table = c.table;
     spec.table.model.kind = c.model;
     spec.table.mu.size = spec.table.roughness.size = spec.table.phi.size = 3;
-    spec.table.alpha_x.size = spec.table.alpha_y.size = 3;
+    spec.table.alpha_x.size = spec.table.alpha_y.size = spec.table.ior.size = 3;
     spec.table.integrator = IntegratorKind::kQuadrature;
     spec.repeats = 1;
     spec.reference_tolerance = 1e-10;
