@@ -178,22 +178,20 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
     const EavgEstimate e = IntegrateEavg(spec, roughness);
     return "," + Fmt(std::clamp(e.value, 0.0, StoredEMax(spec))) + "," + Fmt(e.error);
   }
-  if (IsGenSchlick(q)) {
-    // One slice of the table: its third axis at the one value asked for
-    // (clamped as the bake clamps it).
-    const bool exponent = q == "gen_schlick_s";
-    spec.table = exponent ? TableKind::kGenSchlickS : TableKind::kGenSchlickIorS;
-    Axis& slice = exponent ? spec.exponent : spec.ior;
-    slice.size = 1;
-    slice.placement = Placement::kCenters;
-    slice.min = slice.max = exponent ? req.exponent : req.model.ior;
+  if (IsFresnelShape(q)) {
+    spec.table = ParseTable(q);
+    if (IsGenSchlick(q)) {
+      // One slice of the table: its third axis at the one value asked
+      // for (clamped as the bake clamps it).
+      const bool exponent = spec.table == TableKind::kGenSchlickS;
+      Axis& slice = exponent ? spec.exponent : spec.ior;
+      slice.size = 1;
+      slice.placement = Placement::kCenters;
+      slice.min = slice.max = exponent ? req.exponent : req.model.ior;
+    }
+    // One value in e, stored as the bake stores it.
     const TexelEstimate v = IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0));
-    return "," + Fmt(std::clamp(v.e, 0.0, 1.0)) + "," + Fmt(v.err_e);
-  }
-  if (q == "f82_bias") {
-    spec.table = TableKind::kF82Bias;
-    const TexelEstimate v = IntegrateTexel(spec, roughness, std::clamp(mu, 0.0, 1.0));
-    return "," + Fmt(std::max(v.e, 0.0)) + "," + Fmt(v.err_e);
+    return "," + Fmt(std::clamp(v.e, 0.0, StoredEMax(spec))) + "," + Fmt(v.err_e);
   }
   spec.table = q == "E" ? TableKind::kE : TableKind::kDfg;
   const TexelEstimate v =

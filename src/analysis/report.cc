@@ -289,14 +289,10 @@ Report RunReport(const ReportSpec& spec, const ReportLog& log) {
   report.reference_claimed_error = ref.integration_error;
   report.rows = BudgetLadders(spec, ref, say);
   // The interpolation study probes tables over mu x roughness (and gamma
-  // or ior slices) against their exact values (probe.h); the slope-plane
-  // tables (sel_norm over alpha_x x alpha_y, the ellipsoid over mu x
-  // phi_o) have the ladder alone.
-  const std::vector<Axis> axes = ShapeOf(spec.table).axes;
-  bool plane = !axes.empty() && ProbeSupports(spec.table);  // the ellipsoid's E_avg is one value
-  for (const Axis& a : axes) {
-    plane &= a.name == "mu" || a.name == "roughness" || a.name == "gamma" || a.name == "ior";
-  }
+  // or ior slices) against their exact values: those ProbeSupports knows.
+  // The slope-plane tables (sel_norm over alpha_x x alpha_y, the ellipsoid
+  // over mu x phi_o, its E_avg one value) have the ladder alone.
+  const bool plane = ProbeSupports(spec.table);
   if (!plane) say("no interpolation study: the table's axes are not mu x roughness");
   // With a gamma axis, the error of linear lookup between gamma slices.
   for (int n : plane ? spec.interpolation_sizes : std::vector<int>{}) {

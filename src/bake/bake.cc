@@ -272,6 +272,16 @@ TexelEstimate Texel(const BakeSpec& spec, double alpha, double mu, uint64_t texe
   return TexelFor(GgxNdf<double>(alpha), mu, spec, texel_seed);  // ValidateBakeSpec admits no other
 }
 
+// A texel of spec's table in slice z at (alpha, mu), `slice` the spec Bake
+// made for that slice (gamma or eta set): the one dispatch over the table
+// kinds, Bake's and IntegrateTexel's.
+TexelEstimate TableTexel(const BakeSpec& spec, const BakeSpec& slice, int z, double alpha, double mu,
+                         uint64_t texel_seed) {
+  if (spec.GenSchlick()) return GenSchlickTexel(spec, alpha, mu, GenSchlickSlice(spec, z));
+  if (spec.table == TableKind::kF82Bias) return F82Texel(spec, alpha, mu);
+  return Texel(slice, alpha, mu, texel_seed);
+}
+
 std::string ModelJson(const BakeSpec& spec) {
   nlohmann::json j;
   j["name"] = spec.model.name();
@@ -1198,10 +1208,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       } else {
         const int ry = y % ax_r.size, z = y / ax_r.size;
         const double r = std::max(ax_r.Value(ry), ax_r.clamp_min);
-        v = spec.GenSchlick() ? GenSchlickTexel(spec, r * r, mu, GenSchlickSlice(spec, z))
-            : spec.table == TableKind::kF82Bias
-                ? F82Texel(spec, r * r, mu)
-                : Texel(slice_specs[z], r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
+        v = TableTexel(spec, slice_specs[z], z, r * r, mu, Mix64(spec.seed ^ Mix64(uint64_t(idx))));
       }
       if (spec.table != TableKind::kDfg) {
         // E, or a table of one quantity of its own (gen_schlick's s,
@@ -1311,15 +1318,8 @@ TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,
       Bad("{size}: one texel of " + std::string(TableName(spec.table)) + " is at one " + slice.name + " (got " +
           std::to_string(slice.size) + " slices)");
     }
-    const TexelEstimate v = GenSchlickTexel(spec, AlphaFromRoughness(roughness), mu, GenSchlickSlice(spec, 0));
-    return {v.e, 0, 0, v.err_e, 0, 0};
   }
-  if (spec.table == TableKind::kF82Bias) {
-    const TexelEstimate v = F82Texel(spec, AlphaFromRoughness(roughness), mu);
-    return {v.e, 0, 0, v.err_e, 0, 0};
-  }
-  const TexelEstimate v = Texel(spec, AlphaFromRoughness(roughness), mu, Mix64(spec.seed ^ texel_seed));
-  return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
+  return TableTexel(spec, spec, 0, AlphaFromRoughness(roughness), mu, Mix64(spec.seed ^ texel_seed));
 }
 
 }  // namespace brdfbake

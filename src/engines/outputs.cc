@@ -36,8 +36,9 @@ std::string DefaultSymbol(const BakeSpec& spec) {
 
 void CheckSymbol(const std::string& s) {
   bool ok = !s.empty() && s.size() <= 200 && !std::isdigit(static_cast<unsigned char>(s[0]));
-  for (char c : s)
+  for (char c : s) {
     ok &= (std::isalnum(static_cast<unsigned char>(c)) && static_cast<unsigned char>(c) < 128) || c == '_';
+  }
   if (!ok) Bad("{symbol}: '" + Printable(s) + "' is not an identifier (a letter or _, then letters, digits or _)");
   if (s.rfind("gl_", 0) == 0 || s.find("__") != std::string::npos) {
     Bad("{symbol}: '" + s + "' is reserved in GLSL (gl_ prefix or __)");
