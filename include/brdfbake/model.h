@@ -67,6 +67,18 @@ struct ModelInfo {
   const char* source;
 };
 const std::vector<ModelInfo>& Models();  // the families this build contains
+// The families and the table models with a description of their own
+// (ggx-glass), as the help lists them.
+const std::vector<ModelInfo>& ModelsDescribed();
+
+// The parameters some models take beside their widths: std's gamma, the
+// ellipsoid's and sel's rotation (theta_x, theta_y, theta_z), charlie's
+// visibility, ggx-glass's ior.
+enum class ModelOption { kGamma, kRotation, kVisibility, kIor };
+// Whether `kind` takes `option` (false for a model not in this build).
+bool ModelTakes(ModelKind kind, ModelOption option);
+// The names of this build's models that take `option`, in their order.
+std::vector<std::string> ModelsTaking(ModelOption option);
 
 // The visibility `name` names (neubelt, conty-kulla); std::invalid_argument
 // with a one-line message otherwise.

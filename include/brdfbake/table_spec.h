@@ -251,6 +251,10 @@ std::string SizeForm(const BakeSpec& spec);
 // one for E, E_avg and dfg of the isotropic microfacet models and the
 // lobes, the quadrature alone for the others (ValidateBakeSpec's rule).
 std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec);
+// Whether `model` bakes tables of kind `table` (ValidateBakeSpec refuses
+// any other), and the names of this build's models that bake it.
+bool ModelBakes(ModelKind model, TableKind table);
+std::vector<std::string> ModelsBaking(TableKind table);
 
 // Stored values are clamped to the physical range: E, 1-E, E_avg and
 // 1-E_avg to [0, 1]; dfg.scale, dfg.bias >= 0 with scale + bias <= 1 in the

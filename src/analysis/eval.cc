@@ -65,10 +65,16 @@ void ValidateEvalRequest(const EvalRequest& req) {
           "' (expected D, Lambda, G1, G2, brdf, pdf, K, E, dfg, E_avg, gen_schlick_s, gen_schlick_ior_s or "
           "f82_bias)");
     }
-    if (IsFresnelShape(q)) {
-      if (req.model.kind != ModelKind::kGgx) {
-        Bad("{quantity}: " + q + " is baked for model ggx only (got '" + std::string(req.model.name()) + "')");
+    // The models with a table of the quantity (ModelBakes).
+    if (IsTableQuantity(q) && !ModelBakes(req.model.kind, ParseTable(q))) {
+      const std::vector<std::string> models = ModelsBaking(ParseTable(q));
+      std::string list;
+      for (size_t k = 0; k < models.size(); ++k) {
+        list += (k == 0 ? "" : k + 1 == models.size() ? " and " : ", ") + models[k];
       }
+      Bad("{quantity}: " + q + " is baked for " + list + " only (got '" + std::string(req.model.name()) + "')");
+    }
+    if (IsFresnelShape(q)) {
       if (q == "gen_schlick_s" && !(req.exponent >= 0)) {
         Bad("{exponent} must be >= 0 or inf (s_h = (1 - wo.h)^exponent; got " + ExactText(req.exponent) + ")");
       }
@@ -79,19 +85,7 @@ void ValidateEvalRequest(const EvalRequest& req) {
     }
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
-      const ModelKind kind = req.model.kind;
-      const std::string m = req.model.name();
-      const bool ellipsoid = kind == ModelKind::kEllipsoid;
-      const bool lobe = kind == ModelKind::kCharlie || kind == ModelKind::kDisneyDiffuse;
-      if (kind != ModelKind::kGgx && kind != ModelKind::kBeckmann && kind != ModelKind::kStudentT &&
-          !aniso && !ellipsoid && !lobe && !glass) {
-        Bad("{quantity}: " + q + " is baked for ggx, ggx-aniso, beckmann, std, ellipsoid, charlie, "
-            "disney-diffuse and ggx-glass only (got '" + m + "')");
-      }
-      if ((aniso || ellipsoid || lobe || glass) && q == "dfg") {
-        Bad("{quantity}: " + m + " has E and E_avg (no dfg)");
-      }
-      if (ellipsoid) continue;  // the material's own widths and angles
+      if (req.model.kind == ModelKind::kEllipsoid) continue;  // the material's own widths and angles
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("{quantity}: " + q + " is tabulated for isotropic models: give {alpha} or {roughness}, "
             "not {alpha_x}/{alpha_y}");

@@ -29,33 +29,76 @@ namespace brdfbake {
 namespace {
 
 // Every table kind in one row: its name, what `--table`'s help says of it
-// (marked parameters), whether the quadrature alone bakes it, and for a
-// term of the GGX lobe alone (gen_schlick, f82_bias) what it is and what
-// it stores in place of a complement.
+// (marked parameters), whether the quadrature alone bakes it, and for the
+// table of one model's lobe alone (sel_norm; gen_schlick and f82_bias of
+// GGX) that model, what the table is and what it stores in place of a
+// complement.
 struct KindRow {
   TableKind kind;
   const char* name;
   const char* help;  // "" or a note after the name; rows with one note share it
   bool quadrature_only;
-  const char* ggx_term;  // nullptr for the tables of every model
+  const char* term;  // nullptr for the tables of every model
+  ModelKind model;   // the model of `term`
   const char* stores;
 };
 
 constexpr KindRow kKindRows[] = {
-    {TableKind::kE, "E", "", false, nullptr, nullptr},
-    {TableKind::kEavg, "E_avg", "", false, nullptr, nullptr},
-    {TableKind::kDfg, "dfg", "", false, nullptr, nullptr},
-    {TableKind::kSelNorm, "sel_norm", "with {model} sel", true, nullptr, nullptr},
+    {TableKind::kE, "E", "", false, nullptr, ModelKind::kGgx, nullptr},
+    {TableKind::kEavg, "E_avg", "", false, nullptr, ModelKind::kGgx, nullptr},
+    {TableKind::kDfg, "dfg", "", false, nullptr, ModelKind::kGgx, nullptr},
+    {TableKind::kSelNorm, "sel_norm", "with {model} sel", true, "the integral of the sel lobe", ModelKind::kSel,
+     "N and N / (4 pi alpha_x alpha_y), no complement"},
     {TableKind::kGenSchlickS, "gen_schlick_s",
      "the generalized Schlick factor s of GGX over mu x roughness x exponent or ior", true,
-     "the Fresnel factor of a GGX reflection lobe", "s itself"},
+     "the Fresnel factor of a GGX reflection lobe", ModelKind::kGgx, "s itself"},
     {TableKind::kGenSchlickIorS, "gen_schlick_ior_s",
      "the generalized Schlick factor s of GGX over mu x roughness x exponent or ior", true,
-     "the Fresnel factor of a GGX reflection lobe", "s itself"},
+     "the Fresnel factor of a GGX reflection lobe", ModelKind::kGgx, "s itself"},
     {TableKind::kF82Bias, "f82_bias",
      "GGX's F82-tint term, wo.h (1 - wo.h)^6 weighting its energy, over mu x roughness", true,
-     "the F82-tint term of a GGX reflection lobe", "the term itself"},
+     "the F82-tint term of a GGX reflection lobe", ModelKind::kGgx, "the term itself"},
 };
+
+constexpr unsigned Bit(TableKind t) { return 1u << static_cast<unsigned>(t); }
+constexpr unsigned kLobeTables = Bit(TableKind::kE) | Bit(TableKind::kEavg) | Bit(TableKind::kDfg);
+constexpr unsigned kAlbedoTables = Bit(TableKind::kE) | Bit(TableKind::kEavg);
+
+// Every model's tables in one row, in the registry's order: the table
+// kinds it bakes (besides the tables of another model's lobe, which
+// KindRow::term refuses first), whether its rules have a sampling
+// counterpart, and what the refusal of another table says it bakes. The rules of the quadrature-only models
+// integrate over their own domains (slope planes, the lobe's sphere, both
+// sides of an interface).
+struct ModelTablesRow {
+  ModelKind kind;
+  unsigned tables;  // Bit(TableKind)
+  bool quadrature_only;
+  const char* bakes;  // "{table}: <model> bakes <bakes>"
+};
+
+constexpr ModelTablesRow kModelTables[] = {
+    {ModelKind::kGgx,
+     kLobeTables | Bit(TableKind::kGenSchlickS) | Bit(TableKind::kGenSchlickIorS) | Bit(TableKind::kF82Bias), false,
+     "E, E_avg and dfg"},
+    {ModelKind::kGgxAniso, kAlbedoTables, true, "E and E_avg (no dfg)"},
+    {ModelKind::kBeckmann, kLobeTables, false, "E, E_avg and dfg"},
+    {ModelKind::kStudentT, kLobeTables, false, "E, E_avg and dfg"},
+    {ModelKind::kEllipsoid, kAlbedoTables, true, "E (over mu and phi_o) and E_avg (no dfg)"},
+    {ModelKind::kSel, Bit(TableKind::kSelNorm), true, "sel_norm, its lobe's integral ({table} sel_norm)"},
+    {ModelKind::kCharlie, kAlbedoTables, false,
+     "E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)"},
+    {ModelKind::kDisneyDiffuse, kAlbedoTables, false,
+     "E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)"},
+    {ModelKind::kGgxGlass, kAlbedoTables, true, "E and E_avg (reflection plus refraction; no dfg)"},
+};
+
+const ModelTablesRow& TablesOf(ModelKind m) {
+  for (const ModelTablesRow& r : kModelTables) {
+    if (r.kind == m) return r;
+  }
+  return kModelTables[0];
+}
 
 const KindRow& RowOf(TableKind t) {
   for (const KindRow& r : kKindRows) {
@@ -433,15 +476,20 @@ void CheckAxisSize(const Axis& a) {
 }  // namespace
 
 std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec) {
-  const ModelKind m = spec.model.kind;
-  // The rules of these tables have no sampling counterpart: their
-  // integrands are integrated over their own domains (slope planes, the
-  // lobe's sphere, both sides of an interface) or per slice.
-  if (RowOf(spec.table).quadrature_only || m == ModelKind::kGgxGlass || m == ModelKind::kEllipsoid ||
-      m == ModelKind::kGgxAniso || m == ModelKind::kSel) {
+  if (RowOf(spec.table).quadrature_only || TablesOf(spec.model.kind).quadrature_only) {
     return {IntegratorKind::kQuadrature};
   }
   return {IntegratorKind::kQuadrature, IntegratorKind::kQmc, IntegratorKind::kMc, IntegratorKind::kEngine};
+}
+
+bool ModelBakes(ModelKind model, TableKind table) { return (TablesOf(model).tables & Bit(table)) != 0; }
+
+std::vector<std::string> ModelsBaking(TableKind table) {
+  std::vector<std::string> names;
+  for (const ModelTablesRow& r : kModelTables) {
+    if ((r.tables & Bit(table)) && ModelBuilt(r.kind)) names.push_back(ModelName(r.kind));
+  }
+  return names;
 }
 
 void ValidateBakeSpec(const BakeSpec& spec) {
@@ -452,45 +500,23 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (glass) params.alpha_x = params.alpha_y = 1.0;  // from the roughness axis
   ValidateModelParams(params);
   const ModelKind m = spec.model.kind;
-  if (glass && spec.table != TableKind::kE && spec.table != TableKind::kEavg) {
-    Bad("{table}: ggx-glass bakes E and E_avg (reflection plus refraction; no dfg)");
-  }
   if (spec.inverse && !glass) Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
   const KindRow& kind = RowOf(spec.table);
-  if (kind.ggx_term) {
-    if (m != ModelKind::kGgx) {
-      Bad(std::string("{model}: ") + kind.name + " is " + kind.ggx_term + " (give {model} ggx; got '" +
-          spec.model.name() + "')");
+  if (kind.term) {
+    if (m != kind.model) {
+      Bad(std::string("{model}: ") + kind.name + " is " + kind.term + " (give {model} " + ModelName(kind.model) +
+          "; got '" + spec.model.name() + "')");
     }
     if (spec.complement) Bad(std::string("{complement}: ") + kind.name + " stores " + kind.stores);
+  }
+  if (!ModelBakes(m, spec.table)) {
+    Bad(std::string("{table}: ") + spec.model.name() + " bakes " + TablesOf(m).bakes);
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
     Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +
         std::string(DielectricPartName(spec.part)) + ")");
   }
-  const bool sel = spec.table == TableKind::kSelNorm;
-  if (sel != (m == ModelKind::kSel)) {
-    Bad(sel ? "{table} sel_norm is the integral of the sel lobe: give {model} sel"
-            : "{model} sel: its table is sel_norm ({table} sel_norm)");
-  }
-  if (sel && spec.complement) Bad("{complement}: sel_norm stores N and N / (4 pi alpha_x alpha_y), no complement");
-  const bool sheen = m == ModelKind::kCharlie || m == ModelKind::kDisneyDiffuse;
-  if (sheen && spec.table == TableKind::kDfg) {
-    Bad("{table}: " + std::string(spec.model.name()) +
-        " bakes E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)");
-  }
-  if (sheen && spec.complement && spec.table == TableKind::kDfg) Bad("{complement}: no dfg here");
   const bool ellipsoid = m == ModelKind::kEllipsoid;
-  if (ellipsoid && spec.table == TableKind::kDfg) {
-    Bad("{table}: ellipsoid bakes E (over mu and phi_o) and E_avg (no dfg)");
-  }
-  if (m != ModelKind::kGgx && m != ModelKind::kBeckmann && m != ModelKind::kStudentT && !aniso && !sel && !ellipsoid &&
-      !sheen && !glass) {
-    Bad("{model}: tables are baked for ggx, ggx-aniso, beckmann, std, ellipsoid, sel, charlie, "
-        "disney-diffuse and ggx-glass (got '" +
-        std::string(spec.model.name()) + "')");
-  }
-  if (aniso && spec.table == TableKind::kDfg) Bad("{table}: ggx-aniso bakes E and E_avg (no dfg)");
   const std::vector<IntegratorKind> integrators = TableIntegrators(spec);
   if (std::find(integrators.begin(), integrators.end(), spec.integrator) == integrators.end()) {
     Bad("{integrator}: " +

@@ -18,14 +18,15 @@
 #include "brdfbake/config.h"
 #include "kernels/batch_dispatch.h"
 #include "kernels/flush_subnormals.h"
+#include "kernels/model_row.h"
 
 namespace brdfbake {
 namespace {
 
-// A model's dispatchers (null when the model is not in this build) and
-// whether its kernels run with subnormals flushed to zero: the exponential
-// factors of Beckmann and STD pass through the subnormal range in many
-// lanes of an ordinary row, which x86 handles in microcode
+// A model's dispatchers (model_row.h; null when the model is not in this
+// build) and whether its kernels run with subnormals flushed to zero: the
+// exponential factors of Beckmann and STD pass through the subnormal
+// range in many lanes of an ordinary row, which x86 handles in microcode
 // (flush_subnormals.h).
 struct ModelDispatch {
   BatchEvalFn eval = nullptr;
@@ -36,37 +37,9 @@ struct ModelDispatch {
 };
 
 ModelDispatch DispatchOf(ModelKind kind) {
-  switch (kind) {
-    case ModelKind::kGgx:
-      return {GgxEvalBatch, GgxSampleBatch, false, GgxEvalElementsBatch, GgxSampleElementsBatch};
-#if BRDFBAKE_WITH_BECKMANN
-    case ModelKind::kBeckmann:
-      return {BeckmannEvalBatch, BeckmannSampleBatch, true, BeckmannEvalElementsBatch,
-              BeckmannSampleElementsBatch};
-#endif
-#if BRDFBAKE_WITH_STD
-    case ModelKind::kStudentT:
-      return {StudentTEvalBatch, StudentTSampleBatch, true};
-#endif
-#if BRDFBAKE_WITH_ELLIPSOID
-    case ModelKind::kEllipsoid:
-      return {EllipsoidEvalBatch, EllipsoidSampleBatch, false};
-#endif
-#if BRDFBAKE_WITH_SEL
-    case ModelKind::kSel:
-      return {SelEvalBatch, nullptr, false};
-#endif
-#if BRDFBAKE_WITH_CHARLIE
-    case ModelKind::kCharlie:
-      return {CharlieEvalBatch, CharlieSampleBatch, true};
-#endif
-#if BRDFBAKE_WITH_DISNEY
-    case ModelKind::kDisneyDiffuse:
-      return {DisneyEvalBatch, nullptr, false};
-#endif
-    default:
-      return {};
-  }
+  const ModelRow* r = RowOfModel(kind);
+  if (!r) return {};
+  return {r->eval, r->sample, r->flush_subnormals, r->eval_elements, r->sample_elements};
 }
 
 // Runs f, under the subnormal flush if `flush`.
@@ -126,9 +99,7 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
     Bad(std::string(entry) + ": " + ErrorText(e));
   }
   CheckFresnel(entry, model);
-  const bool no_fresnel =
-      model.kind == ModelKind::kCharlie || model.kind == ModelKind::kDisneyDiffuse;
-  if (no_fresnel && !(model.fresnel == BatchFresnel::kSchlick && model.f0 == 1.0f)) {
+  if (RowOfModel(model.kind)->no_fresnel && !(model.fresnel == BatchFresnel::kSchlick && model.f0 == 1.0f)) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
         " has no Fresnel factor (F = 1): give BatchFresnel::kSchlick with f0 = 1");
   }
@@ -374,43 +345,13 @@ bool IsPairQuantity(Quantity q) {
 }
 
 bool BatchSupports(ModelKind kind, Quantity q) {
-  switch (kind) {
-    case ModelKind::kGgx:
-    case ModelKind::kBeckmann:
-    case ModelKind::kStudentT:
-      return q != Quantity::kK;
-    case ModelKind::kEllipsoid:
-      return q != Quantity::kK && q != Quantity::kPdfNdf;
-    case ModelKind::kSel:
-      return q == Quantity::kK;
-    case ModelKind::kCharlie:
-      return q != Quantity::kK && q != Quantity::kPdfVisible;
-    case ModelKind::kDisneyDiffuse:
-      return q == Quantity::kBrdf;
-    case ModelKind::kGgxAniso:
-    case ModelKind::kGgxGlass:
-      return false;
-  }
-  return false;
+  const ModelRow* r = RowOfModel(kind);
+  return r && (r->quantities & Bit(q)) != 0;
 }
 
 bool BatchSupports(ModelKind kind, Sampler s) {
-  switch (kind) {
-    case ModelKind::kGgx:
-    case ModelKind::kBeckmann:
-    case ModelKind::kStudentT:
-      return true;
-    case ModelKind::kEllipsoid:
-      return s == Sampler::kVisible;
-    case ModelKind::kCharlie:
-      return s == Sampler::kNdf;
-    case ModelKind::kSel:
-    case ModelKind::kGgxAniso:
-    case ModelKind::kDisneyDiffuse:
-    case ModelKind::kGgxGlass:
-      return false;
-  }
-  return false;
+  const ModelRow* r = RowOfModel(kind);
+  return r && (r->samplers & Bit(s)) != 0;
 }
 
 bool BatchSupportsElements(ModelKind kind) { return DispatchOf(kind).eval_elements != nullptr; }

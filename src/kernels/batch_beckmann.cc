@@ -5,7 +5,10 @@
 // beckmann_sampling-inl.h) behind batch.h, compiled once per Highway target
 // by foreach_target.h.
 
+#include "brdfbake/models/beckmann.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
+#include "kernels/ndf_model.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_beckmann.cc"
@@ -78,6 +81,13 @@ namespace brdfbake {
 BRDFBAKE_BATCH_EVAL_DISPATCH(Beckmann)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Beckmann)
 BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Beckmann)
+
+const ModelRow kBeckmannRow = {
+    ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion", true, 0,
+    false, BeckmannEvalBatch, BeckmannSampleBatch, true, BeckmannEvalElementsBatch, BeckmannSampleElementsBatch,
+    kMicrofacetQuantities, Bit(Sampler::kNdf) | Bit(Sampler::kVisible), CheckWidths,
+    [](const ModelParams& p) { return MakeNdfModel(p, BeckmannNdf<double>(p.alpha_x, p.alpha_y)); }};
+extern const ModelFamily kFamily_beckmann = {&kBeckmannRow, 1};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -4,7 +4,12 @@
 // The Charlie sheen's batch kernels (src/kernels/sheen-inl.h) behind
 // batch.h, compiled once per Highway target by foreach_target.h.
 
+#include <cmath>
+
+#include "base/text.h"
+#include "brdfbake/models/sheen.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_charlie.cc"
@@ -87,6 +92,69 @@ namespace brdfbake {
 
 BRDFBAKE_BATCH_EVAL_DISPATCH(Charlie)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Charlie)
+
+namespace {
+
+// The Charlie sheen (models/sheen.h): an NDF with its own visibility; the
+// masking argument does not apply (the conty-kulla G2 is height-correlated).
+class CharlieModel : public Model {
+ public:
+  explicit CharlieModel(const ModelParams& p) : p_(p), sheen_(p.alpha_x, p.visibility) {}
+  const ModelParams& params() const override { return p_; }
+  double D(const Vec3<double>& m) const override { return sheen_.D(m); }
+  double Lambda(const Vec3<double>& w) const override {
+    NeedsMasking("Lambda");
+    return sheen_.Lambda(w);
+  }
+  double G1(const Vec3<double>& w) const override {
+    NeedsMasking("G1");
+    return sheen_.G1(w);
+  }
+  double G2(const Vec3<double>& wi, const Vec3<double>& wo, Masking) const override {
+    NeedsMasking("G2");
+    return sheen_.G2Cos(wi.z, wo.z);
+  }
+  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel, Masking,
+              int) const override {
+    CheckNoFresnel("charlie", fresnel);
+    return sheen_.Brdf(wi, wo);
+  }
+  // The NDF's own sampler (density D(m) m.z): the sheen has no visible-normal one.
+  Vec3<double> Sample(const Vec3<double>&, double u1, double u2) const override { return sheen_.SampleNdf(u1, u2); }
+  double Pdf(const Vec3<double>&, const Vec3<double>& m) const override { return sheen_.PdfNdf(m); }
+
+ private:
+  void NeedsMasking(const char* what) const {
+    if (!SheenHasLambda(p_.visibility)) {
+      Bad(std::string("charlie with the ") + SheenVisibilityName(p_.visibility) + " visibility has no " + what +
+          " (it has no masking term); use the conty-kulla visibility");
+    }
+  }
+  ModelParams p_;
+  CharlieSheen<double> sheen_;
+};
+
+const ModelRow kCharlieRow = {
+    ModelKind::kCharlie, "alpha in (0, 1] (isotropic), visibility neubelt or conty-kulla",
+    "Charlie sheen, [EstevezKulla17]; visibility [Neubelt13] or the paper's fitted Lambda", true,
+    Bit(ModelOption::kVisibility), true, CharlieEvalBatch, CharlieSampleBatch, true, nullptr, nullptr,
+    kMicrofacetQuantities & ~Bit(Quantity::kPdfVisible), Bit(Sampler::kNdf),
+    [](const ModelParams& p) {
+      CheckWidths(p);
+      if (p.alpha_x != p.alpha_y) {
+        Bad("model " + std::string(p.name()) + " is isotropic: alpha_x and alpha_y must be equal (got " +
+            ExactText(p.alpha_x) + " and " + ExactText(p.alpha_y) + ")");
+      }
+      if (p.alpha_x > 1) {
+        Bad("alpha of model " + std::string(p.name()) + " must lie in (0, 1] (roughness at most 1; got " +
+            ExactText(p.alpha_x) + ")");
+      }
+    },
+    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<CharlieModel>(p); }};
+
+}  // namespace
+
+extern const ModelFamily kFamily_charlie = {&kCharlieRow, 1};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -1,7 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
 //
-// The per-model dispatchers behind batch.h, one per src/kernels/batch_<family>.cc:
+// The per-model dispatchers behind batch.h, defined in each
+// src/kernels/batch_<family>.cc and reached through its row (model_row.h):
 // each runs its model's kernels on the target dynamic dispatch picks, for a
 // (model, quantity) pair that batch.cc has checked. `in` holds 3 arrays (one
 // direction) or 6 (a pair); a sampler's `in` is {wo_x, wo_y, wo_z, u1, u2}
@@ -21,31 +22,6 @@ using BatchEvalFn = void (*)(const BatchModel& p, Quantity q, const float* const
 using BatchSampleFn = void (*)(const BatchModel& p, Sampler s, const float* const* in,
                                float* const* out, size_t n);
 
-void GgxEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
-void GgxSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                    size_t n);
-void BeckmannEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                       size_t n);
-void BeckmannSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                         size_t n);
-void StudentTEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                       size_t n);
-void StudentTSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                         size_t n);
-void EllipsoidEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                        size_t n);
-void EllipsoidSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                          size_t n);
-// Per-element parameters (batch.h BatchElements): `in` has 3 more arrays
-// after the directions (alpha_x, alpha_y, F0; null for the call's value).
-void GgxEvalElementsBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                          size_t n);
-void GgxSampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,
-                            float* const* out, size_t n);
-void BeckmannEvalElementsBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                               size_t n);
-void BeckmannSampleElementsBatch(const BatchModel& p, Sampler s, const float* const* in,
-                                 float* const* out, size_t n);
 // True if every a[j], j < n, lies in (lo, hi] (open_low) or [lo, hi];
 // false for NaN (batch_check.cc).
 bool AllWithinBatch(const float* a, size_t n, float lo, float hi, bool open_low);
@@ -56,18 +32,13 @@ bool AllWithinBatch(const float* a, size_t n, float lo, float hi, bool open_low)
 void ReflectBatch(const float* const* in, float* const* out, size_t n);
 void LightWeightBatch(const float* const* in, float* const* out, size_t n);
 
-void SelEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
-void CharlieEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out,
-                      size_t n);
-void CharlieSampleBatch(const BatchModel& p, Sampler s, const float* const* in, float* const* out,
-                        size_t n);
-void DisneyEvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, size_t n);
 // The rough dielectric (batch_glass.cc): `in` holds the 6 arrays of (wi, wo).
 void GlassEvalBatch(const BatchDielectric& p, DielectricQuantity q, const float* const* in,
                     float* out, size_t n);
 
-// In the HWY_ONCE part of src/batch_<model>.cc: exports the per-target
-// Model##Eval (and Model##Sample) and defines the dispatchers above.
+// In the HWY_ONCE part of src/kernels/batch_<family>.cc: exports the
+// per-target Model##Eval (and Model##Sample) and defines its dispatchers
+// Model##EvalBatch (and Model##SampleBatch), which the family's row holds.
 #define BRDFBAKE_BATCH_EVAL_DISPATCH(Model)                                                   \
   HWY_EXPORT(Model##Eval);                                                                    \
   void Model##EvalBatch(const BatchModel& p, Quantity q, const float* const* in, float* out, \

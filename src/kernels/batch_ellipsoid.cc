@@ -4,7 +4,10 @@
 // The ellipsoid NDF's batch kernels (src/kernels/ellipsoid-inl.h, [Walter15])
 // behind batch.h, compiled once per Highway target by foreach_target.h.
 
+#include "brdfbake/models/ellipsoid.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
+#include "kernels/ndf_model.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_ellipsoid.cc"
@@ -53,6 +56,20 @@ namespace brdfbake {
 
 BRDFBAKE_BATCH_EVAL_DISPATCH(Ellipsoid)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ellipsoid)
+
+const ModelRow kEllipsoidRow = {
+    ModelKind::kEllipsoid, "alpha_x, alpha_y, theta_x, theta_y, theta_z",
+    "Walter et al. ellipsoid NDF, [Walter15]; A = S Rx Ry Rz", true, Bit(ModelOption::kRotation), false,
+    EllipsoidEvalBatch, EllipsoidSampleBatch, false, nullptr, nullptr,
+    kMicrofacetQuantities & ~Bit(Quantity::kPdfNdf), Bit(Sampler::kVisible),
+    [](const ModelParams& p) {
+      CheckWidths(p);
+      CheckAngles(p);
+    },
+    [](const ModelParams& p) {
+      return MakeNdfModel(p, EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z));
+    }};
+extern const ModelFamily kFamily_ellipsoid = {&kEllipsoidRow, 1};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -4,7 +4,10 @@
 // The GGX batch kernels (src/kernels/ggx-inl.h, ggx_sampling-inl.h) behind
 // batch.h, compiled once per Highway target by foreach_target.h.
 
+#include "brdfbake/models/ggx.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
+#include "kernels/ndf_model.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_ggx.cc"
@@ -85,6 +88,22 @@ namespace brdfbake {
 BRDFBAKE_BATCH_EVAL_DISPATCH(Ggx)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ggx)
 BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Ggx)
+
+// ggx, and ggx-aniso: GGX whose widths a table takes from the roughness
+// and the anisotropy strength (tables and eval's E only).
+const ModelRow kGgxRows[] = {
+    {ModelKind::kGgx, "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from [Heitz18]", true, 0, false,
+     GgxEvalBatch, GgxSampleBatch, false, GgxEvalElementsBatch, GgxSampleElementsBatch, kMicrofacetQuantities,
+     Bit(Sampler::kNdf) | Bit(Sampler::kVisible), CheckWidths,
+     [](const ModelParams& p) { return MakeNdfModel(p, GgxNdf<double>(p.alpha_x, p.alpha_y)); }},
+    {ModelKind::kGgxAniso, nullptr, nullptr, false, 0, false, nullptr, nullptr, false, nullptr, nullptr, 0, 0,
+     [](const ModelParams&) {
+       Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval {quantity} "
+           "E); for its BRDF give {model} ggx with {alpha_x} and {alpha_y}");
+     },
+     nullptr},
+};
+extern const ModelFamily kFamily_ggx = {kGgxRows, 2};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -5,8 +5,10 @@
 // behind batch.h (DielectricBsdfBatch), compiled once per Highway target by
 // foreach_target.h.
 
+#include "base/text.h"
 #include "brdfbake/config.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_glass.cc"
@@ -62,6 +64,26 @@ void GlassEvalBatch(const BatchDielectric& p, DielectricQuantity q, const float*
                     float* out, size_t n) {
   HWY_DYNAMIC_DISPATCH(GlassEval)(p, q, in, out, n);
 }
+
+// ggx-glass: the rough dielectric over GGX as a table model (E and E_avg);
+// its BSDF is DielectricBsdfBatch, not a Model.
+const ModelRow kGgxGlassRow = {
+    ModelKind::kGgxGlass, "roughness, ior in [0.01, 100] (E and E_avg only)",
+    "rough dielectric over GGX, [Walter07]: reflection + refraction, exact Fresnel", false, Bit(ModelOption::kIor),
+    false, nullptr, nullptr, false, nullptr, nullptr, 0, 0,
+    [](const ModelParams& p) {
+      if (!(p.ior >= kMinFresnelIndex && p.ior <= kMaxFresnelIndex)) {
+        Bad("ior must lie in [0.01, 100] (the relative index of refraction; below 1 light leaves the "
+            "denser medium; got " +
+            ExactText(p.ior) + ")");
+      }
+      CheckWidths(p);
+    },
+    [](const ModelParams&) -> std::unique_ptr<Model> {
+      Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval {quantity} "
+          "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
+    }};
+extern const ModelFamily kFamily_glass = {&kGgxGlassRow, 1};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -7,7 +7,10 @@
 // Lambda, G1, G2, the BRDF and NDF sampling are Beckmann's kernels; the
 // pseudo-VNIS handles that limit itself.
 
+#include "brdfbake/models/std_ndf.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/model_row.h"
+#include "kernels/ndf_model.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_std.cc"
@@ -76,6 +79,36 @@ namespace brdfbake {
 
 BRDFBAKE_BATCH_EVAL_DISPATCH(StudentT)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(StudentT)
+
+namespace {
+
+// The STD samples by its pseudo visible-normal importance sampler
+// ([Ribardiere17] Algorithm 1) and reports that density.
+struct PseudoVnis {
+  static Vec3<double> Sample(const StudentTNdf<double>& ndf, const Vec3<double>& wo, double u1, double u2) {
+    return ndf.SamplePseudoVnis(wo, u1, u2);
+  }
+  static double Pdf(const StudentTNdf<double>& ndf, const Vec3<double>& wo, const Vec3<double>& m) {
+    return ndf.PdfPseudoVnis(wo, m);
+  }
+};
+
+const ModelRow kStudentTRow = {
+    ModelKind::kStudentT, "alpha_x, alpha_y, gamma in [1.500001, inf]",
+    "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann", true, Bit(ModelOption::kGamma), false,
+    StudentTEvalBatch, StudentTSampleBatch, true, nullptr, nullptr, kMicrofacetQuantities,
+    Bit(Sampler::kNdf) | Bit(Sampler::kVisible),
+    [](const ModelParams& p) {
+      CheckWidths(p);
+      if (!StudentTGammaAllowed(p.gamma)) Bad("gamma " + StudentTGammaDomain(p.gamma));
+    },
+    [](const ModelParams& p) {
+      return MakeNdfModel<PseudoVnis>(p, StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
+    }};
+
+}  // namespace
+
+extern const ModelFamily kFamily_std = {&kStudentTRow, 1};
 
 }  // namespace brdfbake
 #endif  // HWY_ONCE

@@ -1,5 +1,8 @@
 // Copyright 2026 the brdfbake authors.
 // SPDX-License-Identifier: Apache-2.0
+//
+// The run-time model registry (model.h) over the rows of this build's
+// families (model_row.h): names, help, parameter checks, MakeModel.
 
 #include "brdfbake/model.h"
 
@@ -13,15 +16,17 @@
 
 #include "base/error.h"
 #include "base/text.h"
-#include "brdfbake/models/beckmann.h"
-#include "brdfbake/models/disney_diffuse.h"
-#include "brdfbake/models/ellipsoid.h"
-#include "brdfbake/models/ggx.h"
-#include "brdfbake/models/sel.h"
-#include "brdfbake/models/sheen.h"
 #include "brdfbake/models/std_ndf.h"
+#include "kernels/model_row.h"
 
 namespace brdfbake {
+
+// The families of this build (model_families.inc, written by CMake from
+// BRDFBAKE_MODELS), each defined in its src/kernels/batch_<family>.cc.
+#define BRDFBAKE_FAMILY(f) extern const ModelFamily kFamily_##f;
+#include "kernels/model_families.inc"
+#undef BRDFBAKE_FAMILY
+
 namespace {
 
 void CheckAlpha(const char* name, double a) {
@@ -40,164 +45,46 @@ void CheckAngle(const char* name, double t) {
   }
 }
 
-// Shared implementation for every microfacet distribution type.
-template <class Ndf>
-class NdfModel : public Model {
- public:
-  NdfModel(const ModelParams& p, Ndf ndf) : p_(p), ndf_(ndf) {}
-  const ModelParams& params() const override { return p_; }
-  double D(const Vec3<double>& m) const override { return ndf_.D(m); }
-  double Lambda(const Vec3<double>& w) const override { return ndf_.Lambda(w); }
-  double G1(const Vec3<double>& w) const override { return ndf_.G1(w); }
-  double G2(const Vec3<double>& wi, const Vec3<double>& wo, Masking masking) const override {
-    Vec3<double> h;
-    if (!HalfVector(wi, wo, &h)) return 0.0;
-    return brdfbake::G2(ndf_, wi, wo, h, masking);
-  }
-  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel,
-              Masking masking, int channel) const override {
-    return brdfbake::Brdf(ndf_, fresnel, wi, wo, masking, channel);
-  }
-  Vec3<double> Sample(const Vec3<double>& wo, double u1, double u2) const override;
-  double Pdf(const Vec3<double>& wo, const Vec3<double>& m) const override;
-
- private:
-  ModelParams p_;
-  Ndf ndf_;
+constexpr const ModelFamily* kFamilies[] = {
+#define BRDFBAKE_FAMILY(f) &kFamily_##f,
+#include "kernels/model_families.inc"
+#undef BRDFBAKE_FAMILY
 };
 
-#if BRDFBAKE_WITH_STD
-template <>
-Vec3<double> NdfModel<StudentTNdf<double>>::Sample(const Vec3<double>& wo, double u1,
-                                              double u2) const {
-  return ndf_.SamplePseudoVnis(wo, u1, u2);
-}
-template <>
-double NdfModel<StudentTNdf<double>>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
-  return ndf_.PdfPseudoVnis(wo, m);
-}
-#endif
-template <class Ndf>
-Vec3<double> NdfModel<Ndf>::Sample(const Vec3<double>& wo, double u1, double u2) const {
-  return ndf_.SampleVisible(wo, u1, u2);
-}
-template <class Ndf>
-double NdfModel<Ndf>::Pdf(const Vec3<double>& wo, const Vec3<double>& m) const {
-  return ndf_.PdfVisible(wo, m);
+// Every row of this build, family by family.
+template <class F>
+void ForEachRow(const F& f) {
+  for (const ModelFamily* family : kFamilies) {
+    for (int k = 0; k < family->count; ++k) f(family->rows[k]);
+  }
 }
 
-class SelModel : public Model {
- public:
-  explicit SelModel(const ModelParams& p)
-      : p_(p), lobe_(SelLobe<double>::FromAngles(p.alpha_x, p.alpha_y, p.theta_x,
-                                                 p.theta_y, p.theta_z)) {}
-  const ModelParams& params() const override { return p_; }
-  bool IsMicrofacet() const override { return false; }
-  double D(const Vec3<double>&) const override { NotDefined("D"); }
-  double Lambda(const Vec3<double>&) const override { NotDefined("Lambda"); }
-  double G1(const Vec3<double>&) const override { NotDefined("G1"); }
-  double G2(const Vec3<double>&, const Vec3<double>&, Masking) const override {
-    NotDefined("G2");
-  }
-  double Brdf(const Vec3<double>&, const Vec3<double>&, const Fresnel&, Masking,
-              int) const override {
-    NotDefined("brdf");
-  }
-  Vec3<double> Sample(const Vec3<double>&, double, double) const override {
-    NotDefined("sampling");
-  }
-  double Pdf(const Vec3<double>&, const Vec3<double>&) const override { NotDefined("pdf"); }
-  double K(const Vec3<double>& w) const override { return lobe_.K(w); }
+}  // namespace
 
- private:
-  [[noreturn]] static void NotDefined(const char* what) {
-    Bad(std::string("model sel (a lobe, not a microfacet BRDF) has no ") + what +
-        "; use the quantity K");
-  }
-  ModelParams p_;
-  SelLobe<double> lobe_;
-};
+const ModelRow* RowOfModel(ModelKind kind) {
+  const ModelRow* found = nullptr;
+  ForEachRow([&](const ModelRow& r) {
+    if (r.kind == kind) found = &r;
+  });
+  return found;
+}
 
-// The sheen and the diffuse lobe have no Fresnel factor (F = 1).
-void NoFresnel(const char* model, const Fresnel& f) {
+void CheckWidths(const ModelParams& p) {
+  CheckAlpha("alpha_x", p.alpha_x);
+  CheckAlpha("alpha_y", p.alpha_y);
+}
+
+void CheckAngles(const ModelParams& p) {
+  CheckAngle("theta_x", p.theta_x);
+  CheckAngle("theta_y", p.theta_y);
+  CheckAngle("theta_z", p.theta_z);
+}
+
+void CheckNoFresnel(const char* model, const Fresnel& f) {
   if (f.kind != FresnelKind::kOne) {
     Bad(std::string("model ") + model + " has no Fresnel factor (F = 1); give no Fresnel");
   }
 }
-
-// The Charlie sheen (models/sheen.h): an NDF with its own visibility; the
-// masking argument does not apply (the conty-kulla G2 is height-correlated).
-class CharlieModel : public Model {
- public:
-  explicit CharlieModel(const ModelParams& p) : p_(p), sheen_(p.alpha_x, p.visibility) {}
-  const ModelParams& params() const override { return p_; }
-  double D(const Vec3<double>& m) const override { return sheen_.D(m); }
-  double Lambda(const Vec3<double>& w) const override {
-    NeedsMasking("Lambda");
-    return sheen_.Lambda(w);
-  }
-  double G1(const Vec3<double>& w) const override {
-    NeedsMasking("G1");
-    return sheen_.G1(w);
-  }
-  double G2(const Vec3<double>& wi, const Vec3<double>& wo, Masking) const override {
-    NeedsMasking("G2");
-    return sheen_.G2Cos(wi.z, wo.z);
-  }
-  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel, Masking,
-              int) const override {
-    NoFresnel("charlie", fresnel);
-    return sheen_.Brdf(wi, wo);
-  }
-  // The NDF's own sampler (density D(m) m.z): the sheen has no visible-normal one.
-  Vec3<double> Sample(const Vec3<double>&, double u1, double u2) const override {
-    return sheen_.SampleNdf(u1, u2);
-  }
-  double Pdf(const Vec3<double>&, const Vec3<double>& m) const override { return sheen_.PdfNdf(m); }
-
- private:
-  void NeedsMasking(const char* what) const {
-    if (!SheenHasLambda(p_.visibility)) {
-      Bad(std::string("charlie with the ") + SheenVisibilityName(p_.visibility) + " visibility has no " +
-          what + " (it has no masking term); use the conty-kulla visibility");
-    }
-  }
-  ModelParams p_;
-  CharlieSheen<double> sheen_;
-};
-
-// The Disney diffuse BRDF (models/disney_diffuse.h) at r = sqrt(alpha_x).
-class DisneyDiffuseModel : public Model {
- public:
-  explicit DisneyDiffuseModel(const ModelParams& p) : p_(p), diffuse_(std::sqrt(p.alpha_x)) {}
-  const ModelParams& params() const override { return p_; }
-  bool IsMicrofacet() const override { return false; }
-  double D(const Vec3<double>&) const override { NotDefined("D"); }
-  double Lambda(const Vec3<double>&) const override { NotDefined("Lambda"); }
-  double G1(const Vec3<double>&) const override { NotDefined("G1"); }
-  double G2(const Vec3<double>&, const Vec3<double>&, Masking) const override {
-    NotDefined("G2");
-  }
-  double Brdf(const Vec3<double>& wi, const Vec3<double>& wo, const Fresnel& fresnel, Masking,
-              int) const override {
-    NoFresnel("disney-diffuse", fresnel);
-    return diffuse_.Brdf(wi, wo);
-  }
-  Vec3<double> Sample(const Vec3<double>&, double, double) const override {
-    NotDefined("normal sampling");
-  }
-  double Pdf(const Vec3<double>&, const Vec3<double>&) const override { NotDefined("pdf"); }
-
- private:
-  [[noreturn]] static void NotDefined(const char* what) {
-    Bad(std::string("model disney-diffuse (a diffuse BRDF, no microfacets) has no ") + what +
-        "; use the quantity brdf");
-  }
-  ModelParams p_;
-  DisneyDiffuse<double> diffuse_;
-};
-
-}  // namespace
 
 double Model::K(const Vec3<double>&) const {
   Bad("quantity K is defined for model sel only; model " + std::string(params().name()) + " has D, Lambda, G1, G2, brdf, pdf");
@@ -208,12 +95,12 @@ std::string ModelParams::ToJson() const {
   j["name"] = name();
   j["alpha_x"] = alpha_x;
   j["alpha_y"] = alpha_y;
-  if (kind == ModelKind::kStudentT) {
+  if (ModelTakes(kind, ModelOption::kGamma)) {
     if (std::isinf(gamma)) j["gamma"] = "inf"; else j["gamma"] = gamma;
   }
-  if (kind == ModelKind::kCharlie) j["visibility"] = SheenVisibilityName(visibility);
-  if (kind == ModelKind::kGgxGlass) j["ior"] = ior;
-  if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
+  if (ModelTakes(kind, ModelOption::kVisibility)) j["visibility"] = SheenVisibilityName(visibility);
+  if (ModelTakes(kind, ModelOption::kIor)) j["ior"] = ior;
+  if (ModelTakes(kind, ModelOption::kRotation)) {
     j["theta_x"] = theta_x;
     j["theta_y"] = theta_y;
     j["theta_z"] = theta_z;
@@ -222,28 +109,38 @@ std::string ModelParams::ToJson() const {
 }
 
 const std::vector<ModelInfo>& Models() {
-  static const std::vector<ModelInfo> kModels = {
-      {ModelKind::kGgx, "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from [Heitz18]"},
-#if BRDFBAKE_WITH_BECKMANN
-      {ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion"},
-#endif
-#if BRDFBAKE_WITH_STD
-      {ModelKind::kStudentT, "alpha_x, alpha_y, gamma in [1.500001, inf]", "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann"},
-#endif
-#if BRDFBAKE_WITH_ELLIPSOID
-      {ModelKind::kEllipsoid, "alpha_x, alpha_y, theta_x, theta_y, theta_z", "Walter et al. ellipsoid NDF, [Walter15]; A = S Rx Ry Rz"},
-#endif
-#if BRDFBAKE_WITH_SEL
-      {ModelKind::kSel, "alpha_x, alpha_y, theta_x, theta_y, theta_z (lobe frame Q = Rx Ry Rz)", "squared ellipsoidal lobe K(w), [TokuyoshiHarada]"},
-#endif
-#if BRDFBAKE_WITH_CHARLIE
-      {ModelKind::kCharlie, "alpha in (0, 1] (isotropic), visibility neubelt or conty-kulla", "Charlie sheen, [EstevezKulla17]; visibility [Neubelt13] or the paper's fitted Lambda"},
-#endif
-#if BRDFBAKE_WITH_DISNEY
-      {ModelKind::kDisneyDiffuse, "r = sqrt(alpha) in [0, 1] (isotropic)", "Disney diffuse, [Burley12]; no microfacets"},
-#endif
-  };
+  static const std::vector<ModelInfo> kModels = [] {
+    std::vector<ModelInfo> m;
+    ForEachRow([&](const ModelRow& r) {
+      if (r.family) m.push_back({r.kind, r.parameters, r.source});
+    });
+    return m;
+  }();
   return kModels;
+}
+
+const std::vector<ModelInfo>& ModelsDescribed() {
+  static const std::vector<ModelInfo> kModels = [] {
+    std::vector<ModelInfo> m;
+    ForEachRow([&](const ModelRow& r) {
+      if (r.parameters) m.push_back({r.kind, r.parameters, r.source});
+    });
+    return m;
+  }();
+  return kModels;
+}
+
+bool ModelTakes(ModelKind kind, ModelOption option) {
+  const ModelRow* r = RowOfModel(kind);
+  return r && (r->options & Bit(option)) != 0;
+}
+
+std::vector<std::string> ModelsTaking(ModelOption option) {
+  std::vector<std::string> names;
+  ForEachRow([&](const ModelRow& r) {
+    if (r.options & Bit(option)) names.push_back(ModelName(r.kind));
+  });
+  return names;
 }
 
 namespace {
@@ -252,15 +149,11 @@ constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, Mod
                                 ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso,
                                 ModelKind::kCharlie,   ModelKind::kDisneyDiffuse, ModelKind::kGgxGlass};
 
-// Every model name this build accepts: the families, ggx-aniso (a table
-// model of the ggx family) and ggx-glass (of the glass family).
+// Every model name this build accepts, family by family (ggx-aniso after
+// ggx, ggx-glass with the glass family).
 std::vector<std::string> BuiltModelNames() {
   std::vector<std::string> names;
-  for (const ModelInfo& m : Models()) {
-    names.push_back(ModelName(m.kind));
-    if (m.kind == ModelKind::kGgx) names.push_back(ModelName(ModelKind::kGgxAniso));
-  }
-  if (ModelBuilt(ModelKind::kGgxGlass)) names.push_back(ModelName(ModelKind::kGgxGlass));
+  ForEachRow([&](const ModelRow& r) { names.push_back(ModelName(r.kind)); });
   return names;
 }
 
@@ -305,14 +198,7 @@ SheenVisibility ParseSheenVisibility(const std::string& name) {
       DidYouMean(name, names, {{"ashikhmin", "neubelt"}, {"kulla", "conty-kulla"}, {"enterprise", "enterprise-pbr"}}));
 }
 
-bool ModelBuilt(ModelKind kind) {
-  if (kind == ModelKind::kGgxGlass) return BRDFBAKE_WITH_GLASS != 0;
-  if (kind == ModelKind::kGgxAniso) kind = ModelKind::kGgx;
-  for (const ModelInfo& m : Models()) {
-    if (kind == m.kind) return true;
-  }
-  return false;
-}
+bool ModelBuilt(ModelKind kind) { return RowOfModel(kind) != nullptr; }
 
 bool StudentTGammaAllowed(double gamma) { return gamma >= kMinStudentTGamma<double>; }
 
@@ -322,51 +208,12 @@ std::string StudentTGammaDomain(double gamma) {
 }
 
 void ValidateModelParams(const ModelParams& p) {
-  if (p.kind == ModelKind::kGgxAniso) {
-    Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval {quantity} "
-        "E); for its BRDF give {model} ggx with {alpha_x} and {alpha_y}");
-  }
-  if (!ModelBuilt(p.kind)) {
+  const ModelRow* row = RowOfModel(p.kind);
+  if (!row) {
     Bad("model '" + std::string(p.name()) + "' is not in this build (BRDFBAKE_MODELS; built: " +
         BuiltModels() + ")");
   }
-  if (p.kind == ModelKind::kGgxGlass) {
-    if (!(p.ior >= kMinFresnelIndex && p.ior <= kMaxFresnelIndex)) {
-      Bad("ior must lie in [0.01, 100] (the relative index of refraction; below 1 light leaves the "
-          "denser medium; got " + ExactText(p.ior) + ")");
-    }
-    CheckAlpha("alpha_x", p.alpha_x);
-    CheckAlpha("alpha_y", p.alpha_y);
-    return;
-  }
-  if (p.kind == ModelKind::kDisneyDiffuse) {
-    // r = sqrt(alpha) in [0, 1]: r = 0 is an ordinary diffuse lobe.
-    if (!(p.alpha_x >= 0 && p.alpha_x <= 1) || p.alpha_x != p.alpha_y) {
-      Bad("model disney-diffuse takes one roughness r in [0, 1] (alpha = r^2; got alpha_x " +
-          ExactText(p.alpha_x) + ", alpha_y " + ExactText(p.alpha_y) + ")");
-    }
-    return;
-  }
-  CheckAlpha("alpha_x", p.alpha_x);
-  CheckAlpha("alpha_y", p.alpha_y);
-  if (p.kind == ModelKind::kStudentT && !StudentTGammaAllowed(p.gamma)) {
-    Bad("gamma " + StudentTGammaDomain(p.gamma));
-  }
-  if (p.kind == ModelKind::kCharlie) {
-    if (p.alpha_x != p.alpha_y) {
-      Bad("model " + std::string(p.name()) + " is isotropic: alpha_x and alpha_y must be equal (got " +
-          ExactText(p.alpha_x) + " and " + ExactText(p.alpha_y) + ")");
-    }
-    if (p.alpha_x > 1) {
-      Bad("alpha of model " + std::string(p.name()) + " must lie in (0, 1] (roughness at most 1; got " +
-          ExactText(p.alpha_x) + ")");
-    }
-  }
-  if (p.kind == ModelKind::kEllipsoid || p.kind == ModelKind::kSel) {
-    CheckAngle("theta_x", p.theta_x);
-    CheckAngle("theta_y", p.theta_y);
-    CheckAngle("theta_z", p.theta_z);
-  }
+  row->check(p);
 }
 
 void ValidateFresnel(const Fresnel& f) {
@@ -390,38 +237,7 @@ void ValidateFresnel(const Fresnel& f) {
 
 std::unique_ptr<Model> MakeModel(const ModelParams& p) {
   ValidateModelParams(p);
-  if (p.kind == ModelKind::kGgxGlass) {
-    Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval {quantity} "
-        "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
-  }
-#if BRDFBAKE_WITH_BECKMANN
-  if (p.kind == ModelKind::kBeckmann) {
-    return std::make_unique<NdfModel<BeckmannNdf<double>>>(
-        p, BeckmannNdf<double>(p.alpha_x, p.alpha_y));
-  }
-#endif
-#if BRDFBAKE_WITH_STD
-  if (p.kind == ModelKind::kStudentT) {
-    return std::make_unique<NdfModel<StudentTNdf<double>>>(
-        p, StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
-  }
-#endif
-#if BRDFBAKE_WITH_ELLIPSOID
-  if (p.kind == ModelKind::kEllipsoid) {
-    return std::make_unique<NdfModel<EllipsoidNdf<double>>>(
-        p, EllipsoidNdf<double>(p.alpha_x, p.alpha_y, p.theta_x, p.theta_y, p.theta_z));
-  }
-#endif
-#if BRDFBAKE_WITH_SEL
-  if (p.kind == ModelKind::kSel) return std::make_unique<SelModel>(p);
-#endif
-#if BRDFBAKE_WITH_CHARLIE
-  if (p.kind == ModelKind::kCharlie) return std::make_unique<CharlieModel>(p);
-#endif
-#if BRDFBAKE_WITH_DISNEY
-  if (p.kind == ModelKind::kDisneyDiffuse) return std::make_unique<DisneyDiffuseModel>(p);
-#endif
-  return std::make_unique<NdfModel<GgxNdf<double>>>(p, GgxNdf<double>(p.alpha_x, p.alpha_y));
+  return RowOfModel(p.kind)->make(p);
 }
 
 }  // namespace brdfbake

@@ -204,6 +204,23 @@ bool Given(const CLI::App* app, const char* option) {
   return o != nullptr && o->count() > 0;
 }
 
+// `flag` (given) names a parameter `model` (of `kind`) does not take:
+// "--gamma: model ggx has no gamma (only std does)".
+void CheckOption(const CLI::App* app, const char* flag, brdfbake::ModelKind kind, brdfbake::ModelOption option,
+                 const std::string& model) {
+  if (!Given(app, flag) || brdfbake::ModelTakes(kind, option)) return;
+  static const char* const kWhat[] = {"gamma", "rotation", "sheen visibility", "index of refraction"};
+  const std::vector<std::string> takers = brdfbake::ModelsTaking(option);
+  std::string only;
+  for (size_t k = 0; k < takers.size(); ++k) {
+    only += (k == 0 ? "" : k + 1 == takers.size() ? " and " : ", ") + takers[k];
+  }
+  only += takers.size() == 1 ? " does" : " do";
+  if (option == brdfbake::ModelOption::kIor) only += "; the Fresnel factor's is --eta";
+  Bad(std::string(flag) + ": model " + model + " has no " + kWhat[static_cast<int>(option)] + " (only " + only +
+      ")");
+}
+
 // Options shared by every command that names a model.
 struct ModelOptions {
   std::string model = "ggx";
@@ -251,22 +268,13 @@ struct ModelOptions {
   brdfbake::ModelParams Get(bool mirror_ok = false, bool ior_ok = false) const {
     brdfbake::ModelParams p;
     p.kind = brdfbake::ParseModelKind(model);
-    if (Given(app, "--gamma") && p.kind != brdfbake::ModelKind::kStudentT) {
-      Bad("--gamma: model " + model + " has no gamma (only std does)");
-    }
+    CheckOption(app, "--gamma", p.kind, brdfbake::ModelOption::kGamma, model);
     for (const char* t : {"--theta-x", "--theta-y", "--theta-z"}) {
-      if (Given(app, t) && p.kind != brdfbake::ModelKind::kEllipsoid && p.kind != brdfbake::ModelKind::kSel) {
-        Bad(std::string(t) + ": model " + model + " has no rotation (only ellipsoid and sel do)");
-      }
+      CheckOption(app, t, p.kind, brdfbake::ModelOption::kRotation, model);
     }
-    if (Given(app, "--visibility") && p.kind != brdfbake::ModelKind::kCharlie) {
-      Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
-    }
+    CheckOption(app, "--visibility", p.kind, brdfbake::ModelOption::kVisibility, model);
     p.visibility = brdfbake::ParseSheenVisibility(visibility);
-    if (Given(app, "--ior") && p.kind != brdfbake::ModelKind::kGgxGlass && !ior_ok) {
-      Bad("--ior: model " + model + " has no index of refraction (only ggx-glass does; the Fresnel "
-          "factor's is --eta)");
-    }
+    if (!ior_ok) CheckOption(app, "--ior", p.kind, brdfbake::ModelOption::kIor, model);
     p.ior = ParseNumber("--ior", ior);
     if (!(p.ior >= 0.01 && p.ior <= 100)) {
       Bad("--ior must lie in [0.01, 100] (the relative index of refraction; below 1 light leaves "
@@ -360,12 +368,8 @@ std::string VersionText() {
 
 std::string ModelsHelp() {
   std::string s = "Models:\n";
-  for (const brdfbake::ModelInfo& m : brdfbake::Models()) {
+  for (const brdfbake::ModelInfo& m : brdfbake::ModelsDescribed()) {
     s += std::string("  ") + brdfbake::ModelName(m.kind) + ": " + m.parameters + "\n      " + m.source + "\n";
-  }
-  if (brdfbake::ModelBuilt(brdfbake::ModelKind::kGgxGlass)) {
-    s += "  ggx-glass: roughness, ior in [0.01, 100] (E and E_avg only)\n"
-         "      rough dielectric over GGX, [Walter07]: reflection + refraction, exact Fresnel\n";
   }
   s += "Quantities (--quantity, comma-separated):\n"
        "  D, pdf      swept direction is the microfacet normal m (pdf: density of the\n"
@@ -569,13 +573,9 @@ struct BakeOptions {
     if (table.empty()) Bad("--table: required (E, E_avg or dfg), unless --preset names the tables");
     spec.table = brdfbake::ParseTable(table);
     spec.model.kind = brdfbake::ParseModelKind(model);
-    if (Given(app, "--gamma") && spec.model.kind != brdfbake::ModelKind::kStudentT) {
-      Bad("--gamma: model " + model + " has no gamma (only std does)");
-    }
+    CheckOption(app, "--gamma", spec.model.kind, brdfbake::ModelOption::kGamma, model);
     spec.model.gamma = ParseNumberOrInf("--gamma", gamma);
-    if (Given(app, "--visibility") && spec.model.kind != brdfbake::ModelKind::kCharlie) {
-      Bad("--visibility: model " + model + " has no sheen visibility (only charlie does)");
-    }
+    CheckOption(app, "--visibility", spec.model.kind, brdfbake::ModelOption::kVisibility, model);
     spec.model.visibility = brdfbake::ParseSheenVisibility(visibility);
     const bool lobe = spec.model.kind == brdfbake::ModelKind::kCharlie ||
                       spec.model.kind == brdfbake::ModelKind::kDisneyDiffuse;
