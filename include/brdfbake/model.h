@@ -70,6 +70,9 @@ const std::vector<ModelInfo>& Models();  // the families this build contains
 // The families and the table models with a description of their own
 // (ggx-glass), as the help lists them.
 const std::vector<ModelInfo>& ModelsDescribed();
+// Every model kind of this build, the table models included, family by
+// family (ggx, ggx-aniso, beckmann, ...).
+std::vector<ModelKind> ModelKindsBuilt();
 
 // The parameters some models take beside their widths: std's gamma, the
 // ellipsoid's and sel's rotation (theta_x, theta_y, theta_z), charlie's

@@ -17,6 +17,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "bake/family_row.h"
 #include "bake/warp_coordinates.h"
 #include "base/error.h"
 #include "base/text.h"
@@ -59,46 +60,6 @@ constexpr KindRow kKindRows[] = {
      "GGX's F82-tint term, wo.h (1 - wo.h)^6 weighting its energy, over mu x roughness", true,
      "the F82-tint term of a GGX reflection lobe", ModelKind::kGgx, "the term itself"},
 };
-
-constexpr unsigned Bit(TableKind t) { return 1u << static_cast<unsigned>(t); }
-constexpr unsigned kLobeTables = Bit(TableKind::kE) | Bit(TableKind::kEavg) | Bit(TableKind::kDfg);
-constexpr unsigned kAlbedoTables = Bit(TableKind::kE) | Bit(TableKind::kEavg);
-
-// Every model's tables in one row, in the registry's order: the table
-// kinds it bakes (besides the tables of another model's lobe, which
-// KindRow::term refuses first), whether its rules have a sampling
-// counterpart, and what the refusal of another table says it bakes. The rules of the quadrature-only models
-// integrate over their own domains (slope planes, the lobe's sphere, both
-// sides of an interface).
-struct ModelTablesRow {
-  ModelKind kind;
-  unsigned tables;  // Bit(TableKind)
-  bool quadrature_only;
-  const char* bakes;  // "{table}: <model> bakes <bakes>"
-};
-
-constexpr ModelTablesRow kModelTables[] = {
-    {ModelKind::kGgx,
-     kLobeTables | Bit(TableKind::kGenSchlickS) | Bit(TableKind::kGenSchlickIorS) | Bit(TableKind::kF82Bias), false,
-     "E, E_avg and dfg"},
-    {ModelKind::kGgxAniso, kAlbedoTables, true, "E and E_avg (no dfg)"},
-    {ModelKind::kBeckmann, kLobeTables, false, "E, E_avg and dfg"},
-    {ModelKind::kStudentT, kLobeTables, false, "E, E_avg and dfg"},
-    {ModelKind::kEllipsoid, kAlbedoTables, true, "E (over mu and phi_o) and E_avg (no dfg)"},
-    {ModelKind::kSel, Bit(TableKind::kSelNorm), true, "sel_norm, its lobe's integral ({table} sel_norm)"},
-    {ModelKind::kCharlie, kAlbedoTables, false,
-     "E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)"},
-    {ModelKind::kDisneyDiffuse, kAlbedoTables, false,
-     "E and E_avg (no dfg: it has no Fresnel factor; the engines' sheen and diffuse channels are its E)"},
-    {ModelKind::kGgxGlass, kAlbedoTables, true, "E and E_avg (reflection plus refraction; no dfg)"},
-};
-
-const ModelTablesRow& TablesOf(ModelKind m) {
-  for (const ModelTablesRow& r : kModelTables) {
-    if (r.kind == m) return r;
-  }
-  return kModelTables[0];
-}
 
 const KindRow& RowOf(TableKind t) {
   for (const KindRow& r : kKindRows) {
@@ -476,18 +437,20 @@ void CheckAxisSize(const Axis& a) {
 }  // namespace
 
 std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec) {
-  if (RowOf(spec.table).quadrature_only || TablesOf(spec.model.kind).quadrature_only) {
-    return {IntegratorKind::kQuadrature};
-  }
+  const BakerRow* row = BakerRowOf(spec.model.kind);
+  if (RowOf(spec.table).quadrature_only || (row && row->quadrature_only)) return {IntegratorKind::kQuadrature};
   return {IntegratorKind::kQuadrature, IntegratorKind::kQmc, IntegratorKind::kMc, IntegratorKind::kEngine};
 }
 
-bool ModelBakes(ModelKind model, TableKind table) { return (TablesOf(model).tables & Bit(table)) != 0; }
+bool ModelBakes(ModelKind model, TableKind table) {
+  const BakerRow* row = BakerRowOf(model);
+  return row && (row->tables & Bit(table)) != 0;
+}
 
 std::vector<std::string> ModelsBaking(TableKind table) {
   std::vector<std::string> names;
-  for (const ModelTablesRow& r : kModelTables) {
-    if ((r.tables & Bit(table)) && ModelBuilt(r.kind)) names.push_back(ModelName(r.kind));
+  for (const ModelKind m : ModelKindsBuilt()) {
+    if (ModelBakes(m, table)) names.push_back(ModelName(m));
   }
   return names;
 }
@@ -510,7 +473,7 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     if (spec.complement) Bad(std::string("{complement}: ") + kind.name + " stores " + kind.stores);
   }
   if (!ModelBakes(m, spec.table)) {
-    Bad(std::string("{table}: ") + spec.model.name() + " bakes " + TablesOf(m).bakes);
+    Bad(std::string("{table}: ") + spec.model.name() + " bakes " + BakerRowOf(m)->bakes);
   }
   if (spec.part != DielectricPart::kBoth && !glass) {
     Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +

@@ -130,6 +130,12 @@ const std::vector<ModelInfo>& ModelsDescribed() {
   return kModels;
 }
 
+std::vector<ModelKind> ModelKindsBuilt() {
+  std::vector<ModelKind> kinds;
+  ForEachRow([&](const ModelRow& r) { kinds.push_back(r.kind); });
+  return kinds;
+}
+
 bool ModelTakes(ModelKind kind, ModelOption option) {
   const ModelRow* r = RowOfModel(kind);
   return r && (r->options & Bit(option)) != 0;
@@ -153,7 +159,7 @@ constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, Mod
 // ggx, ggx-glass with the glass family).
 std::vector<std::string> BuiltModelNames() {
   std::vector<std::string> names;
-  ForEachRow([&](const ModelRow& r) { names.push_back(ModelName(r.kind)); });
+  for (const ModelKind k : ModelKindsBuilt()) names.push_back(ModelName(k));
   return names;
 }
 
