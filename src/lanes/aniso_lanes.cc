@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/aniso_lanes.h"
 #include "rules/ggx_aniso/aniso_ggx_rule.h"
 
 #undef HWY_TARGET_INCLUDE

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstring>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/ellipsoid_lanes.h"
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
 
 #undef HWY_TARGET_INCLUDE

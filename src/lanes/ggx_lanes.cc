@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/ggx_lanes.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/lanes/ggx_lanes.cc"

@@ -13,7 +13,7 @@
 
 #include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/ggx.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/glass_lanes.h"
 #include "rules/glass/glass_albedo.h"
 #include "rules/glass/glass_albedo_rule.h"
 

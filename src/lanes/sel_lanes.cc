@@ -6,7 +6,7 @@
 
 #include <cstddef>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/sel_lanes.h"
 #include "rules/sel/sel_norm_rule.h"
 
 #undef HWY_TARGET_INCLUDE

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/sheen_lanes.h"
 #include "rules/sheen/sheen_albedo_rule.h"
 
 #undef HWY_TARGET_INCLUDE

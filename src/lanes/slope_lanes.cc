@@ -10,7 +10,7 @@
 #include <limits>
 #include <memory>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/slope_lanes.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/lanes/slope_lanes.cc"

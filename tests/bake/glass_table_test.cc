@@ -22,7 +22,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/presets.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/glass_lanes.h"
 #include "quadrature/gauss_legendre.h"
 #include "reference/glass_reference.h"
 #include "rules/glass/gen_schlick.h"

@@ -28,7 +28,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/presets.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/glass_lanes.h"
 #include "rules/glass/glass_albedo.h"
 #include "util/file_util.h"
 #include "util/preset_util.h"

@@ -32,7 +32,7 @@
 #include <gtest/gtest.h>
 
 #include "brdfbake/targets.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/glass_lanes.h"
 #include "rules/glass/glass_albedo.h"
 #include "rules/glass/glass_albedo_rule.h"
 #include "quadrature/kronrod.h"

@@ -19,7 +19,11 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/targets.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/aniso_lanes.h"
+#include "lanes/ellipsoid_lanes.h"
+#include "lanes/ggx_lanes.h"
+#include "lanes/sel_lanes.h"
+#include "lanes/slope_lanes.h"
 #include "rules/ellipsoid/ellipsoid_albedo.h"
 #include "rules/ellipsoid/ellipsoid_albedo_rule.h"
 #include "rules/ggx_aniso/aniso_ggx.h"

@@ -7,7 +7,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/models/ellipsoid.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/ellipsoid_lanes.h"
 #include "rules/ellipsoid/ellipsoid_albedo.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
 

@@ -7,7 +7,7 @@
 
 #include "brdfbake/bake.h"
 #include "brdfbake/models/sel.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/sel_lanes.h"
 #include "rules/sel/sel_norm.h"
 
 #include <gtest/gtest.h>

@@ -29,7 +29,7 @@
 #include <boost/math/special_functions/bessel.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
-#include "lanes/quadrature_simd.h"
+#include "lanes/slope_lanes.h"
 #include "reference/ref_util.h"
 #include "rules/beckmann/beckmann_azimuth.h"
 #include "rules/slope/azimuthal_slope.h"

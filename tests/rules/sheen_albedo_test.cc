@@ -21,7 +21,7 @@
 #include "brdfbake/models/disney_diffuse.h"
 #include "brdfbake/models/sheen.h"
 #include "brdfbake/targets.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/sheen_lanes.h"
 #include "quadrature/gauss_legendre.h"
 #include "rules/sheen/sheen_albedo.h"
 

@@ -22,7 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "brdfbake/bake.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/slope_lanes.h"
 #include "reference/reference_albedo.h"
 #include "rules/slope/azimuthal_slope.h"
 #include "rules/std/std_azimuth.h"

@@ -10,7 +10,7 @@
 #include "bake/families/lobe_texel.h"
 #include "bake/family_row.h"
 #include "brdfbake/models/sheen.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/sheen_lanes.h"
 #include "rules/sheen/sheen_albedo.h"
 #include "sampling/sampling_integrators.h"
 

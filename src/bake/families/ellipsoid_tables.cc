@@ -13,7 +13,7 @@
 
 #include "bake/family_row.h"
 #include "brdfbake/models/ellipsoid.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/ellipsoid_lanes.h"
 #include "quadrature/adaptive_rule.h"
 #include "quadrature/kronrod.h"
 #include "quadrature/solve_bracketed.h"

@@ -12,7 +12,7 @@
 #include "bake/family_row.h"
 #include "bake/texel_for.h"
 #include "brdfbake/models/ggx.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/aniso_lanes.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
 #include "sampling/texel_integrand.h"
 

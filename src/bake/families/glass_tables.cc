@@ -11,7 +11,7 @@
 
 #include "bake/family_row.h"
 #include "brdfbake/models/dielectric.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/glass_lanes.h"
 #include "quadrature/adaptive_rule.h"
 #include "rules/glass/glass_albedo.h"
 #include "sampling/texel_integrand.h"

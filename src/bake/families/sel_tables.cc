@@ -6,7 +6,7 @@
 // alpha_x alpha_y), by the rule of sel_norm.h.
 
 #include "bake/family_row.h"
-#include "lanes/quadrature_simd.h"
+#include "lanes/sel_lanes.h"
 #include "rules/sel/sel_norm.h"
 
 namespace brdfbake {

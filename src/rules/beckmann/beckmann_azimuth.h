@@ -156,7 +156,7 @@ class BeckmannAzimuthalE : public MomentAzimuthalE {
 
 // E(mu) of isotropic Beckmann by the adaptive rule over theta_i with the
 // integrand at a piece's 15 nodes from `eval(f, theta, out)` (f's
-// operator() node by node for the scalar reference; quadrature_simd.h's
+// operator() node by node for the scalar reference; slope_lanes.h's
 // lanes).
 template <class Eval>
 RuleResult BeckmannAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,

@@ -592,7 +592,7 @@ RuleResult AlbedoOnMesh(const std::vector<double>& mesh, double tol, int max_pie
 
 // GgxAzimuthalAlbedo's rule, with the integrand at a piece's 15 nodes from
 // `eval(f, theta, out)` (f's operator() node by node for the scalar
-// reference; quadrature_simd.h's lanes).
+// reference; ggx_lanes.h's lanes).
 template <class Eval>
 RuleResult GgxAzimuthalAlbedoWith(double alpha, double mu, Masking masking, double tol,
                                        int max_pieces, const Eval& eval) {

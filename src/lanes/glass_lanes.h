@@ -1,0 +1,27 @@
+// Copyright 2026 the brdfbake authors.
+// SPDX-License-Identifier: Apache-2.0
+//
+// The glass family's rule (glass_albedo.h) in double SIMD lanes.
+
+#ifndef BRDFBAKE_SRC_LANES_GLASS_LANES_H_
+#define BRDFBAKE_SRC_LANES_GLASS_LANES_H_
+
+#include "brdfbake/models/brdf.h"
+#include "brdfbake/models/dielectric.h"
+#include "rules/glass/glass_albedo.h"
+
+namespace brdfbake {
+
+// GlassAlbedo (glass_albedo.h) from the parameters, each ray piece's 15
+// nodes in lanes; alpha = 0 is the smooth interface (E = 1; its
+// reflection F, its refraction 1 - F).
+RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
+                           DielectricPart part = DielectricPart::kBoth);
+// Its integrand at 15 angles theta along the ray phi (the values the
+// rule's ScalarGlassNodes gives), for the tests.
+void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
+                         double* v, DielectricPart part = DielectricPart::kBoth);
+
+}  // namespace brdfbake
+
+#endif  // BRDFBAKE_SRC_LANES_GLASS_LANES_H_
