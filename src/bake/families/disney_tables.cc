@@ -41,11 +41,12 @@ void DisneyIntegratorJson(const BakeSpec& spec, nlohmann::json* j) {
              spec.table == TableKind::kEavg ? "8 x 8-point Gauss-Legendre over (mu_i, mu), exact for the polynomial"
                                             : "8-point Gauss-Legendre in mu_i, exact for the polynomial",
              "difference from the 6-point rule (also exact: rounding only) plus 1e-15 E");
+    // E_avg's own exact rule; the sampling integrators' is the generic one.
+    if (spec.table == TableKind::kEavg) {
+      (*j)["E_avg"] = "2 int_0^1 E(mu) mu dmu by the 8 x 8-point Gauss-Legendre rule above (exact)";
+    }
   } else {
     (*j)["sampling"] = "the cosine (pdf wi.z / pi), as HDRP's generator; double scalar code";
-  }
-  if (spec.table == TableKind::kEavg) {
-    (*j)["E_avg"] = "2 int_0^1 E(mu) mu dmu by the 8 x 8-point Gauss-Legendre rule above (exact)";
   }
 }
 
