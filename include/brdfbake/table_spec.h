@@ -250,6 +250,7 @@ std::string SizeForm(const BakeSpec& spec);
 // The integrators a table of `spec`'s kind and model is baked with: every
 // one for E, E_avg and dfg of the isotropic microfacet models and the
 // lobes, the quadrature alone for the others (ValidateBakeSpec's rule).
+// A model this build does not contain is known by its table kind alone.
 std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec);
 // Whether `model` bakes tables of kind `table` (ValidateBakeSpec refuses
 // any other), and the names of this build's models that bake it.

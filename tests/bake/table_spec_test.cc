@@ -166,8 +166,10 @@ TEST(TableSpecTest, IntegratorsAllowed) {
   for (BakeSpec s : {Small(TableKind::kE, ModelKind::kGgxGlass), Small(TableKind::kE, ModelKind::kGgxAniso),
                      Small(TableKind::kGenSchlickS, ModelKind::kGgx), Small(TableKind::kSelNorm, ModelKind::kSel),
                      Small(TableKind::kF82Bias, ModelKind::kGgx)}) {
+    // A model of another build has no row here (and the build's refusal
+    // comes first).
+    if (!ModelBuilt(s.model.kind)) continue;
     EXPECT_EQ(TableIntegrators(s), std::vector<IntegratorKind>{IntegratorKind::kQuadrature});
-    if (!ModelBuilt(s.model.kind)) continue;  // the build's refusal comes first
     s.integrator = IntegratorKind::kQmc;
     try {
       ValidateBakeSpec(s);
