@@ -67,12 +67,8 @@ void ValidateEvalRequest(const EvalRequest& req) {
     }
     // The models with a table of the quantity (ModelBakes).
     if (IsTableQuantity(q) && !ModelBakes(req.model.kind, ParseTable(q))) {
-      const std::vector<std::string> models = ModelsBaking(ParseTable(q));
-      std::string list;
-      for (size_t k = 0; k < models.size(); ++k) {
-        list += (k == 0 ? "" : k + 1 == models.size() ? " and " : ", ") + models[k];
-      }
-      Bad("{quantity}: " + q + " is baked for " + list + " only (got '" + std::string(req.model.name()) + "')");
+      Bad("{quantity}: " + q + " is baked for " + JoinList(ModelsBaking(ParseTable(q)), " and ") + " only (got '" +
+          std::string(req.model.name()) + "')");
     }
     if (IsFresnelShape(q)) {
       if (q == "gen_schlick_s" && !(req.exponent >= 0)) {

@@ -76,9 +76,7 @@ TexelEstimate GenSchlickTexel(const BakeSpec& spec, double alpha, double mu, con
     return v;
   }
   const RuleResult r = GenSchlickFactor(alpha, shape, m, spec.tolerance, spec.EffectiveSamples());
-  v.e = r.value;
-  v.err_e = r.error;
-  return v;
+  return AlbedoTexel(r);
 }
 
 // f82_bias: the F82-tint term at one texel by the visible-normal rule of
@@ -91,9 +89,7 @@ TexelEstimate F82Texel(const BakeSpec& spec, double alpha, double mu) {
     return v;
   }
   const RuleResult r = F82TintBias(alpha, spec.masking, m, spec.tolerance, spec.EffectiveSamples());
-  v.e = r.value;
-  v.err_e = r.error;
-  return v;
+  return AlbedoTexel(r);
 }
 
 // The shape of s_h in slice k of a gen_schlick table: the exponent axis'
@@ -234,13 +230,15 @@ EavgEstimate IntegrateBiasAvg(const BakeSpec& spec, double roughness) {
       s.tolerance, EavgGrading(*BakerRowOf(s.model.kind), s));
 }
 
-EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
-  const double alpha = AlphaFromRoughness(roughness);
+namespace {
+
+// E_avg at the roughness (and ggx-aniso's anisotropy) of `at`: by the
+// quadrature the row's own rule or AdaptiveEavg over its texel, by a
+// sampling integrator the fixed rule below; `index` picks the latter's
+// random streams.
+EavgEstimate EavgAt(const BakeSpec& spec, const TexelAt& at, uint64_t index) {
   if (spec.integrator == IntegratorKind::kQuadrature) {
     const BakerRow& row = *BakerRowOf(spec.model.kind);
-    TexelAt at;
-    at.roughness = roughness;
-    at.alpha = alpha;
     return row.eavg ? row.eavg(spec, at) : AdaptiveEavgOf(row, spec, at);
   }
   // The sampling integrators: a fixed rule, 32-node Gauss-Legendre in s
@@ -252,7 +250,7 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
     for (size_t k = 0; k < gl.x.size(); ++k) {
       const double sv = gl.x[k];
       const TexelEstimate v =
-          Texel(spec, alpha, sv * sv, Mix64(spec.seed ^ Mix64((index << 20) + k + salt)));
+          Texel(spec, at.alpha, sv * sv, Mix64(spec.seed ^ Mix64((index << 20) + k + salt)));
       const double wk = 4 * gl.w[k] * sv * sv * sv;
       acc += wk * v.e;
       acc_err += wk * v.err_e;
@@ -264,6 +262,15 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
   const double f = rule(fine, 0, &err_f);
   const double c = rule(coarse, 1 << 10, &err_c);
   return {f, std::abs(f - c) + err_f};
+}
+
+}  // namespace
+
+EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t index) {
+  TexelAt at;
+  at.roughness = roughness;
+  at.alpha = AlphaFromRoughness(roughness);
+  return EavgAt(spec, at, index);
 }
 
 void ReleaseBakeCaches() { ClearStdAzimuthMoments(); }
@@ -351,17 +358,12 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   } else if (eavg) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
-      const double r = std::max(ax_r.Value(x), ax_r.clamp_min);
-      EavgEstimate e;
-      if (row.eavg && (ellipsoid || aniso)) {
-        // E_avg over the view's azimuth too: the row's rule alone.
-        TexelAt at;
-        at.roughness = r;
-        at.anisotropy = aniso ? spec.anisotropy.Value(z) : 0.0;
-        e = row.eavg(spec, at);
-      } else {
-        e = IntegrateEavg(slice_specs[z], r, uint64_t(i));
-      }
+      // Rows: a parameter axis's slices, or ggx-aniso's anisotropy.
+      TexelAt at;
+      at.roughness = std::max(ax_r.Value(x), ax_r.clamp_min);
+      at.alpha = AlphaFromRoughness(at.roughness);
+      if (aniso) at.anisotropy = spec.anisotropy.Value(z);
+      const EavgEstimate e = EavgAt(slice_specs[slice_specs.size() > 1 ? z : 0], at, uint64_t(i));
       const double value = std::clamp(e.value, 0.0, e_max);
       v0[i] = spec.complement ? 1.0 - value : value;
       error[i] = e.error;

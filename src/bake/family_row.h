@@ -137,6 +137,14 @@ inline EavgEstimate AdaptiveEavgOf(const BakerRow& row, const BakeSpec& slice, c
       slice.tolerance, EavgGrading(row, slice));
 }
 
+// E and its error from an albedo rule's result.
+inline TexelEstimate AlbedoTexel(const RuleResult& r) {
+  TexelEstimate v;
+  v.e = r.value;
+  v.err_e = r.error;
+  return v;
+}
+
 // brdfbake.integrator's description of a quadrature rule.
 inline void Describe(nlohmann::json* j, const char* domain, const char* rule, const char* error_estimate) {
   (*j)["domain"] = domain;

@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bake/family_row.h"
 #include "brdfbake/bake.h"
 #include "brdfbake/config.h"
 #include "brdfbake/models/beckmann.h"
@@ -50,21 +51,14 @@ TexelEstimate QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int
     v.err_scale = r.err_scale;
     return v;
   };
-  // E alone, from a closed-azimuth albedo rule.
-  auto albedo = [](const RuleResult& r) {
-    TexelEstimate v;
-    v.e = r.value;
-    v.err_e = r.error;
-    return v;
-  };
   if constexpr (std::is_same_v<Ndf, GgxNdf<double>>) {
     const double a = ndf.alpha_x();
     if (spec.table == TableKind::kDfg) {
       return texel(spec.simd ? SimdGgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes)
                              : GgxAzimuthalDfg(a, m, spec.masking, tol, max_nodes));
     }
-    return albedo(spec.simd ? SimdGgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
-                            : GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes));
+    return AlbedoTexel(spec.simd ? SimdGgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
+                                 : GgxAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes));
   } else {
     const bool bias = spec.table == TableKind::kDfg;
     // Beckmann's E (and the STD's at gamma = inf, which is Beckmann) with
@@ -73,16 +67,16 @@ TexelEstimate QuadratureFor(const Ndf& ndf, double mu, const BakeSpec& spec, int
     if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) beckmann = std::isinf(ndf.gamma());
     if (beckmann && !bias) {
       const double a = ndf.alpha_x();
-      return albedo(spec.simd ? SimdBeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
-                              : BeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes));
+      return AlbedoTexel(spec.simd ? SimdBeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes)
+                                   : BeckmannAzimuthalAlbedo(a, m, spec.masking, tol, max_nodes));
     }
 #if BRDFBAKE_WITH_STD
     // The STD's E at finite gamma with the azimuth from tabulated moments
     // (std_azimuth.h).
     if constexpr (std::is_same_v<Ndf, StudentTNdf<double>>) {
       if (!bias) {
-        return albedo(spec.simd ? SimdStdAzimuthalAlbedo(ndf, m, spec.masking, tol, max_nodes)
-                                : StdAzimuthalAlbedo(ndf, m, spec.masking, tol, max_nodes));
+        return AlbedoTexel(spec.simd ? SimdStdAzimuthalAlbedo(ndf, m, spec.masking, tol, max_nodes)
+                                     : StdAzimuthalAlbedo(ndf, m, spec.masking, tol, max_nodes));
       }
     }
 #endif

@@ -135,12 +135,14 @@ inline std::string NearestChoice(const std::string& given, const std::vector<std
   return best;
 }
 
-// "a, b or c": the choices of a message.
-inline std::string OrList(const std::vector<std::string>& names) {
+// "a, b or c" (`last` = " or "), "a, b and c" (" and "): a message's list.
+inline std::string JoinList(const std::vector<std::string>& names, const char* last) {
   std::string list;
-  for (size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  for (size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? last : ", ") + names[i];
   return list;
 }
+// The choices of a message: "a, b or c".
+inline std::string OrList(const std::vector<std::string>& names) { return JoinList(names, " or "); }
 
 // "; did you mean 'x'?" for NearestChoice x, else "".
 inline std::string DidYouMean(const std::string& given, const std::vector<std::string>& choices,

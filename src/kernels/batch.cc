@@ -23,25 +23,6 @@
 namespace brdfbake {
 namespace {
 
-// A model's dispatchers (model_row.h; null when the model is not in this
-// build) and whether its kernels run with subnormals flushed to zero: the
-// exponential factors of Beckmann and STD pass through the subnormal
-// range in many lanes of an ordinary row, which x86 handles in microcode
-// (flush_subnormals.h).
-struct ModelDispatch {
-  BatchEvalFn eval = nullptr;
-  BatchSampleFn sample = nullptr;
-  bool flush_subnormals = false;
-  BatchEvalFn eval_elements = nullptr;  // per-element parameters
-  BatchSampleFn sample_elements = nullptr;
-};
-
-ModelDispatch DispatchOf(ModelKind kind) {
-  const ModelRow* r = RowOfModel(kind);
-  if (!r) return {};
-  return {r->eval, r->sample, r->flush_subnormals, r->eval_elements, r->sample_elements};
-}
-
 // Runs f, under the subnormal flush if `flush`.
 template <class F>
 void MaybeFlushed(bool flush, const F& f) {
@@ -82,11 +63,11 @@ void CheckFresnel(const char* entry, const BatchModel& m) {
   Bad(std::string(entry) + ": unknown BatchFresnel");
 }
 
-// The dispatch of a built model whose parameters lie in the domain
-// (batch.h), or a one-line error.
-ModelDispatch Checked(const char* entry, const BatchModel& model) {
-  const ModelDispatch m = DispatchOf(model.kind);
-  if (!m.eval) {
+// The row of a built model with batch kernels whose parameters lie in the
+// domain (batch.h), or a one-line error.
+const ModelRow& Checked(const char* entry, const BatchModel& model) {
+  const ModelRow* row = RowOfModel(model.kind);
+  if (!row || !row->eval) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
         (model.kind == ModelKind::kGgxAniso   ? " is a table model; give ggx with its two widths"
          : model.kind == ModelKind::kGgxGlass ? " is a table model; the rough dielectric's batch is "
@@ -99,17 +80,17 @@ ModelDispatch Checked(const char* entry, const BatchModel& model) {
     Bad(std::string(entry) + ": " + ErrorText(e));
   }
   CheckFresnel(entry, model);
-  if (RowOfModel(model.kind)->no_fresnel && !(model.fresnel == BatchFresnel::kSchlick && model.f0 == 1.0f)) {
+  if (row->no_fresnel && !(model.fresnel == BatchFresnel::kSchlick && model.f0 == 1.0f)) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
         " has no Fresnel factor (F = 1): give BatchFresnel::kSchlick with f0 = 1");
   }
-  return m;
+  return *row;
 }
 
 // The per-element arrays of `e` as the kernels take them (alpha_y falls
 // back on alpha_x), each element checked.
 std::array<const float*, 3> CheckedElements(const char* entry, const BatchModel& model,
-                                            const ModelDispatch& m, const BatchElements& e,
+                                            const ModelRow& m, const BatchElements& e,
                                             size_t n) {
   if (!m.eval_elements) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
@@ -159,14 +140,14 @@ void CheckSampler(const char* entry, const BatchModel& model, Sampler s) {
 
 // Evaluation of checked arguments: `in` holds the 3 or 6 direction arrays,
 // then (with elements) the 3 per-element arrays.
-void EvalChecked(const ModelDispatch& m, const BatchModel& model, bool elements, Quantity q,
+void EvalChecked(const ModelRow& m, const BatchModel& model, bool elements, Quantity q,
                  const float* const* in, float* out, size_t n) {
   (elements ? m.eval_elements : m.eval)(model, q, in, out, n);
 }
 
 void Eval(const BatchModel& model, const BatchElements* e, Quantity q, const DirArrays* dirs,
           int count, float* out, size_t n) {
-  const ModelDispatch m = Checked("EvalBatch", model);
+  const ModelRow& m = Checked("EvalBatch", model);
   CheckQuantity(model, q, count == 2);
   const float* in[9] = {};
   for (int k = 0; k < count; ++k) {
@@ -184,7 +165,7 @@ void Eval(const BatchModel& model, const BatchElements* e, Quantity q, const Dir
 
 void Sample(const BatchModel& model, const BatchElements* e, Sampler s, DirArrays wo,
             const float* u1, const float* u2, DirOutArrays mo, size_t n) {
-  const ModelDispatch m = Checked("SampleBatch", model);
+  const ModelRow& m = Checked("SampleBatch", model);
   CheckSampler("SampleBatch", model, s);
   const float* in[8] = {wo.x, wo.y, wo.z, u1, u2};
   if (e) {
@@ -203,7 +184,7 @@ void Sample(const BatchModel& model, const BatchElements* e, Sampler s, DirArray
 void SampleLight(const BatchModel& model, const BatchElements* e, DirArrays wo, const float* u1,
                  const float* u2, LightSampleArrays wi, size_t n) {
   const char* entry = "SampleLightBatch";
-  const ModelDispatch m = Checked(entry, model);
+  const ModelRow& m = Checked(entry, model);
   CheckSampler(entry, model, Sampler::kVisible);
   std::array<const float*, 3> pe = {};
   if (e) pe = CheckedElements(entry, model, m, *e, n);
@@ -267,7 +248,7 @@ void DielectricBsdfBatch(const BatchDielectric& model, DielectricQuantity q, Dir
   if (n == 0) return;
   const float* in[6] = {wi.x, wi.y, wi.z, wo.x, wo.y, wo.z};
   // Beckmann's exponential passes through the subnormal range (see
-  // ModelDispatch::flush_subnormals).
+  // ModelRow::flush_subnormals).
   MaybeFlushed(model.ndf == ModelKind::kBeckmann, [&] { GlassEvalBatch(model, q, in, out, n); });
 #else
   (void)q, (void)wi, (void)wo, (void)out, (void)n;
@@ -354,7 +335,10 @@ bool BatchSupports(ModelKind kind, Sampler s) {
   return r && (r->samplers & Bit(s)) != 0;
 }
 
-bool BatchSupportsElements(ModelKind kind) { return DispatchOf(kind).eval_elements != nullptr; }
+bool BatchSupportsElements(ModelKind kind) {
+  const ModelRow* r = RowOfModel(kind);
+  return r && r->eval_elements != nullptr;
+}
 
 void EvalBatch(const BatchModel& model, Quantity q, DirArrays w, float* out, size_t n) {
   Eval(model, nullptr, q, &w, 1, out, n);

@@ -108,25 +108,27 @@ std::string ModelParams::ToJson() const {
   return j.dump();
 }
 
+namespace {
+
+// The help lines of the rows `keep` takes, in the registry's order.
+template <class Keep>
+std::vector<ModelInfo> InfoOf(const Keep& keep) {
+  std::vector<ModelInfo> m;
+  ForEachRow([&](const ModelRow& r) {
+    if (keep(r)) m.push_back({r.kind, r.parameters, r.source});
+  });
+  return m;
+}
+
+}  // namespace
+
 const std::vector<ModelInfo>& Models() {
-  static const std::vector<ModelInfo> kModels = [] {
-    std::vector<ModelInfo> m;
-    ForEachRow([&](const ModelRow& r) {
-      if (r.family) m.push_back({r.kind, r.parameters, r.source});
-    });
-    return m;
-  }();
+  static const std::vector<ModelInfo> kModels = InfoOf([](const ModelRow& r) { return r.family; });
   return kModels;
 }
 
 const std::vector<ModelInfo>& ModelsDescribed() {
-  static const std::vector<ModelInfo> kModels = [] {
-    std::vector<ModelInfo> m;
-    ForEachRow([&](const ModelRow& r) {
-      if (r.parameters) m.push_back({r.kind, r.parameters, r.source});
-    });
-    return m;
-  }();
+  static const std::vector<ModelInfo> kModels = InfoOf([](const ModelRow& r) { return r.parameters != nullptr; });
   return kModels;
 }
 

@@ -43,7 +43,10 @@ struct ModelRow {
   unsigned options;  // Bit(ModelOption) of the parameters it takes beside its widths
   bool no_fresnel;   // a lobe without a Fresnel factor (F = 1): the batch takes f0 = 1 only
   // The batch kernels (batch_dispatch.h), null where it has none, and
-  // whether they run with subnormals flushed (batch.cc).
+  // whether they run with subnormals flushed to zero (flush_subnormals.h):
+  // the exponential factors of Beckmann and the STD pass through the
+  // subnormal range in many lanes of an ordinary row, which x86 handles in
+  // microcode.
   BatchEvalFn eval;
   BatchSampleFn sample;
   bool flush_subnormals;

@@ -211,11 +211,7 @@ void CheckOption(const CLI::App* app, const char* flag, brdfbake::ModelKind kind
   if (!Given(app, flag) || brdfbake::ModelTakes(kind, option)) return;
   static const char* const kWhat[] = {"gamma", "rotation", "sheen visibility", "index of refraction"};
   const std::vector<std::string> takers = brdfbake::ModelsTaking(option);
-  std::string only;
-  for (size_t k = 0; k < takers.size(); ++k) {
-    only += (k == 0 ? "" : k + 1 == takers.size() ? " and " : ", ") + takers[k];
-  }
-  only += takers.size() == 1 ? " does" : " do";
+  std::string only = brdfbake::JoinList(takers, " and ") + (takers.size() == 1 ? " does" : " do");
   if (option == brdfbake::ModelOption::kIor) only += "; the Fresnel factor's is --eta";
   Bad(std::string(flag) + ": model " + model + " has no " + kWhat[static_cast<int>(option)] + " (only " + only +
       ")");

@@ -22,10 +22,7 @@ TexelEstimate CharlieQuadrature(const BakeSpec& spec, double alpha, double mu) {
   const int n = spec.EffectiveSamples();
   const RuleResult r = spec.simd ? SimdCharlieAlbedo(alpha, v, mu, spec.tolerance, n)
                                  : CharlieAlbedo(CharlieSheen<double>(alpha, v), mu, spec.tolerance, n);
-  TexelEstimate t;
-  t.e = r.value;
-  t.err_e = r.error;
-  return t;
+  return AlbedoTexel(r);
 }
 
 TexelEstimate CharlieTexel(const BakeSpec& spec, const TexelAt& at, uint64_t seed) {

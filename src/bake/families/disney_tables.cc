@@ -20,10 +20,7 @@ namespace {
 TexelEstimate DisneyQuadrature(const BakeSpec& spec, double alpha, double mu) {
   const double rough = std::sqrt(alpha);
   const RuleResult r = spec.simd ? SimdDisneyAlbedo(rough, mu) : DisneyAlbedo(rough, mu);
-  TexelEstimate t;
-  t.e = r.value;
-  t.err_e = r.error;
-  return t;
+  return AlbedoTexel(r);
 }
 
 TexelEstimate DisneyTexel(const BakeSpec& spec, const TexelAt& at, uint64_t seed) {

@@ -36,10 +36,7 @@ TexelEstimate EllipsoidTexel(const BakeSpec& spec, double mu, double phi, double
                                       phi, spec.masking, tol, spec.EffectiveSamples())
                 : EllipsoidAlbedo(m.alpha_x, m.alpha_y, m.theta_x, m.theta_y, m.theta_z, mu_c,
                                   phi, spec.masking, tol, spec.EffectiveSamples());
-  TexelEstimate v;
-  v.e = a.value;
-  v.err_e = a.error;
-  return v;
+  return AlbedoTexel(a);
 }
 
 // E_avg = (1 / pi) int E cos dwo = int_0^1 4 s^3 A(s) ds, s = sqrt(mu), A

@@ -90,10 +90,7 @@ TexelEstimate AnisoTexel(const BakeSpec& spec, double r, double s, double mu, do
                                      spec.EffectiveSamples())
                 : AnisoGgxAlbedo(alpha_t, r * r, m, phi, spec.masking, spec.tolerance,
                                  spec.EffectiveSamples());
-  TexelEstimate v;
-  v.e = a.value;
-  v.err_e = a.error;
-  return v;
+  return AlbedoTexel(a);
 }
 
 // E_avg = (1 / pi) int E(wo) cos(theta_o) dwo = 2 int_0^1 A(mu) mu dmu

@@ -33,9 +33,7 @@ TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
   const int n = spec.EffectiveSamples();
   const RuleResult r = spec.simd ? SimdGlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part)
                                  : GlassAlbedo(alpha, spec.model.ior, spec.masking, m, spec.tolerance, n, spec.part);
-  v.e = r.value;
-  v.err_e = r.error;
-  return v;
+  return AlbedoTexel(r);
 }
 
 // ggx-glass with eta < 1 (the view inside the denser medium): E_avg as
