@@ -21,18 +21,23 @@
 
 namespace brdfbake {
 
-// The model families, and ggx-aniso: GGX whose widths a table takes from
-// the roughness and the glTF anisotropy strength (bake and eval of E only).
-// kCharlie is the Charlie sheen (models/sheen.h), kDisneyDiffuse the Disney
-// diffuse BRDF (models/disney_diffuse.h). kGgxGlass is the rough dielectric
-// over GGX (models/dielectric.h, [Walter07]): a table model of the glass
-// family (E of reflection and refraction over mu, roughness and ior; E_avg).
+// The model kinds, one per registration of CMakeLists.txt's
+// brdfbake_family (BRDFBAKE_MODEL_KINDS, brdfbake/config.h), family by
+// family: kGgx and kGgxAniso (GGX whose widths a table takes from the
+// roughness and the glTF anisotropy strength; bake and eval of E only),
+// kBeckmann, kStudentT, kEllipsoid, kSel, kCharlie (the Charlie sheen,
+// models/sheen.h), kDisneyDiffuse (models/disney_diffuse.h) and kGgxGlass
+// (the rough dielectric over GGX, models/dielectric.h, [Walter07]: a table
+// model of the glass family, E of reflection and refraction over mu,
+// roughness and ior, and E_avg).
 enum class ModelKind {
-  kGgx, kBeckmann, kStudentT, kEllipsoid, kSel, kGgxAniso, kCharlie, kDisneyDiffuse, kGgxGlass
+#define BRDFBAKE_MODEL_KIND_ENUMERATOR(family, kind, name) k##kind,
+  BRDFBAKE_MODEL_KINDS(BRDFBAKE_MODEL_KIND_ENUMERATOR)
+#undef BRDFBAKE_MODEL_KIND_ENUMERATOR
 };
 
-// The kind's name on the command line and in files: ggx, beckmann, std,
-// ellipsoid, sel, ggx-aniso, charlie, disney-diffuse, ggx-glass.
+// The kind's name on the command line and in files: ggx, ggx-aniso,
+// beckmann, std, ellipsoid, sel, charlie, disney-diffuse, ggx-glass.
 const char* ModelName(ModelKind kind);
 
 // The kind `name` names; std::invalid_argument with a one-line message

@@ -12,13 +12,10 @@
 
 #include "brdfbake/batch.h"
 #include "brdfbake/model.h"
-#include "brdfbake/models/beckmann.h"
 #include "brdfbake/models/brdf.h"
-#include "brdfbake/models/ellipsoid.h"
-#include "brdfbake/models/ggx.h"
-#include "brdfbake/models/kernel_bounds.h"
-#include "brdfbake/models/std_ndf.h"
 #include "brdfbake/targets.h"
+#include "kernels/model_row.h"
+#include "kernels/stability_probe.h"
 
 namespace brdfbake {
 namespace {
@@ -40,12 +37,30 @@ struct Params {
   double ax, ay, gamma, tx, ty, tz;
 };
 
+// The models a region draws for: every model with a stability probe
+// (model_row.h), or those of them that take gamma or a rotation.
+enum class RegionModels { kAll, kGamma, kRotation };
+
 struct Region {
   const char* name;
-  std::vector<ModelKind> models;
+  RegionModels models;
   // Draws parameters and two directions (mu of the first is the swept one).
   std::function<void(std::mt19937_64&, Params*, double* mu)> draw;
 };
+
+// Whether the region draws for the row's model.
+bool RegionDraws(const Region& region, const ModelRow& row) {
+  if (!row.stability) return false;
+  switch (region.models) {
+    case RegionModels::kAll:
+      return true;
+    case RegionModels::kGamma:
+      return (row.options & Bit(ModelOption::kGamma)) != 0;
+    case RegionModels::kRotation:
+      return (row.options & Bit(ModelOption::kRotation)) != 0;
+  }
+  return false;
+}
 
 double U(std::mt19937_64& r) { return std::uniform_real_distribution<double>(0, 1)(r); }
 double LogU(std::mt19937_64& r, double lo, double hi) { return lo * std::pow(hi / lo, U(r)); }
@@ -53,44 +68,44 @@ double LogU(std::mt19937_64& r, double lo, double hi) { return lo * std::pow(hi 
 std::vector<Region> Regions() {
   const double deg = 3.141592653589793 / 180;
   return {
-      {"typical", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
+      {"typical", RegionModels::kAll,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 0.05, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = 0.05 + 0.95 * U(r);
        }},
-      {"tiny alpha", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
+      {"tiny alpha", RegionModels::kAll,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-4, 1e-3);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
-      {"grazing mu", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
+      {"grazing mu", RegionModels::kAll,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = LogU(r, 1e-6, 1e-2);
        }},
-      {"heavy tails", {ModelKind::kStudentT},
+      {"heavy tails", RegionModels::kGamma,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = 1.5 + LogU(r, 1e-3, 0.1);
          *mu = U(r);
        }},
-      {"light tails", {ModelKind::kStudentT},
+      {"light tails", RegionModels::kGamma,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = p->ay = LogU(r, 1e-3, 1);
          p->gamma = LogU(r, 1e2, 1e6);
          *mu = U(r);
        }},
-      {"anisotropy 1000:1", {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid},
+      {"anisotropy 1000:1", RegionModels::kAll,
        [](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = LogU(r, 0.1, 1);
          p->ay = p->ax / LogU(r, 100, 1000);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
-      {"rotations to 80 deg", {ModelKind::kEllipsoid},
+      {"rotations to 80 deg", RegionModels::kRotation,
        [deg](std::mt19937_64& r, Params* p, double* mu) {
          p->ax = LogU(r, 1e-2, 1);
          p->ay = LogU(r, 1e-2, 1);
@@ -100,18 +115,6 @@ std::vector<Region> Regions() {
          *mu = U(r);
        }},
   };
-}
-
-// The float-rounded copy of a direction, built from float values that went
-// through memory: with GCC 12 at -O2 a Vec3<float> constructed from a
-// Vec3<double> was seen to keep its double values (printed (double) of the
-// float members had 52-bit mantissas), so the "float" path ran on unrounded
-// inputs and the comparison measured the inputs' rounding instead of the
-// arithmetic.
-Vec3<float> RoundToFloat(const Vec3<double>& v) {
-  volatile float c[3] = {static_cast<float>(v.x), static_cast<float>(v.y),
-                         static_cast<float>(v.z)};
-  return Vec3<float>(c[0], c[1], c[2]);
 }
 
 double RelErr(double f, double d) { return std::abs(f - d) / std::max(std::abs(d), kValueFloor); }
@@ -135,39 +138,19 @@ void Record(StabilityRow* row, double value, double ref, bool lambda, double bou
   row->max_error_over_bound = std::max(row->max_error_over_bound, err / bound);
 }
 
-// Squared unit-roughness slope of the normal m under the stretch (ax, ay).
-double UnitSlope2(const Vec3<double>& m, double ax, double ay) {
-  const double sx = m.x / ax, sy = m.y / ay;
-  return (sx * sx + sy * sy) / (m.z * m.z);
-}
-// a = cot(theta) / alpha of the direction w (the argument of Lambda_std).
-double LambdaArg(const Vec3<double>& w, double ax, double ay) {
-  const double px = ax * w.x, py = ay * w.y;
-  return w.z / std::sqrt(std::max(px * px + py * py, 1e-300));
-}
-Vec3<double> Half(const Vec3<double>& a, const Vec3<double>& b) {
-  Vec3<double> h(0, 0, 1);
-  HalfVector(a, b, &h);
-  return h;
-}
-
 // The SIMD kernel of one model at one sample: D(m), Lambda(a) and the BRDF
-// (a, b), each against the double reference at the same float inputs and
-// against its documented bound (include/brdfbake/models/kernel_bounds.h).
-struct SampleBounds {
-  double d = 0, lambda = 0, brdf = 0;
-};
-
-SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m_in,
-                         const Vec3<double>& a_in, const Vec3<double>& b_in, StabilityRow* rows) {
-  SampleBounds sb;
+// (a, b) at the float-rounded inputs, each against the row's double
+// reference and its bound at the same inputs (the probe's); then the float
+// instantiation of the scalar reference against double, bounded by
+// kFloatReferenceBound or the SIMD kernel's bound at the same sample (the
+// same arithmetic, conditioned by the same inputs), whichever is larger.
+void Measure(const ModelRow& row, const Params& p, const Vec3<double>& m_in, const Vec3<double>& a_in,
+             const Vec3<double>& b_in, StabilityRow* rows, StabilityRow* srows) {
   const Vec3<float> af = RoundToFloat(a_in), bf = RoundToFloat(b_in), mf = RoundToFloat(m_in);
-  const Vec3<double> a(af), b(bf), m(mf);
-  const float ax = static_cast<float>(p.ax), ay = static_cast<float>(p.ay);
   BatchModel bp;
-  bp.kind = model;
-  bp.alpha_x = ax;
-  bp.alpha_y = ay;
+  bp.kind = row.kind;
+  bp.alpha_x = static_cast<float>(p.ax);
+  bp.alpha_y = static_cast<float>(p.ay);
   bp.gamma = static_cast<float>(p.gamma);
   bp.theta_x = static_cast<float>(p.tx);
   bp.theta_y = static_cast<float>(p.ty);
@@ -176,77 +159,27 @@ SampleBounds MeasureSimd(ModelKind model, const Params& p, const Vec3<double>& m
   EvalBatch(bp, Quantity::kD, {&mf.x, &mf.y, &mf.z}, &d, 1);
   EvalBatch(bp, Quantity::kLambda, {&af.x, &af.y, &af.z}, &l, 1);
   EvalBatch(bp, Quantity::kBrdf, {&af.x, &af.y, &af.z}, {&bf.x, &bf.y, &bf.z}, &f, 1);
-  if (model == ModelKind::kGgx) {
-    const GgxNdf<double> nd(ax, ay);
-    sb = {bounds::kGgxRel, bounds::kGgxRel, bounds::kGgxRel};
-    Record(&rows[0], d, nd.D(m), false, sb.d);
-    Record(&rows[1], l, nd.Lambda(a), true, sb.lambda);
-    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
-           sb.brdf);
+  ModelParams mp;
+  mp.kind = row.kind;
+  mp.alpha_x = p.ax;
+  mp.alpha_y = p.ay;
+  mp.gamma = p.gamma;
+  mp.theta_x = p.tx;
+  mp.theta_y = p.ty;
+  mp.theta_z = p.tz;
+  StabilitySample s;
+  row.stability(mp, m_in, a_in, b_in, &s);
+  const double simd[3] = {d, l, f};
+  const int simd_q[3] = {kStabilityD, kStabilityLambda, kStabilityBrdf};
+  for (int k = 0; k < 3; ++k) {
+    const int q = simd_q[k];
+    Record(&srows[k], simd[k], s.ref[q], q == kStabilityLambda, s.bound[q], s.flush[q]);
   }
-#if BRDFBAKE_WITH_BECKMANN
-  if (model == ModelKind::kBeckmann || model == ModelKind::kStudentT) {
-    const bool beck = model == ModelKind::kBeckmann;
-    const double gamma = beck ? std::numeric_limits<double>::infinity()
-                              : static_cast<double>(static_cast<float>(p.gamma));
-    const double slope = beck ? bounds::kBeckmannExpSlope : bounds::kStudentTExpSlope;
-    const double brdf_slope = beck ? bounds::kBeckmannBrdfExpSlope : bounds::kStudentTExpSlope;
-    const StudentTNdf<double> nd(ax, ay, gamma);  // gamma = inf is Beckmann
-    // The exponent E of the exponential factor (see kernel_bounds.h).
-    auto exponent = [&](const Vec3<double>& n) {
-      const double r2 = UnitSlope2(n, ax, ay);
-      return beck ? r2 : gamma * std::log1p(r2 / (gamma - 1));
-    };
-    const double e_m = exponent(m), e_h = exponent(Half(a, b));
-    const double lref = nd.Lambda(a);
-    const double l_bound =
-        std::isinf(lref) ? 1.0 : bounds::SlopeLambdaAbs(LambdaArg(a, ax, ay), lref) / (1 + lref);
-    sb = {bounds::SlopeD(e_m, slope), l_bound, bounds::SlopeBrdf(e_h, brdf_slope)};
-    Record(&rows[0], d, nd.D(m), false, sb.d, e_m > bounds::kFlushExponent);
-    Record(&rows[1], l, lref, true, sb.lambda);
-    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
-           sb.brdf, e_h > bounds::kFlushExponent);
-  }
-#endif  // BRDFBAKE_WITH_BECKMANN
-#if BRDFBAKE_WITH_ELLIPSOID
-  if (model == ModelKind::kEllipsoid) {
-    const EllipsoidNdf<double> nd(bp.alpha_x, bp.alpha_y, bp.theta_x, bp.theta_y, bp.theta_z);
-    const Mat3<double>& m_a = nd.shape_matrix();
-    const Mat3<double> m_ait =
-        bounds::EllipsoidKernelInvT(ax, ay, bp.theta_x, bp.theta_y, bp.theta_z);
-    const double li = nd.Lambda(a), lo = nd.Lambda(b);
-    const double l_bound = std::isinf(li) ? 1.0
-                                          : bounds::kEllipsoidLambdaRel * bounds::Kappa(m_a, a) *
-                                                bounds::EllipsoidLambdaScale(m_a, a, li) / (1 + li);
-    sb = {bounds::kEllipsoidDRel * bounds::Kappa(m_ait, m), l_bound,
-          bounds::kEllipsoidBrdfRel * bounds::EllipsoidBrdfCondition(m_a, m_ait, a, b, li, lo)};
-    Record(&rows[0], d, nd.D(m), false, sb.d);
-    Record(&rows[1], l, li, true, sb.lambda);
-    Record(&rows[2], f, Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated), false,
-           sb.brdf);
-  }
-#endif  // BRDFBAKE_WITH_ELLIPSOID
-  return sb;
-}
-
-// Float instantiation of the scalar reference against double, at the same
-// float inputs, bounded by kFloatReferenceBound or the SIMD kernel's bound
-// at the same sample (the same arithmetic, conditioned by the same inputs),
-// whichever is larger.
-template <class NdfD, class NdfF>
-void MeasureFloat(const NdfD& nd, const NdfF& nf, const Vec3<double>& m, const Vec3<double>& a,
-                  const Vec3<double>& b, const SampleBounds& sb, StabilityRow* rows) {
-  const Vec3<float> af = RoundToFloat(a), bf = RoundToFloat(b), mf = RoundToFloat(m);
-  const Vec3<double> ad(af), bd(bf), md(mf);
-  const double vals_f[4] = {nf.D(mf), nf.Lambda(af), nf.G1(af),
-                            Brdf(nf, Fresnel::One(), af, bf, Masking::kHeightCorrelated)};
-  const double vals_d[4] = {nd.D(md), nd.Lambda(ad), nd.G1(ad),
-                            Brdf(nd, Fresnel::One(), ad, bd, Masking::kHeightCorrelated)};
   // G1 = 1 / (1 + Lambda): its relative error is that of 1 + Lambda.
-  const double kernel_bound[4] = {sb.d, sb.lambda, sb.lambda, sb.brdf};
   for (int q = 0; q < 4; ++q) {
-    Record(&rows[q], vals_f[q], vals_d[q], q == 1,
-           std::max(kFloatReferenceBound, kernel_bound[q]));
+    const double kernel_bound = s.bound[q == kStabilityG1 ? kStabilityLambda : q];
+    Record(&rows[q], s.float_value[q], s.double_value[q], q == kStabilityLambda,
+           std::max(kFloatReferenceBound, kernel_bound));
   }
 }
 
@@ -258,8 +191,9 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
   static const char* kSimdQuantities[3] = {"D", "Lambda", "brdf"};
   const std::string simd_kernel = "simd:" + BatchTarget();
   for (const Region& region : Regions()) {
-    for (const ModelKind kind : region.models) {
-      if (!ModelBuilt(kind)) continue;
+    for (const ModelKind kind : ModelKindsBuilt()) {
+      const ModelRow& row = *RowOfModel(kind);
+      if (!RegionDraws(region, row)) continue;
       const char* model = ModelName(kind);
       std::mt19937_64 rng(seed ^ std::hash<std::string>()(std::string(region.name) + model));
       StabilityRow rows[4], srows[3];
@@ -295,23 +229,7 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
           const Vec3<double> r = Reflect(b, m);
           if (r.z > 0) a = r;
         }
-        const SampleBounds sb = MeasureSimd(kind, p, m, a, b, srows);
-        if (kind == ModelKind::kGgx) {
-          MeasureFloat(GgxNdf<double>(p.ax, p.ay), GgxNdf<float>(float(p.ax), float(p.ay)), m, a, b,
-                       sb, rows);
-        } else if (kind == ModelKind::kBeckmann) {
-          MeasureFloat(BeckmannNdf<double>(p.ax, p.ay),
-                       BeckmannNdf<float>(float(p.ax), float(p.ay)), m, a, b, sb, rows);
-        } else if (kind == ModelKind::kStudentT) {
-          MeasureFloat(StudentTNdf<double>(p.ax, p.ay, p.gamma),
-                       StudentTNdf<float>(float(p.ax), float(p.ay), float(p.gamma)), m, a, b, sb,
-                       rows);
-        } else {
-          MeasureFloat(EllipsoidNdf<double>(p.ax, p.ay, p.tx, p.ty, p.tz),
-                       EllipsoidNdf<float>(float(p.ax), float(p.ay), float(p.tx), float(p.ty),
-                                           float(p.tz)),
-                       m, a, b, sb, rows);
-        }
+        Measure(row, p, m, a, b, rows, srows);
       }
       for (const StabilityRow& r : rows) out.push_back(r);
       for (const StabilityRow& r : srows) out.push_back(r);

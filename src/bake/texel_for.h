@@ -28,7 +28,8 @@
 #include "rules/slope/azimuthal_slope.h"
 #include "rules/std/std_azimuth.h"
 #include "sampling/sampling_integrators.h"
-#include "sampling/sampling_simd.h"
+#include "sampling/ggx_sampling_simd.h"
+#include "sampling/slope_sampling_simd.h"
 
 namespace brdfbake {
 

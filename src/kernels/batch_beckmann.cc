@@ -9,6 +9,7 @@
 #include "kernels/batch_dispatch.h"
 #include "kernels/model_row.h"
 #include "kernels/ndf_model.h"
+#include "kernels/slope_stability.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_beckmann.cc"
@@ -82,11 +83,20 @@ BRDFBAKE_BATCH_EVAL_DISPATCH(Beckmann)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Beckmann)
 BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Beckmann)
 
+// The stability study's probe (stability_probe.h, slope_stability.h).
+void BeckmannStability(const ModelParams& p, const Vec3<double>& m, const Vec3<double>& a, const Vec3<double>& b,
+                       StabilitySample* out) {
+  ProbeSlopeKernels(true, p, m, a, b, out);
+  ProbeFloatReference(BeckmannNdf<double>(p.alpha_x, p.alpha_y),
+                      BeckmannNdf<float>(static_cast<float>(p.alpha_x), static_cast<float>(p.alpha_y)), m, a, b, out);
+}
+
 const ModelRow kBeckmannRow = {
     ModelKind::kBeckmann, "alpha_x, alpha_y", "Gaussian slopes; exact VNDF sampling by CDF inversion", true, 0,
     false, BeckmannEvalBatch, BeckmannSampleBatch, true, BeckmannEvalElementsBatch, BeckmannSampleElementsBatch,
     kMicrofacetQuantities, Bit(Sampler::kNdf) | Bit(Sampler::kVisible), CheckWidths,
-    [](const ModelParams& p) { return MakeNdfModel(p, BeckmannNdf<double>(p.alpha_x, p.alpha_y)); }};
+    [](const ModelParams& p) { return MakeNdfModel(p, BeckmannNdf<double>(p.alpha_x, p.alpha_y)); },
+    BeckmannStability};
 extern const ModelFamily kFamily_beckmann = {&kBeckmannRow, 1};
 
 }  // namespace brdfbake

@@ -150,7 +150,8 @@ const ModelRow kCharlieRow = {
             ExactText(p.alpha_x) + ")");
       }
     },
-    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<CharlieModel>(p); }};
+    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<CharlieModel>(p); },
+    nullptr};
 
 }  // namespace
 

@@ -82,7 +82,8 @@ const ModelRow kDisneyRow = {
             ExactText(p.alpha_x) + ", alpha_y " + ExactText(p.alpha_y) + ")");
       }
     },
-    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<DisneyDiffuseModel>(p); }};
+    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<DisneyDiffuseModel>(p); },
+    nullptr};
 
 }  // namespace
 

@@ -5,6 +5,7 @@
 // batch.h, compiled once per Highway target by foreach_target.h.
 
 #include "brdfbake/models/ggx.h"
+#include "brdfbake/models/kernel_bounds.h"
 #include "kernels/batch_dispatch.h"
 #include "kernels/model_row.h"
 #include "kernels/ndf_model.h"
@@ -89,19 +90,34 @@ BRDFBAKE_BATCH_EVAL_DISPATCH(Ggx)
 BRDFBAKE_BATCH_SAMPLE_DISPATCH(Ggx)
 BRDFBAKE_BATCH_ELEMENTS_DISPATCH(Ggx)
 
+// The stability study's probe (stability_probe.h): the kernels' bound is
+// one relative constant.
+void GgxStability(const ModelParams& p, const Vec3<double>& m_in, const Vec3<double>& a_in,
+                  const Vec3<double>& b_in, StabilitySample* out) {
+  const Vec3<double> m(RoundToFloat(m_in)), a(RoundToFloat(a_in)), b(RoundToFloat(b_in));
+  const GgxNdf<double> nd(static_cast<float>(p.alpha_x), static_cast<float>(p.alpha_y));
+  out->ref[kStabilityD] = nd.D(m);
+  out->ref[kStabilityLambda] = nd.Lambda(a);
+  out->ref[kStabilityBrdf] = Brdf(nd, Fresnel::One(), a, b, Masking::kHeightCorrelated);
+  out->bound[kStabilityD] = out->bound[kStabilityLambda] = out->bound[kStabilityBrdf] = bounds::kGgxRel;
+  ProbeFloatReference(GgxNdf<double>(p.alpha_x, p.alpha_y),
+                      GgxNdf<float>(static_cast<float>(p.alpha_x), static_cast<float>(p.alpha_y)), m_in, a_in, b_in,
+                      out);
+}
+
 // ggx, and ggx-aniso: GGX whose widths a table takes from the roughness
 // and the anisotropy strength (tables and eval's E only).
 const ModelRow kGgxRows[] = {
     {ModelKind::kGgx, "alpha_x, alpha_y", "Trowbridge-Reitz; VNDF sampling from [Heitz18]", true, 0, false,
      GgxEvalBatch, GgxSampleBatch, false, GgxEvalElementsBatch, GgxSampleElementsBatch, kMicrofacetQuantities,
      Bit(Sampler::kNdf) | Bit(Sampler::kVisible), CheckWidths,
-     [](const ModelParams& p) { return MakeNdfModel(p, GgxNdf<double>(p.alpha_x, p.alpha_y)); }},
+     [](const ModelParams& p) { return MakeNdfModel(p, GgxNdf<double>(p.alpha_x, p.alpha_y)); }, GgxStability},
     {ModelKind::kGgxAniso, nullptr, nullptr, false, 0, false, nullptr, nullptr, false, nullptr, nullptr, 0, 0,
      [](const ModelParams&) {
        Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval {quantity} "
            "E); for its BRDF give {model} ggx with {alpha_x} and {alpha_y}");
      },
-     nullptr},
+     nullptr, nullptr},
 };
 extern const ModelFamily kFamily_ggx = {kGgxRows, 2};
 

@@ -82,7 +82,8 @@ const ModelRow kGgxGlassRow = {
     [](const ModelParams&) -> std::unique_ptr<Model> {
       Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval {quantity} "
           "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
-    }};
+    },
+    nullptr};
 extern const ModelFamily kFamily_glass = {&kGgxGlassRow, 1};
 
 }  // namespace brdfbake

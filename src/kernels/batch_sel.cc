@@ -73,7 +73,8 @@ const ModelRow kSelRow = {
       CheckWidths(p);
       CheckAngles(p);
     },
-    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<SelModel>(p); }};
+    [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<SelModel>(p); },
+    nullptr};
 
 }  // namespace
 

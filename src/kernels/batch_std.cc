@@ -11,6 +11,7 @@
 #include "kernels/batch_dispatch.h"
 #include "kernels/model_row.h"
 #include "kernels/ndf_model.h"
+#include "kernels/slope_stability.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/kernels/batch_std.cc"
@@ -93,6 +94,16 @@ struct PseudoVnis {
   }
 };
 
+// The stability study's probe (stability_probe.h, slope_stability.h).
+void StudentTStability(const ModelParams& p, const Vec3<double>& m, const Vec3<double>& a, const Vec3<double>& b,
+                       StabilitySample* out) {
+  ProbeSlopeKernels(false, p, m, a, b, out);
+  ProbeFloatReference(StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma),
+                      StudentTNdf<float>(static_cast<float>(p.alpha_x), static_cast<float>(p.alpha_y),
+                                         static_cast<float>(p.gamma)),
+                      m, a, b, out);
+}
+
 const ModelRow kStudentTRow = {
     ModelKind::kStudentT, "alpha_x, alpha_y, gamma in [1.500001, inf]",
     "Student's t slopes, [Ribardiere17]; gamma=2 is ggx, inf is beckmann", true, Bit(ModelOption::kGamma), false,
@@ -104,7 +115,8 @@ const ModelRow kStudentTRow = {
     },
     [](const ModelParams& p) {
       return MakeNdfModel<PseudoVnis>(p, StudentTNdf<double>(p.alpha_x, p.alpha_y, p.gamma));
-    }};
+    },
+    StudentTStability};
 
 }  // namespace
 

@@ -153,9 +153,12 @@ std::vector<std::string> ModelsTaking(ModelOption option) {
 
 namespace {
 
-constexpr ModelKind kKinds[] = {ModelKind::kGgx,       ModelKind::kBeckmann, ModelKind::kStudentT,
-                                ModelKind::kEllipsoid, ModelKind::kSel,      ModelKind::kGgxAniso,
-                                ModelKind::kCharlie,   ModelKind::kDisneyDiffuse, ModelKind::kGgxGlass};
+// Every known kind, built or not.
+constexpr ModelKind kKinds[] = {
+#define BRDFBAKE_MODEL_KIND_VALUE(family, kind, name) ModelKind::k##kind,
+    BRDFBAKE_MODEL_KINDS(BRDFBAKE_MODEL_KIND_VALUE)
+#undef BRDFBAKE_MODEL_KIND_VALUE
+};
 
 // Every model name this build accepts, family by family (ggx-aniso after
 // ggx, ggx-glass with the glass family).
@@ -175,15 +178,11 @@ std::string BuiltModels() {
 
 const char* ModelName(ModelKind kind) {
   switch (kind) {
-    case ModelKind::kGgx: return "ggx";
-    case ModelKind::kBeckmann: return "beckmann";
-    case ModelKind::kStudentT: return "std";
-    case ModelKind::kEllipsoid: return "ellipsoid";
-    case ModelKind::kSel: return "sel";
-    case ModelKind::kGgxAniso: return "ggx-aniso";
-    case ModelKind::kCharlie: return "charlie";
-    case ModelKind::kDisneyDiffuse: return "disney-diffuse";
-    case ModelKind::kGgxGlass: return "ggx-glass";
+#define BRDFBAKE_MODEL_KIND_NAME(family, kind, name) \
+  case ModelKind::k##kind:                         \
+    return name;
+    BRDFBAKE_MODEL_KINDS(BRDFBAKE_MODEL_KIND_NAME)
+#undef BRDFBAKE_MODEL_KIND_NAME
   }
   return "ggx";
 }

@@ -19,6 +19,7 @@
 #include "brdfbake/batch.h"
 #include "brdfbake/model.h"
 #include "kernels/batch_dispatch.h"
+#include "kernels/stability_probe.h"
 
 namespace brdfbake {
 
@@ -58,6 +59,11 @@ struct ModelRow {
   // and its Model for parameters that passed it (MakeModel).
   void (*check)(const ModelParams& p);
   std::unique_ptr<Model> (*make)(const ModelParams& p);
+  // Its part of the stability study (stability_probe.h), null where its
+  // kernels have none: the study draws for it in every general region,
+  // in the tail regions if it takes gamma, in the rotated ones if it
+  // takes a rotation (src/analysis/stability.cc).
+  StabilityProbeFn stability;
 };
 
 // The rows of one family (BRDFBAKE_MODELS), in the order of its kinds.

@@ -31,7 +31,7 @@ namespace brdfbake {
 // The sums over a point set that the integrators below take: sum(u1, u2,
 // n, &acc, &acc_fc) adds up w and w Fc at the n points (u1[i], u2[i]).
 // The scalar one evaluates `Integrand` (the model's visible-normal
-// sampler) point by point in order; sampling_simd.h has the lanes twins.
+// sampler) point by point in order; <family>_sampling_simd.h have the lanes twins.
 template <class Ndf>
 auto ScalarVisibleSum(const Ndf& ndf, const Vec3<double>& wo, Masking masking) {
   return [f = Integrand<Ndf>(ndf, wo, masking)](const double* u1, const double* u2, int n,

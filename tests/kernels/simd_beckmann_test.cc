@@ -253,7 +253,7 @@ void CheckBeckmannSampleVisible() {
 }
 
 // The same kernels in double lanes (the sampling integrators' samplers,
-// src/sampling/sampling_simd.cc): erf^-1 against boost's erfc_inv, and
+// src/sampling/slope_sampling_simd.cc): erf^-1 against boost's erfc_inv, and
 // BeckmannSampleVisible and BeckmannPdfVisible against BeckmannNdf<double>
 // for the same double (u1, u2), on the random views and the grid of
 // CheckBeckmannSampleVisible with 1 - u1 and u1 down to 2^-50.

@@ -1,5 +1,5 @@
 // The sampling integrators with their points in double SIMD lanes
-// (src/sampling/sampling_simd.h) against their double scalar references
+// (src/sampling/*_sampling_simd.h) against their double scalar references
 // (src/sampling/sampling_integrators.h), texel by texel, on every compiled target
 // the CPU runs. Both draw the same points in the same order; they differ
 // only in the rounding of each sample's normal and weight (the GGX and
@@ -7,7 +7,7 @@
 // CheckGgxSamplingF64 and CheckBeckmannSamplingF64; Lambda within 2e-15,
 // simd_math_f64_test and simd_std_f64_test) and in the order of the sums.
 // The NDF samplers of Beckmann and STD and the STD's D in double lanes
-// (sampling_simd.cc) are checked through these sums: a sampler or a
+// (slope_sampling_simd.cc) are checked through these sums: a sampler or a
 // density off by more than rounding moves them far beyond the bound here.
 
 #include <algorithm>
@@ -22,7 +22,8 @@
 
 #include "brdfbake/targets.h"
 #include "sampling/sampling_integrators.h"
-#include "sampling/sampling_simd.h"
+#include "sampling/ggx_sampling_simd.h"
+#include "sampling/slope_sampling_simd.h"
 
 namespace brdfbake {
 namespace {
