@@ -65,7 +65,9 @@ Inputs& In() {
 
 // The models of every row: alpha 0.3; std at gamma 3.3; the ellipsoid
 // 0.3 x 0.5 rotated by (0.2, 0.1, 0.4) radians; the sel lobe 0.3 x 0.5
-// rotated by 0.2 about x; Schlick F0 = 0.04, height-correlated masking.
+// rotated by 0.2 about x; any other model of the build at its defaults;
+// Schlick F0 = 0.04 (1 for a lobe without a Fresnel factor),
+// height-correlated masking.
 const GgxNdf<double> kGgx(0.3, 0.3);
 const BeckmannNdf<double> kBeckmann(0.3, 0.3);
 const StudentTNdf<double> kStd(0.3, 0.3, 3.3);
@@ -75,7 +77,7 @@ BatchModel BenchModel(ModelKind kind) {
   BatchModel p;
   p.kind = kind;
   p.alpha_x = p.alpha_y = 0.3f;
-  p.f0 = 0.04f;
+  p.f0 = BatchTakesFresnel(kind) ? 0.04f : 1.0f;
   if (kind == ModelKind::kStudentT) p.gamma = 3.3f;
   if (kind == ModelKind::kEllipsoid || kind == ModelKind::kSel) {
     p.alpha_y = 0.5f;
@@ -240,7 +242,8 @@ void BM_Mixed(benchmark::State& state, ModelKind kind, MixedCall call, std::stri
                                                      {"BM_SampleLight/", MixedCall::kLight},
                                                      {"BM_SampleLightMixed/", MixedCall::kLightMixed}};
   for (const auto& [prefix, call] : calls) {
-    for (ModelKind kind : {ModelKind::kGgx, ModelKind::kBeckmann}) {
+    for (ModelKind kind : ModelKindsBuilt()) {
+      if (!BatchSupportsElements(kind)) continue;
       for (const std::string& t : AvailableTargets()) {
         const std::string name = prefix + std::string(ModelName(kind)) + "/" + t;
         benchmark::RegisterBenchmark(name.c_str(), BM_Mixed, kind, call, t)
@@ -272,14 +275,12 @@ BENCHMARK(BM_K)->Name("BM_K/sel/double_reference")->ArgNames({"n"})->Arg(kN);
 BENCHMARK(BM_BrdfFloat)->Name("BM_Brdf/ggx/float_reference")->ArgNames({"n"})->Arg(kN);
 
 [[maybe_unused]] const int kRegistered = [] {
-  const ModelKind kinds[] = {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT,
-                             ModelKind::kEllipsoid, ModelKind::kSel};
   const std::pair<const char*, Quantity> quantities[] = {{"BM_D/", Quantity::kD},
                                                          {"BM_G2/", Quantity::kG2},
                                                          {"BM_Brdf/", Quantity::kBrdf},
                                                          {"BM_K/", Quantity::kK}};
   for (const auto& [prefix, q] : quantities) {
-    for (ModelKind kind : kinds) {
+    for (ModelKind kind : ModelKindsBuilt()) {
       if (!BatchSupports(kind, q)) continue;
       for (const std::string& t : AvailableTargets()) {
         const std::string name = prefix + std::string(ModelName(kind)) + "/" + t;

@@ -155,8 +155,8 @@ void RegisterReferences(const char* model, Params... params) {
   RegisterReferences<BeckmannNdf>("beckmann", 0.3, 0.3);
   RegisterReferences<StudentTNdf>("std", 0.3, 0.3, 3.3);
   RegisterReferences<EllipsoidNdf>("ellipsoid", 0.3, 0.5, 0.2, 0.1, 0.4);
-  for (ModelKind kind :
-       {ModelKind::kGgx, ModelKind::kBeckmann, ModelKind::kStudentT, ModelKind::kEllipsoid}) {
+  for (ModelKind kind : ModelKindsBuilt()) {
+    if (!BatchSupports(kind, Sampler::kVisible)) continue;
     for (const std::string& t : AvailableTargets()) {
       const std::string name = "BM_SampleVisible/" + std::string(ModelName(kind)) + "/" + t;
       benchmark::RegisterBenchmark(name.c_str(), BM_SampleBatch, kind, t)

@@ -91,6 +91,10 @@ const char* QuantityName(Quantity q);  // D, Lambda, G1, pdf_ndf, K, G2, brdf, p
 bool IsPairQuantity(Quantity q);       // G2, brdf, pdf_visible
 bool BatchSupports(ModelKind kind, Quantity q);
 bool BatchSupports(ModelKind kind, Sampler s);
+// Whether the model's batch takes a Fresnel factor; a lobe without one
+// (charlie, disney-diffuse, sel: F = 1) takes BatchFresnel::kSchlick with
+// f0 = 1 only.
+bool BatchTakesFresnel(ModelKind kind);
 
 // n unit vectors as three arrays.
 struct DirArrays {

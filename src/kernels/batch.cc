@@ -335,6 +335,11 @@ bool BatchSupports(ModelKind kind, Sampler s) {
   return r && (r->samplers & Bit(s)) != 0;
 }
 
+bool BatchTakesFresnel(ModelKind kind) {
+  const ModelRow* r = RowOfModel(kind);
+  return r && !r->no_fresnel;
+}
+
 bool BatchSupportsElements(ModelKind kind) {
   const ModelRow* r = RowOfModel(kind);
   return r && r->eval_elements != nullptr;
