@@ -183,6 +183,15 @@ struct GlassPiece : GkPiece {
 // 1.47e-7, |K15 - G7| 8.4e-8).
 inline constexpr double kGlassErrorSafety = 3;
 
+// The ratio of the geometric grading towards the roots and the lune's
+// edge along a ray, and towards phi = 0 over the rays: each graded piece
+// spans 16 times its distance to the feature. The pieces' own bisection
+// resolves what a level leaves; over 800 views (roughness 1/15 to 1,
+// eta 1/99.5 to 99.5, mu 1e-4 to 1, tolerances 1e-6 to 1e-8) it took 17
+// to 29% fewer nodes than ratio 4, with the same largest error against a
+// 1e-11 integration and error / claim at most 0.92 (0.93 with ratio 4).
+inline constexpr double kGlassGrading = 1.0 / 16;
+
 // Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
 // until the summed |K15 - G7| plus the nodes' own errors meet `tol`, or
 // bisection stops helping (the worst |K15 - G7| below 1/50 of the
@@ -254,23 +263,23 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     GlassRoots(f, cp, sp, theta_max, &roots);
     // Near the lune's edge, where n.z falls below alpha, h turns from the
     // normal to the horizon: a layer of width about alpha in theta, which
-    // the pieces are graded towards by 4 (the roots inside it are cuts
-    // already).
-    for (double w = 0.25 * theta_max; w > 0.25 * f.alpha && roots.size() < 64; w *= 0.25) {
+    // the pieces are graded towards by kGlassGrading (the roots inside it
+    // are cuts already).
+    for (double w = 0.25 * theta_max; w > 0.25 * f.alpha && roots.size() < 64; w *= kGlassGrading) {
       roots.push_back({theta_max - w, 0});
     }
     // Inside that layer the tilt tau of h, tan(tau) = alpha |n_t| / n.z,
     // moves by alpha (over which G2 of a direction near the horizon, or F
     // near the critical angle, changes) while n.z moves by (n.z^2 +
-    // alpha^2) / 2: graded by 4 towards each root from both sides down to
-    // a quarter of that.
+    // alpha^2) / 2: graded by kGlassGrading towards each root from both
+    // sides down to a quarter of that.
     const size_t n_roots = roots.size();
     for (size_t k = 0; k < n_roots; ++k) {
       if (roots[k].curve == 0) continue;
       const double t0 = roots[k].theta;
       const double nz = std::cos(t0) * f.vz + std::sin(t0) * sp * f.vx;
       const double finest = 0.125 * (nz * nz + f.alpha * f.alpha);
-      for (double w = 0.25 * theta_max; w > finest && roots.size() < 160; w *= 0.25) {
+      for (double w = 0.25 * theta_max; w > finest && roots.size() < 160; w *= kGlassGrading) {
         if (t0 - w > 0) roots.push_back({t0 - w, 0});
         if (t0 + w < theta_max) roots.push_back({t0 + w, 0});
       }
@@ -324,9 +333,9 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   // falls from pi/2 to about vz / |phi| within |phi| ~ vz of phi = 0, and
   // for phi > 0 the normals near the edge n.z = sin(theta) sin(phi) vx +
   // cos(theta) vz change over the same width (a grazing view's narrow
-  // feature, with tails in vz / |phi|): graded by 4 towards phi = 0 from
-  // both sides down to vz / 4.
-  for (double w = 0.125 * kPi<double>; w > 0.25 * f.vz && cuts.size() < 200; w *= 0.25) {
+  // feature, with tails in vz / |phi|): graded by kGlassGrading towards
+  // phi = 0 from both sides down to vz / 4.
+  for (double w = 0.125 * kPi<double>; w > 0.25 * f.vz && cuts.size() < 200; w *= kGlassGrading) {
     cuts.push_back(-w);
     cuts.push_back(w);
   }
