@@ -33,10 +33,6 @@ constexpr double kValueFloor = 1e-30;
 // cancel by up to ~1/alpha in the same way. Measured maximum 5.6e-5.
 constexpr double kFloatReferenceBound = 1e-4;
 
-struct Params {
-  double ax, ay, gamma, tx, ty, tz;
-};
-
 // The models a region draws for: every model with a stability probe
 // (model_row.h), or those of them that take gamma or a rotation.
 enum class RegionModels { kAll, kGamma, kRotation };
@@ -45,7 +41,7 @@ struct Region {
   const char* name;
   RegionModels models;
   // Draws parameters and two directions (mu of the first is the swept one).
-  std::function<void(std::mt19937_64&, Params*, double* mu)> draw;
+  std::function<void(std::mt19937_64&, ModelParams*, double* mu)> draw;
 };
 
 // Whether the region draws for the row's model.
@@ -69,49 +65,49 @@ std::vector<Region> Regions() {
   const double deg = 3.141592653589793 / 180;
   return {
       {"typical", RegionModels::kAll,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = p->ay = LogU(r, 0.05, 1);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = p->alpha_y = LogU(r, 0.05, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = 0.05 + 0.95 * U(r);
        }},
       {"tiny alpha", RegionModels::kAll,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = p->ay = LogU(r, 1e-4, 1e-3);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = p->alpha_y = LogU(r, 1e-4, 1e-3);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
       {"grazing mu", RegionModels::kAll,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = p->ay = LogU(r, 1e-3, 1);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = p->alpha_y = LogU(r, 1e-3, 1);
          p->gamma = 1.6 + 10 * U(r);
          *mu = LogU(r, 1e-6, 1e-2);
        }},
       {"heavy tails", RegionModels::kGamma,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = p->ay = LogU(r, 1e-3, 1);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = p->alpha_y = LogU(r, 1e-3, 1);
          p->gamma = 1.5 + LogU(r, 1e-3, 0.1);
          *mu = U(r);
        }},
       {"light tails", RegionModels::kGamma,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = p->ay = LogU(r, 1e-3, 1);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = p->alpha_y = LogU(r, 1e-3, 1);
          p->gamma = LogU(r, 1e2, 1e6);
          *mu = U(r);
        }},
       {"anisotropy 1000:1", RegionModels::kAll,
-       [](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = LogU(r, 0.1, 1);
-         p->ay = p->ax / LogU(r, 100, 1000);
+       [](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = LogU(r, 0.1, 1);
+         p->alpha_y = p->alpha_x / LogU(r, 100, 1000);
          p->gamma = 1.6 + 10 * U(r);
          *mu = U(r);
        }},
       {"rotations to 80 deg", RegionModels::kRotation,
-       [deg](std::mt19937_64& r, Params* p, double* mu) {
-         p->ax = LogU(r, 1e-2, 1);
-         p->ay = LogU(r, 1e-2, 1);
-         p->tx = (2 * U(r) - 1) * 80 * deg;
-         p->ty = (2 * U(r) - 1) * 80 * deg;
-         p->tz = (2 * U(r) - 1) * 80 * deg;
+       [deg](std::mt19937_64& r, ModelParams* p, double* mu) {
+         p->alpha_x = LogU(r, 1e-2, 1);
+         p->alpha_y = LogU(r, 1e-2, 1);
+         p->theta_x = (2 * U(r) - 1) * 80 * deg;
+         p->theta_y = (2 * U(r) - 1) * 80 * deg;
+         p->theta_z = (2 * U(r) - 1) * 80 * deg;
          *mu = U(r);
        }},
   };
@@ -144,31 +140,16 @@ void Record(StabilityRow* row, double value, double ref, bool lambda, double bou
 // instantiation of the scalar reference against double, bounded by
 // kFloatReferenceBound or the SIMD kernel's bound at the same sample (the
 // same arithmetic, conditioned by the same inputs), whichever is larger.
-void Measure(const ModelRow& row, const Params& p, const Vec3<double>& m_in, const Vec3<double>& a_in,
+void Measure(const ModelRow& row, const ModelParams& p, const Vec3<double>& m_in, const Vec3<double>& a_in,
              const Vec3<double>& b_in, StabilityRow* rows, StabilityRow* srows) {
   const Vec3<float> af = RoundToFloat(a_in), bf = RoundToFloat(b_in), mf = RoundToFloat(m_in);
-  BatchModel bp;
-  bp.kind = row.kind;
-  bp.alpha_x = static_cast<float>(p.ax);
-  bp.alpha_y = static_cast<float>(p.ay);
-  bp.gamma = static_cast<float>(p.gamma);
-  bp.theta_x = static_cast<float>(p.tx);
-  bp.theta_y = static_cast<float>(p.ty);
-  bp.theta_z = static_cast<float>(p.tz);
+  const BatchModel bp = BatchModelOf(p);  // F = 1, height-correlated
   float d, l, f;
   EvalBatch(bp, Quantity::kD, {&mf.x, &mf.y, &mf.z}, &d, 1);
   EvalBatch(bp, Quantity::kLambda, {&af.x, &af.y, &af.z}, &l, 1);
   EvalBatch(bp, Quantity::kBrdf, {&af.x, &af.y, &af.z}, {&bf.x, &bf.y, &bf.z}, &f, 1);
-  ModelParams mp;
-  mp.kind = row.kind;
-  mp.alpha_x = p.ax;
-  mp.alpha_y = p.ay;
-  mp.gamma = p.gamma;
-  mp.theta_x = p.tx;
-  mp.theta_y = p.ty;
-  mp.theta_z = p.tz;
   StabilitySample s;
-  row.stability(mp, m_in, a_in, b_in, &s);
+  row.stability(p, m_in, a_in, b_in, &s);
   const double simd[3] = {d, l, f};
   const int simd_q[3] = {kStabilityD, kStabilityLambda, kStabilityBrdf};
   for (int k = 0; k < 3; ++k) {
@@ -210,7 +191,8 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
         srows[q].kernel = simd_kernel;
       }
       for (int i = 0; i < samples_per_region; ++i) {
-        Params p{0.25, 0.25, 2.0, 0, 0, 0};
+        ModelParams p;  // alpha 0.25, gamma 2, no rotation, until drawn
+        p.kind = kind;
         double mu;
         region.draw(rng, &p, &mu);
         const double phi_a = 2 * 3.141592653589793 * U(rng);
@@ -224,7 +206,7 @@ std::vector<StabilityRow> RunStability(int samples_per_region, uint64_t seed) {
         // the half vector of the BRDF pair; otherwise m = a.
         Vec3<double> m = a;
         if (i % 2 == 1) {
-          const double tilt = std::min(1.5, std::min(p.ax, p.ay) * LogU(rng, 0.01, 30));
+          const double tilt = std::min(1.5, std::min(p.alpha_x, p.alpha_y) * LogU(rng, 0.01, 30));
           m = FromMuPhi(std::cos(tilt), 2 * 3.141592653589793 * U(rng));
           const Vec3<double> r = Reflect(b, m);
           if (r.z > 0) a = r;

@@ -184,8 +184,9 @@ struct GlassPiece : GkPiece {
 inline constexpr double kGlassErrorSafety = 3;
 
 // The ratio of the geometric grading towards the roots and the lune's
-// edge along a ray, and towards phi = 0 over the rays: each graded piece
-// spans 16 times its distance to the feature. The pieces' own bisection
+// edge along a ray, and towards phi = 0 over the rays: the far end of
+// each graded piece lies 16 times as far from the feature as its near
+// end. The pieces' own bisection
 // resolves what a level leaves; over 800 views (roughness 1/15 to 1,
 // eta 1/99.5 to 99.5, mu 1e-4 to 1, tolerances 1e-6 to 1e-8) it took 17
 // to 29% fewer nodes than ratio 4, with the same largest error against a
