@@ -5,7 +5,8 @@
 // piece's nodes in double SIMD lanes: the same rays, cuts, pieces and
 // nodes as the scalar reference ScalarGlassNodes, the 15 values of a
 // piece computed together (the 16th lane repeats the first node and is
-// dropped).
+// dropped). Likewise the E_avg rule (rules/glass/glass_average_rule.h)
+// with each psi piece's nodes in lanes (ScalarAverageLines).
 
 #include <algorithm>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "lanes/glass_lanes.h"
 #include "rules/glass/glass_albedo.h"
 #include "rules/glass/glass_albedo_rule.h"
+#include "rules/glass/glass_average_rule.h"
 
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "src/lanes/glass_lanes.cc"
@@ -138,6 +140,61 @@ struct SimdGlassNodes {
   }
 };
 
+// ScalarAverageLines in lanes: w to cos(psi) and dpsi/dw (CosOfW), the
+// two cosines, G1 = 2 z / (z + sqrt(z^2 + alpha^2 (1 - z^2))) of each (z
+// at least 0: G1 is 0 there, as the reference's branch gives), and G2 of
+// the masking. Each node differs from the reference by the rounding of
+// these terms (fused multiply-adds) only.
+struct SimdAverageLines {
+  using V = hn::Vec<DF64>;
+  const AverageModel* model;
+  void operator()(const AverageLine& l, const double* w_in, double* v) const {
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double in[16], out[16];
+    NodesTo16(w_in, in);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+    const V a2 = hn::Set(d, model->a2);
+    const V a0 = hn::Set(d, l.a0), a1 = hn::Set(d, l.a1), b0 = hn::Set(d, l.b0), b1 = hn::Set(d, l.b1);
+    auto g1 = [&](V z) {
+      z = hn::Max(z, zero);
+      const V r = hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z)))));
+      return hn::Div(hn::Mul(two, z), hn::Add(z, r));
+    };
+    for (size_t i = 0; i < 16; i += N) {
+      const V w = hn::Load(d, in + i);
+      const auto low = hn::Le(w, one);
+      const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
+      const V x = hn::IfThenElse(low, hn::Mul(hn::Sub(one, y), hn::Add(one, y)),
+                                 hn::Mul(hn::Sub(y, one), hn::Add(y, one)));
+      const V jac = hn::Div(two, hn::Sqrt(hn::NegMulAdd(y, y, two)));
+      const V ga = g1(hn::MulAdd(a1, x, a0)), gb = g1(hn::MulAdd(b1, x, b0));
+      const V prod = hn::Mul(ga, gb);
+      V g2;
+      if (model->separable) {
+        g2 = prod;
+      } else {
+        const V den = hn::Sub(hn::Add(ga, gb), prod);
+        const auto ok = hn::Gt(den, zero);
+        g2 = hn::IfThenElseZero(ok, hn::Div(prod, hn::IfThenElse(ok, den, one)));
+      }
+      hn::Store(hn::Mul(jac, g2), d, out + i);
+    }
+    for (int i = 0; i < 15; ++i) v[i] = out[i];
+  }
+};
+
+RuleResult GlassAverage(double alpha, double eta, Masking masking, double tol, int max_pieces, DielectricPart part) {
+  const AverageModel m = AverageModelOf(alpha, eta, masking, part);
+  return GlassAlbedoAverageWith(m, tol, max_pieces, SimdAverageLines{&m});
+}
+
+void GlassAverageLine(double alpha, Masking masking, const double* coefficients, const double* w, double* v) {
+  const AverageModel m = AverageModelOf(alpha, 1.5, masking, DielectricPart::kBoth);
+  const AverageLine line{coefficients[0], coefficients[1], coefficients[2], coefficients[3]};
+  SimdAverageLines{&m}(line, w, v);
+}
+
 RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
                       DielectricPart part) {
   const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
@@ -176,6 +233,18 @@ HWY_EXPORT(GlassNodes);
 void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
                          double* v, DielectricPart part) {
   HWY_DYNAMIC_DISPATCH(GlassNodes)(alpha, eta, masking, mu, phi, theta, v, part);
+}
+
+HWY_EXPORT(GlassAverage);
+RuleResult SimdGlassAlbedoAverage(double alpha, double eta, Masking masking, double tol, int max_pieces,
+                                  DielectricPart part) {
+  return HWY_DYNAMIC_DISPATCH(GlassAverage)(alpha, eta, masking, tol, max_pieces, part);
+}
+
+HWY_EXPORT(GlassAverageLine);
+void SimdGlassAverageLineValues(double alpha, Masking masking, const double* coefficients, const double* w,
+                                double* v) {
+  HWY_DYNAMIC_DISPATCH(GlassAverageLine)(alpha, masking, coefficients, w, v);
 }
 
 }  // namespace brdfbake

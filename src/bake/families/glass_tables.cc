@@ -14,6 +14,7 @@
 #include "lanes/glass_lanes.h"
 #include "quadrature/adaptive_rule.h"
 #include "rules/glass/glass_albedo.h"
+#include "rules/glass/glass_average.h"
 #include "sampling/texel_integrand.h"
 
 namespace brdfbake {
@@ -113,6 +114,21 @@ EavgEstimate GlassEavg(const BakeSpec& spec, double alpha) {
   return {value, rule_err + prop_err + 4e-16 * value};
 }
 
+// E_avg at one texel: the rough interface by the rule over h and wo of
+// glass_average.h, the smooth one (below alpha 1e-4) over mu, where E is
+// closed-form (SmoothGlassAlbedo).
+EavgEstimate GlassTexelEavg(const BakeSpec& spec, double alpha) {
+  if (alpha >= kMinAlpha<double>) {
+    const int n = spec.EffectiveSamples();
+    const RuleResult r =
+        spec.simd ? SimdGlassAlbedoAverage(alpha, spec.model.ior, spec.masking, spec.tolerance, n, spec.part)
+                  : GlassAlbedoAverage(alpha, spec.model.ior, spec.masking, spec.tolerance, n, spec.part);
+    return {r.value, r.error};
+  }
+  if (spec.model.ior < 1 && spec.part != DielectricPart::kBoth) return GlassEavg(spec, alpha);
+  return AdaptiveEavg([&](double mu) { return GlassTexel(spec, alpha, mu); }, spec.tolerance);
+}
+
 void GlassModelJson(const BakeSpec& spec, nlohmann::json* out) {
   nlohmann::json& j = *out;
   j["alpha"] = "roughness^2";
@@ -157,10 +173,20 @@ void GlassIntegratorJson(const BakeSpec& spec, nlohmann::json* j) {
                          "scalar code)",
              "3 x the sum over the phi pieces of |K15 - G7|, plus the rays' own sums carried "
              "through the Kronrod weights");
-    if (spec.table == TableKind::kEavg && (spec.inverse || spec.ior.warp == Warp::kTwoSided)) {
-      (*j)["E_avg"] = (*j)["E_avg"].get<std::string>() + "; each slice" + (spec.inverse ? "" : " with eta < 1") +
-                      " also cut at the critical cosine sqrt(1 - eta^2) (s = its "
-                      "square root), the pieces on either side mapped quadratically towards it";
+    if (spec.table == TableKind::kEavg) {
+      (*j)["E_avg"] =
+          "(1/pi) int over wo above, int over h of D(h) (wo.h) [F G2(wo, r) + (1 - F) G2(wo, t)] dh "
+          "dwo, taken about h: theta_h by GGX's radial CDF u = q^2 (2 - q^2), c = wo.h (F is F(c); "
+          "cut at sin(theta_h) and, for eta < 1, at the critical cosine and where the refraction's "
+          "horizon reaches psi = 0), the azimuth psi of wo about h between the horizons, which are "
+          "closed-form, in w = sqrt(1 -+ cos(psi)) (src/rules/glass/glass_average.h); Gauss-Kronrod "
+          "15 at each level on pieces "
+          "bisected worst first, graded towards the horizons down to alpha in the cosine" +
+              std::string(spec.simd ? " (each psi piece's nodes in double SIMD lanes)" : " (double scalar code)") +
+              "; error: "
+          "the sum of |K15 - G7| with the inner levels' carried through the Kronrod weights. "
+          "Below alpha 1e-4: 2 int_0^1 E(mu) mu dmu of the smooth interface. (domain, rule and "
+          "error_estimate describe the rule for E, which E_avg does not use.)";
     }
   }
   (*j)["smooth"] = spec.part == DielectricPart::kBoth ? "alpha < 1e-4 is the smooth interface: E = 1"
@@ -177,12 +203,7 @@ const BakerRow kGgxGlassRow = {
     true,
     "E and E_avg (reflection plus refraction; no dfg)",
     [](const BakeSpec& slice, const TexelAt& at, uint64_t) { return GlassTexel(slice, at.alpha, at.mu); },
-    [](const BakeSpec& slice, const TexelAt& at) {
-      if (slice.model.ior < 1 && (at.alpha >= kMinAlpha<double> || slice.part != DielectricPart::kBoth)) {
-        return GlassEavg(slice, at.alpha);
-      }
-      return AdaptiveEavg([&](double mu) { return GlassTexel(slice, at.alpha, mu); }, slice.tolerance);
-    },
+    [](const BakeSpec& slice, const TexelAt& at) { return GlassTexelEavg(slice, at.alpha); },
     nullptr,
     nullptr,
     GlassModelJson,

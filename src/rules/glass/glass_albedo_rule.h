@@ -194,13 +194,13 @@ inline constexpr double kGlassErrorSafety = 3;
 inline constexpr double kGlassGrading = 1.0 / 16;
 
 // Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
-// until the summed |K15 - G7| plus the nodes' own errors meet `tol`, or
-// bisection stops helping (the worst |K15 - G7| below 1/50 of the
-// tolerance per piece), or `max_pieces`. f(x, v, e) fills the integrand
-// and its errors at 15 points x.
+// until the summed `safety` x |K15 - G7| plus the nodes' own errors meet
+// `tol`, or bisection stops helping (the worst piece's part below 1/50 of
+// the tolerance per piece), or `max_pieces`. f(x, v, e) fills the
+// integrand and its errors at 15 points x.
 template <class F>
 RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double scale, double tol,
-                             int max_pieces, const F& f) {
+                             int max_pieces, const F& f, double safety = kGlassErrorSafety) {
   auto make = [&](int s, double t0, double t1) {
     const MappedSegment& g = segments[s];
     GlassPiece p;
@@ -213,7 +213,7 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
         e[i] *= jac[i];
       }
     });
-    p.err *= kGlassErrorSafety;
+    p.err *= safety;
     p.segment = s;
     return p;
   };
