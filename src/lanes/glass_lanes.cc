@@ -77,11 +77,14 @@ struct SimdGlassNodes {
     const V eta = hn::Set(d, f.eta), inv_eta = hn::Set(d, 1 / f.eta);
     const V inv_eta2 = hn::Set(d, 1 / (f.eta * f.eta));
     const V g1o = hn::Set(d, g1o_inv), one_lo = hn::Set(d, 1 + lambda_o);
-    // G2 / G1(wo) at Lambda's numerator p and z = |w.z| > 0.
-    auto g2_over_g1 = [&](V p, V z) {
-      const V z2 = hn::Mul(z, z);
-      const V lambda = hn::Div(p, hn::Mul(hn::Set(d, 2.0), hn::MulAdd(z, hn::Sqrt(hn::Add(z2, p)), z2)));
-      return separable ? hn::Div(one, hn::Add(one, lambda)) : hn::Div(g1o, hn::Add(one_lo, lambda));
+    // G2 / G1(wo) = num / den at Lambda's numerator p and z = |w.z| > 0:
+    // with q = z^2 + z sqrt(z^2 + p), Lambda = p / (2 q), so 1 / (1 +
+    // Lambda) = 2 q / (2 q + p) (separable) and 1 / G1(wo) / (1 +
+    // Lambda(wo) + Lambda) = 2 q g1o / (2 q (1 + Lambda(wo)) + p).
+    auto g2_over_g1 = [&](V p, V z, V* num, V* den) {
+      const V q2 = hn::Mul(hn::Set(d, 2.0), hn::MulAdd(z, hn::Sqrt(hn::MulAdd(z, z, p)), hn::Mul(z, z)));
+      *num = separable ? q2 : hn::Mul(q2, g1o);
+      *den = separable ? hn::Add(q2, p) : hn::MulAdd(q2, one_lo, p);
     };
     // All lanes true or all false: the part's terms, and the refraction's
     // weight (1 - F, or Schlick's complement 1 - (1 - c)^5).
@@ -103,28 +106,35 @@ struct SimdGlassNodes {
       const V inv_len = hn::Div(one, hn::IfThenElse(valid, len, one));
       const V hx = hn::Mul(mx, inv_len), hy = hn::Mul(my, inv_len), hz = hn::Mul(mz, inv_len);
       const V c = hn::Min(hn::Max(hn::MulAdd(so, hx, hn::Mul(mu, hz)), zero), one);
-      // Fresnel: sin^2(theta_t) = (1 - c^2) / eta^2.
+      // Fresnel: sin^2(theta_t) = (1 - c^2) / eta^2; F = (r_parl^2 +
+      // r_perp^2) / 2 over one division, r_parl = (eta c - cos_t) / (eta c +
+      // cos_t), r_perp = (c - eta cos_t) / (c + eta cos_t).
       const V omc2 = hn::Mul(hn::Sub(one, c), hn::Add(one, c));
       const V sin2_t = hn::Mul(omc2, inv_eta2);
       const auto tir = hn::Ge(sin2_t, one);
-      const V cos_t = hn::Sqrt(hn::Max(hn::Sub(one, sin2_t), zero));
+      const V ct2 = hn::Sub(one, sin2_t);
+      const V cos_t = hn::Sqrt(hn::Max(ct2, zero));
       const V ec = hn::Mul(eta, c), et = hn::Mul(eta, cos_t);
-      const V r_parl = hn::Div(hn::Sub(ec, cos_t), hn::Add(ec, cos_t));
-      const V r_perp = hn::Div(hn::Sub(c, et), hn::Add(c, et));
+      const V pa = hn::Sub(ec, cos_t), pb = hn::Add(ec, cos_t);
+      const V sa = hn::Sub(c, et), sb = hn::Add(c, et);
+      const V pb2 = hn::Mul(pb, pb), sb2 = hn::Mul(sb, sb);
+      const V f_den = hn::Mul(pb2, sb2);
+      const auto f_ok = hn::And(hn::Not(tir), hn::Gt(f_den, zero));
+      const V f_num = hn::MulAdd(hn::Mul(pa, pa), sb2, hn::Mul(hn::Mul(sa, sa), pb2));
+      const V f_val = hn::Mul(half, hn::Div(f_num, hn::IfThenElse(f_ok, f_den, one)));
       // F is not formed for the Schlick weight (eta may be inf there).
-      const V fr = hn::IfThenElse(use_schlick, zero,
-                                  hn::IfThenElse(tir, one, hn::Mul(half, hn::MulAdd(r_parl, r_parl, hn::Mul(r_perp, r_perp)))));
+      const V fr = hn::IfThenElse(use_schlick, zero, hn::IfThenElse(f_ok, f_val, one));
       // Reflection r = 2 c h - wo (wo = (so, 0, mu)).
       const V two_c = hn::Add(c, c);
       const V rx = hn::MulSub(two_c, hx, so), ry = hn::Mul(two_c, hy), rz = hn::MulSub(two_c, hz, mu);
       const auto r_ok = hn::And(hn::And(hn::Gt(rz, zero), hn::Gt(fr, zero)), keep_r);
       const V rz_safe = hn::IfThenElse(r_ok, rz, one);
       const V pr = hn::Mul(alpha2, hn::MulAdd(rx, rx, hn::Mul(ry, ry)));
-      V w = hn::IfThenElseZero(r_ok, hn::Mul(fr, g2_over_g1(pr, rz_safe)));
+      V num_r, den_r;
+      g2_over_g1(pr, rz_safe, &num_r, &den_r);
       // Refraction t = -wo / eta + (c / eta - cos_t) h, cos_t^2 = 1 - (1 -
       // c^2) / eta^2.
-      const V ct2 = hn::Sub(one, hn::Mul(omc2, inv_eta2));
-      const V k = hn::Sub(hn::Mul(c, inv_eta), hn::Sqrt(hn::Max(ct2, zero)));
+      const V k = hn::Sub(hn::Mul(c, inv_eta), cos_t);
       const V tx = hn::MulSub(k, hx, hn::Mul(so, inv_eta)), ty = hn::Mul(k, hy);
       const V tz = hn::MulSub(k, hz, hn::Mul(mu, inv_eta));
       const auto t_ok = hn::And(hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero)), keep_t);
@@ -133,18 +143,26 @@ struct SimdGlassNodes {
       const V omc = hn::Sub(one, c), omc2s = hn::Mul(omc, omc);
       const V s5 = hn::Mul(hn::Mul(omc2s, omc2s), omc);
       const V weight_t = hn::IfThenElse(use_schlick, hn::Sub(one, s5), hn::Sub(one, fr));
-      w = hn::Add(w, hn::IfThenElseZero(t_ok, hn::Mul(weight_t, g2_over_g1(pt, tz_safe))));
+      V num_t, den_t;
+      g2_over_g1(pt, tz_safe, &num_t, &den_t);
+      // w = fr num_r / den_r + weight_t num_t / den_t over one division,
+      // each term 0 (over 1) where it does not count.
+      const V xr = hn::IfThenElseZero(r_ok, hn::Mul(fr, num_r)), dr = hn::IfThenElse(r_ok, den_r, one);
+      const V xt = hn::IfThenElseZero(t_ok, hn::Mul(weight_t, num_t)), dt = hn::IfThenElse(t_ok, den_t, one);
+      const V w = hn::Div(hn::MulAdd(xr, dt, hn::Mul(xt, dr)), hn::Mul(dr, dt));
       hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
     }
     for (int i = 0; i < 15; ++i) v[i] = out[i];
   }
 };
 
-// ScalarAverageLines in lanes: w to cos(psi) and dpsi/dw (CosOfW), the
-// two cosines, G1 = 2 z / (z + sqrt(z^2 + alpha^2 (1 - z^2))) of each (z
-// at least 0: G1 is 0 there, as the reference's branch gives), and G2 of
-// the masking. Each node differs from the reference by the rounding of
-// these terms (fused multiply-adds) only.
+// ScalarAverageLines in lanes with one division per node: with r =
+// sqrt(z^2 + alpha^2 (1 - z^2)) of each cosine z (at least 0), G1 = 2 z /
+// (z + r), so jac G2 = 4 za zb / (sqrt(2 - y^2) (ra zb + rb za))
+// height-correlated (1 / G2 = 1 / ga + 1 / gb - 1) and 8 za zb / (sqrt(2 -
+// y^2) (za + ra) (zb + rb)) separable; 0 where both cosines are 0 (the
+// reference's G1 is 0 on the horizon). Each node differs from the
+// reference by the rounding of these terms only.
 struct SimdAverageLines {
   using V = hn::Vec<DF64>;
   const AverageModel* model;
@@ -154,31 +172,23 @@ struct SimdAverageLines {
     HWY_ALIGN double in[16], out[16];
     NodesTo16(w_in, in);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V a2 = hn::Set(d, model->a2);
+    const V a2 = hn::Set(d, model->a2), num_scale = hn::Set(d, model->separable ? 8.0 : 4.0);
     const V a0 = hn::Set(d, l.a0), a1 = hn::Set(d, l.a1), b0 = hn::Set(d, l.b0), b1 = hn::Set(d, l.b1);
-    auto g1 = [&](V z) {
-      z = hn::Max(z, zero);
-      const V r = hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z)))));
-      return hn::Div(hn::Mul(two, z), hn::Add(z, r));
-    };
+    auto root = [&](V z) { return hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z))))); };
     for (size_t i = 0; i < 16; i += N) {
       const V w = hn::Load(d, in + i);
       const auto low = hn::Le(w, one);
       const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
       const V x = hn::IfThenElse(low, hn::Mul(hn::Sub(one, y), hn::Add(one, y)),
                                  hn::Mul(hn::Sub(y, one), hn::Add(y, one)));
-      const V jac = hn::Div(two, hn::Sqrt(hn::NegMulAdd(y, y, two)));
-      const V ga = g1(hn::MulAdd(a1, x, a0)), gb = g1(hn::MulAdd(b1, x, b0));
-      const V prod = hn::Mul(ga, gb);
-      V g2;
-      if (model->separable) {
-        g2 = prod;
-      } else {
-        const V den = hn::Sub(hn::Add(ga, gb), prod);
-        const auto ok = hn::Gt(den, zero);
-        g2 = hn::IfThenElseZero(ok, hn::Div(prod, hn::IfThenElse(ok, den, one)));
-      }
-      hn::Store(hn::Mul(jac, g2), d, out + i);
+      const V za = hn::Max(hn::MulAdd(a1, x, a0), zero), zb = hn::Max(hn::MulAdd(b1, x, b0), zero);
+      const V ra = root(za), rb = root(zb);
+      const V den_g = model->separable ? hn::Mul(hn::Add(za, ra), hn::Add(zb, rb))
+                                       : hn::MulAdd(ra, zb, hn::Mul(rb, za));
+      const V den = hn::Mul(hn::Sqrt(hn::NegMulAdd(y, y, two)), den_g);
+      const auto ok = hn::Gt(den, zero);
+      const V num = hn::Mul(num_scale, hn::Mul(za, zb));
+      hn::Store(hn::IfThenElseZero(ok, hn::Div(num, hn::IfThenElse(ok, den, one))), d, out + i);
     }
     for (int i = 0; i < 15; ++i) v[i] = out[i];
   }

@@ -218,6 +218,7 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
     return p;
   };
   std::vector<GlassPiece> pieces;
+  pieces.reserve(segments.size() + 8);
   for (int s = 0; s < static_cast<int>(segments.size()); ++s) {
     if (segments[s].b > segments[s].a) pieces.push_back(make(s, 0.0, 1.0));
   }
