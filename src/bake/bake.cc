@@ -32,7 +32,6 @@
 #include "quadrature/adaptive_rule.h"
 #include "quadrature/gauss_legendre.h"
 #include "rules/glass/gen_schlick.h"
-#include "rules/std/std_azimuth.h"
 #include "sampling/sampling_integrators.h"
 #include "sampling/texel_integrand.h"
 
@@ -273,7 +272,13 @@ EavgEstimate IntegrateEavg(const BakeSpec& spec, double roughness, uint64_t inde
   return EavgAt(spec, at, index);
 }
 
-void ReleaseBakeCaches() { ClearStdAzimuthMoments(); }
+void ReleaseBakeCaches() {
+  for (const BakerFamily* family : kBakerFamilies) {
+    for (int k = 0; k < family->count; ++k) {
+      if (family->rows[k].release) family->rows[k].release();
+    }
+  }
+}
 
 
 Table Bake(const BakeSpec& spec, const ProgressFn& progress) {

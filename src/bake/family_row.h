@@ -64,6 +64,9 @@ struct BakerRow {
   // The largest E it stores: 1, or +inf for a lobe that does not conserve
   // energy (StoredEMax).
   double e_max;
+  // Frees what its tables keep between bakes (ReleaseBakeCaches; null:
+  // nothing).
+  void (*release)() = nullptr;
 };
 
 // The row of `kind`, or null if this build does not contain it.

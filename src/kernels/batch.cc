@@ -120,10 +120,10 @@ void CheckQuantity(const BatchModel& model, Quantity q, bool pair) {
     Bad(std::string("EvalBatch: model ") + ModelName(model.kind) + " has no quantity " +
         QuantityName(q));
   }
-  if (model.kind == ModelKind::kCharlie && !SheenHasLambda(model.visibility) &&
-      (q == Quantity::kLambda || q == Quantity::kG1 || q == Quantity::kG2)) {
-    Bad(std::string("EvalBatch: charlie with the ") + SheenVisibilityName(model.visibility) +
-        " visibility has no " + QuantityName(q) + " (it has no masking term)");
+  const ModelRow* row = RowOfModel(model.kind);
+  if (row->lacks) {
+    const std::string why = row->lacks(model, q);
+    if (!why.empty()) Bad("EvalBatch: " + why);
   }
   if (pair != IsPairQuantity(q)) {
     Bad(std::string("EvalBatch: ") + QuantityName(q) + " takes " +

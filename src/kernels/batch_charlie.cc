@@ -151,7 +151,15 @@ const ModelRow kCharlieRow = {
       }
     },
     [](const ModelParams& p) -> std::unique_ptr<Model> { return std::make_unique<CharlieModel>(p); },
-    nullptr};
+    nullptr,
+    [](const BatchModel& model, Quantity q) {
+      if (SheenHasLambda(model.visibility) ||
+          (q != Quantity::kLambda && q != Quantity::kG1 && q != Quantity::kG2)) {
+        return std::string();
+      }
+      return std::string("charlie with the ") + SheenVisibilityName(model.visibility) + " visibility has no " +
+             QuantityName(q) + " (it has no masking term)";
+    }};
 
 }  // namespace
 

@@ -64,6 +64,10 @@ struct ModelRow {
   // in the tail regions if it takes gamma, in the rotated ones if it
   // takes a rotation (src/analysis/stability.cc).
   StabilityProbeFn stability;
+  // Why the batch, as `model` configures it, has no quantity q among
+  // `quantities` (a sheen visibility without masking has no Lambda), or
+  // "" where it has it; null: every quantity of `quantities`.
+  std::string (*lacks)(const BatchModel& model, Quantity q) = nullptr;
 };
 
 // The rows of one family (BRDFBAKE_MODELS), in the order of its kinds.

@@ -70,7 +70,8 @@ const BakerRow kStdRow = {
       }
       MirrorJson(j);
     },
-    1.0};
+    1.0,
+    ClearStdAzimuthMoments};
 
 }  // namespace
 
