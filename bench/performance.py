@@ -136,6 +136,7 @@ Notes:
   Gauss-Kronrod pieces, where K15 itself is far more accurate. The true
   error of a stored float table is its float rounding (3e-8 for values up
   to 1).
+@GLASS@
 
 What the bakes evaluate:
 
@@ -580,6 +581,22 @@ def bake_table(r):
     return table(header, rows), readme
 
 
+def glass_note(readme):
+    """The glass bakes as multiples of the ggx dfg 128x128 bake of the same run."""
+    dfg = readme.get(("ggx dfg 128x128", "quadrature"))
+    cycles = [readme.get((f"ggx-glass {side}(Cycles' axes) {t}", "quadrature"))
+              for side in ("", "inverse ") for t in ("E 16x16x16", "E_avg 16x16")]
+    e32 = readme.get(("ggx-glass E 32x32x32", "quadrature"))
+    if not dfg or not all(cycles) or not e32:
+        return ""
+    d = dfg[0]
+    total = sum(c[0] for c in cycles)
+    return (f"- Glass against the ggx dfg 128x128 bake ({fmt_seconds(d)}): Cycles' set of four "
+            f"(E 16x16x16 and E_avg 16x16, entering and leaving) takes {fmt_seconds(total)} in "
+            f"all, {fmt_ratio(total / d)} the dfg bake; the glass E 32x32x32 takes "
+            f"{fmt_seconds(e32[0])}, {fmt_ratio(e32[0] / d)}.\n")
+
+
 def process_table(processes):
     rows = []
     for p in processes:
@@ -755,7 +772,7 @@ def main():
     for key, value in {"@MACHINE@": machine_table(r, saved["os"]), "@BAKES@": bakes,
                        "@PROCESSES@": process_table(saved["processes"]), "@KERNELS@": kernels,
                        "@GRID@": grid, "@TAIL@": tail, "@MIXED@": mixed, "@PEAK@": peak_table(r),
-                       "@LIMIT@": limit_table(r)}.items():
+                       "@LIMIT@": limit_table(r), "@GLASS@\n": glass_note(readme)}.items():
         text = text.replace(key, value)
 
     out = args.out or (None if args.quick else str(ROOT / "docs" / "performance.md"))
