@@ -108,16 +108,16 @@ TEST(GlassAverageTest, SmoothInterfaceIsTheAverageOfFresnel) {
              gauss_kronrod<double, 61>::integrate(f, crit, 1, 15, 1e-14);
     };
     const double fr = avg([&](double c) { return FresnelDielectric(eta, c); });
-    const RuleResult r = GlassAlbedoAverage(0, eta, Masking::kHeightCorrelated, 1e-9, 64, DielectricPart::kReflection);
-    const RuleResult t = GlassAlbedoAverage(0, eta, Masking::kHeightCorrelated, 1e-9, 64, DielectricPart::kTransmission);
-    const RuleResult b = GlassAlbedoAverage(0, eta, Masking::kHeightCorrelated, 1e-9, 64);
+    const Masking hc = Masking::kHeightCorrelated;
+    const RuleResult r = GlassAlbedoAverage(0, eta, hc, 1e-9, 64, DielectricPart::kReflection);
+    const RuleResult t = GlassAlbedoAverage(0, eta, hc, 1e-9, 64, DielectricPart::kTransmission);
+    const RuleResult b = GlassAlbedoAverage(0, eta, hc, 1e-9, 64);
     EXPECT_NEAR(r.value, fr, 1e-9) << eta;
     EXPECT_NEAR(t.value, 1 - fr, 1e-9) << eta;
     EXPECT_NEAR(b.value, 1, 1e-15);
     if (eta >= 1) {
       const double s = avg([&](double c) { return 1 - std::pow(1 - c, 5); });
-      const RuleResult rs =
-          GlassAlbedoAverage(0, eta, Masking::kHeightCorrelated, 1e-9, 64, DielectricPart::kTransmissionSchlick);
+      const RuleResult rs = GlassAlbedoAverage(0, eta, hc, 1e-9, 64, DielectricPart::kTransmissionSchlick);
       EXPECT_NEAR(rs.value, s, 1e-9);
       EXPECT_NEAR(s, 20.0 / 21, 1e-14);  // 1 - 2 B(2, 6) = 1 - 1/21
     }
