@@ -57,8 +57,8 @@ struct AverageModel {
 // `safety`), and gives the level inside it half its tolerance: over the
 // stiff views of glass_average_test (alpha 1e-4 to 1, eta 1/100 to 100,
 // every part, both maskings, tolerances 1e-6 and 1e-7) the claims were
-// at least seven times the error against the E rule integrated over mu
-// (over 263 views run by hand, twenty times).
+// at least 150 times the error against the E rule integrated over mu,
+// and at least twenty times over 263 views run by hand.
 inline constexpr double kAverageSafety = 1;
 inline constexpr double kInnerShare = 0.5;
 
