@@ -95,6 +95,12 @@ BRDFBAKE_BATCH_SAMPLE_DISPATCH(Charlie)
 
 namespace {
 
+// What a visibility without masking (no Lambda) cannot give.
+std::string LacksMasking(SheenVisibility v, const char* what) {
+  return std::string("charlie with the ") + SheenVisibilityName(v) + " visibility has no " + what +
+         " (it has no masking term)";
+}
+
 // The Charlie sheen (models/sheen.h): an NDF with its own visibility; the
 // masking argument does not apply (the conty-kulla G2 is height-correlated).
 class CharlieModel : public Model {
@@ -125,10 +131,7 @@ class CharlieModel : public Model {
 
  private:
   void NeedsMasking(const char* what) const {
-    if (!SheenHasLambda(p_.visibility)) {
-      Bad(std::string("charlie with the ") + SheenVisibilityName(p_.visibility) + " visibility has no " + what +
-          " (it has no masking term); use the conty-kulla visibility");
-    }
+    if (!SheenHasLambda(p_.visibility)) Bad(LacksMasking(p_.visibility, what) + "; use the conty-kulla visibility");
   }
   ModelParams p_;
   CharlieSheen<double> sheen_;
@@ -157,8 +160,7 @@ const ModelRow kCharlieRow = {
           (q != Quantity::kLambda && q != Quantity::kG1 && q != Quantity::kG2)) {
         return std::string();
       }
-      return std::string("charlie with the ") + SheenVisibilityName(model.visibility) + " visibility has no " +
-             QuantityName(q) + " (it has no masking term)";
+      return LacksMasking(model.visibility, QuantityName(q));
     }};
 
 }  // namespace

@@ -7,12 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 #include "bake/family_row.h"
 #include "brdfbake/models/dielectric.h"
 #include "lanes/glass_lanes.h"
-#include "quadrature/adaptive_rule.h"
 #include "rules/glass/glass_albedo.h"
 #include "rules/glass/glass_average.h"
 #include "sampling/texel_integrand.h"
@@ -37,96 +35,15 @@ TexelEstimate GlassTexel(const BakeSpec& spec, double alpha, double mu) {
   return AlbedoTexel(r);
 }
 
-// ggx-glass with eta < 1 (the view inside the denser medium): E_avg as
-// AdaptiveEavg, with one more cut at the critical cosine mu_c = sqrt(1 -
-// eta^2), s_c = sqrt(mu_c). There the Fresnel factor of the facets about
-// the normal reaches 1 with an infinite slope ([Walter07] eq. 22), so
-// E(mu) has a square-root edge, smoothed over about alpha. The pieces on
-// either side are mapped s = s_c -+ (s_c - a) (1 - t)^2 towards it (the
-// square root becomes linear in t), as the rule maps its rays at the
-// critical curve (glass_albedo.h); bisection is in t.
-EavgEstimate GlassEavg(const BakeSpec& spec, double alpha) {
-  const double eta = spec.model.ior;
-  const double sc = std::sqrt(std::sqrt((1 - eta) * (1 + eta)));
-  struct Segment {
-    double a, b;
-    bool edge_a, edge_b;  // the critical cosine at that end
-  };
-  std::vector<Segment> segs;
-  const double cuts[] = {0.0, 0.25, 1.0};
-  for (int k = 0; k < 2; ++k) {
-    const double a = cuts[k], b = cuts[k + 1];
-    if (sc > a && sc < b) {
-      segs.push_back({a, sc, false, true});
-      segs.push_back({sc, b, true, false});
-    } else {
-      segs.push_back({a, b, false, false});
-    }
-  }
-  struct Piece : GkPiece {
-    int seg = 0;
-  };
-  auto piece = [&](int k, double t0, double t1) {
-    const Segment& g = segs[size_t(k)];
-    Piece p;
-    static_cast<GkPiece&>(p) = KronrodPiece(t0, t1, 1.0, [&](double t, double* err) {
-      double sv, ds;
-      if (g.edge_b) {
-        sv = g.b - (g.b - g.a) * (1 - t) * (1 - t), ds = 2 * (g.b - g.a) * (1 - t);
-      } else if (g.edge_a) {
-        sv = g.a + (g.b - g.a) * t * t, ds = 2 * (g.b - g.a) * t;
-      } else {
-        sv = g.a + (g.b - g.a) * t, ds = g.b - g.a;
-      }
-      const TexelEstimate v = GlassTexel(spec, alpha, sv * sv);
-      const double jac = 4 * sv * sv * sv * ds;
-      *err = jac * v.err_e;
-      return jac * v.e;
-    });
-    p.seg = k;
-    return p;
-  };
-  std::vector<Piece> pieces;
-  for (int k = 0; k < int(segs.size()); ++k) pieces.push_back(piece(k, 0.0, 1.0));
-  auto sums = [&](double* rule, double* prop) {
-    *rule = *prop = 0;
-    for (const Piece& p : pieces) {
-      *rule += p.err;
-      *prop += p.prop;
-    }
-  };
-  double rule_err, prop_err;
-  sums(&rule_err, &prop_err);
-  const double tolerance = spec.tolerance;
-  while (rule_err + prop_err > tolerance && rule_err > 0.1 * tolerance && pieces.size() < 64) {
-    size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = piece(p.seg, p.a, m);
-    pieces.push_back(piece(p.seg, m, p.b));
-    sums(&rule_err, &prop_err);
-  }
-  double value = 0;
-  for (const Piece& p : pieces) value += p.value;
-  return {value, rule_err + prop_err + 4e-16 * value};
-}
-
-// E_avg at one texel: the rough interface by the rule over h and wo of
-// glass_average.h, the smooth one (below alpha 1e-4) over mu, where E is
-// closed-form (SmoothGlassAlbedo).
+// E_avg at one texel by the rule over h and wo of glass_average.h; below
+// alpha 1e-4 the smooth interface's (alpha 0 there: the hemispherical
+// average of F, 1 - F or Schlick's complement).
 EavgEstimate GlassTexelEavg(const BakeSpec& spec, double alpha) {
-  if (alpha >= kMinAlpha<double>) {
-    const int n = spec.EffectiveSamples();
-    const RuleResult r =
-        spec.simd ? SimdGlassAlbedoAverage(alpha, spec.model.ior, spec.masking, spec.tolerance, n, spec.part)
-                  : GlassAlbedoAverage(alpha, spec.model.ior, spec.masking, spec.tolerance, n, spec.part);
-    return {r.value, r.error};
-  }
-  if (spec.model.ior < 1 && spec.part != DielectricPart::kBoth) return GlassEavg(spec, alpha);
-  return AdaptiveEavg([&](double mu) { return GlassTexel(spec, alpha, mu); }, spec.tolerance);
+  const double a = alpha >= kMinAlpha<double> ? alpha : 0.0;
+  const int n = spec.EffectiveSamples();
+  const RuleResult r = spec.simd ? SimdGlassAlbedoAverage(a, spec.model.ior, spec.masking, spec.tolerance, n, spec.part)
+                                 : GlassAlbedoAverage(a, spec.model.ior, spec.masking, spec.tolerance, n, spec.part);
+  return {r.value, r.error};
 }
 
 void GlassModelJson(const BakeSpec& spec, nlohmann::json* out) {
@@ -180,12 +97,12 @@ void GlassIntegratorJson(const BakeSpec& spec, nlohmann::json* j) {
           "cut at sin(theta_h) and, for eta < 1, at the critical cosine and where the refraction's "
           "horizon reaches psi = 0), the azimuth psi of wo about h between the horizons, which are "
           "closed-form, in w = sqrt(1 -+ cos(psi)) (src/rules/glass/glass_average.h); Gauss-Kronrod "
-          "15 at each level on pieces "
-          "bisected worst first, graded towards the horizons down to alpha in the cosine" +
-              std::string(spec.simd ? " (each psi piece's nodes in double SIMD lanes)" : " (double scalar code)") +
-              "; error: "
-          "the sum of |K15 - G7| with the inner levels' carried through the Kronrod weights. "
-          "Below alpha 1e-4: 2 int_0^1 E(mu) mu dmu of the smooth interface. (domain, rule and "
+          "15 at each level on pieces bisected worst first, graded towards the horizons down to "
+          "alpha in the cosine" +
+          std::string(spec.simd ? " (each psi piece's nodes in double SIMD lanes)" : " (double scalar code)") +
+          "; error: the sum of |K15 - G7| with the inner levels' carried through the Kronrod "
+          "weights. Below alpha 1e-4, the smooth interface: 2 int_0^1 c w(c) dc, w = 1, F, 1 - F "
+          "or 1 - (1 - c)^5 by the part, cut at the critical cosine. (domain, rule and "
           "error_estimate describe the rule for E, which E_avg does not use.)";
     }
   }
