@@ -30,6 +30,7 @@
 #include "brdfbake/models/dielectric.h"
 #include "brdfbake/models/ggx.h"
 #include "reference/glass_reference.h"
+#include "rules/glass/glass_albedo_rule.h"
 
 namespace brdfbake {
 namespace {
@@ -228,6 +229,76 @@ TEST(GlassAlbedoTest, ClaimsBoundTheErrorOverAGrid) {
   }
   std::printf("glass grid: %d texels, max |E(1e-7) - E(1e-11)| / claims %.3g; %.2f ms per texel, slowest %.2f ms\n",
               n, worst, total_ms / n, slowest);
+}
+
+// The rays where a curve's roots appear or vanish (GlassRayEvents) are
+// the changes of the roots' count per curve seen by a dense scan of the
+// rays (the changes where two curves' roots only pass each other are the
+// scan's to find), both ways: each change has an event within two scan
+// steps and each event a change. The views include tangencies a 128-ray
+// scan steps over.
+TEST(GlassAlbedoTest, RayEventsAreWhereRootsAppear) {
+  const Case views[] = {{0.2025, 1 / 3.0, 0.15},   {0.36, 1 / 12.7, 0.95}, {0.2975, 1 / 2.4, 0.7273},
+                        {0.0044, 1 / 1.1, 1e-4},    {0.09, 1 / 1.5, 0.4},   {0.5, 1.5, 0.2},
+                        {0.04, 1 / 99.5, 0.05},     {1.0, 1 / 3.0, 0.01},   {0.3, 2.4, 0.9}};
+  const int kRays = 200000;
+  const double step = kPi<double> / kRays;
+  int n_events = 0;
+  for (const Case& c : views) {
+    const GlassFrame f(c.alpha, c.eta, c.mu);
+    std::vector<double> events;
+    GlassRayEvents(f, &events);
+    std::sort(events.begin(), events.end());
+    std::vector<GlassRoot> roots;
+    auto counts = [&](double phi) {
+      const double sp = std::sin(phi), cp = std::cos(phi);
+      GlassRoots(f, cp, sp, f.ThetaMax(sp), &roots);
+      int n[4] = {0, 0, 0, 0};
+      for (const GlassRoot& r : roots) ++n[r.curve];
+      return n[1] + 8 * n[2] + 64 * n[3];
+    };
+    std::vector<double> changes;
+    int prev = counts(-0.5 * kPi<double> + 0.5 * step);
+    for (int k = 1; k < kRays; ++k) {
+      const double phi = -0.5 * kPi<double> + (k + 0.5) * step;
+      const int now = counts(phi);
+      // phi = 0 is a cut of its own: the lune's edge changes form there.
+      if (now != prev && std::abs(phi) > step) changes.push_back(phi - 0.5 * step);
+      prev = now;
+    }
+    auto near = [&](const std::vector<double>& xs, double x) {
+      for (double y : xs) {
+        if (std::abs(y - x) <= 2 * step) return true;
+      }
+      return false;
+    };
+    for (double x : changes) {
+      EXPECT_TRUE(near(events, x)) << "change at phi " << x << " without an event; alpha " << c.alpha << " eta "
+                                   << c.eta << " mu " << c.mu;
+    }
+    for (double e : events) {
+      EXPECT_TRUE(near(changes, e)) << "event at phi " << e << " without a change; alpha " << c.alpha << " eta "
+                                    << c.eta << " mu " << c.mu;
+    }
+    n_events += static_cast<int>(events.size());
+  }
+  EXPECT_GE(n_events, 9);
+}
+
+// The views where roots appeared and vanished within one cell of the
+// rays' scan: their E at the table's tolerances within its claim of the
+// converged value.
+TEST(GlassAlbedoTest, NarrowTangenciesAreCut) {
+  const Case views[] = {{0.2025, 1 / 3.0, 0.15}, {0.36, 1 / 12.7, 0.95}, {0.2975206611570248, 1 / 2.4, 0.7272727}};
+  for (const Case& c : views) {
+    const Glass m = Importance(c.alpha, c.eta);
+    const RuleResult ref = GlassAlbedo(m, c.mu, 1e-12, 4096);
+    for (double tol : {1e-6, 1e-7, 1e-8}) {
+      const RuleResult r = GlassAlbedo(m, c.mu, tol, 256);
+      EXPECT_LE(std::abs(r.value - ref.value), r.error + ref.error)
+          << "alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu << " tolerance " << tol;
+    }
+  }
 }
 
 // A smooth interface loses nothing: alpha = 0 gives 1 exactly, and the

@@ -51,6 +51,40 @@ struct GlassRoot {
   int curve;
 };
 
+// The bilinear form of each curve's quadratic: the unnormalized normals m
+// with form(m, m) = 0 lie on the curve (glass_albedo.h).
+inline double GlassForm(const GlassFrame& f, int curve, const Vec3<double>& u, const Vec3<double>& v) {
+  const Vec3<double> wo{f.so, 0, f.mu};
+  const double ou = Dot(wo, u), ov = Dot(wo, v), uv = Dot(u, v);
+  switch (curve) {
+    case kGlassReflectionHorizon:
+      return ou * v.z + ov * u.z - f.mu * uv;
+    case kGlassRefractionHorizon:
+      return f.mu * f.mu * uv - f.mu * (ou * v.z + ov * u.z) - (f.eta * f.eta - 1) * u.z * v.z;
+    default:
+      return ou * ov - (1 - f.eta * f.eta) * uv;
+  }
+}
+
+// The last curve the rule cuts at: the reflection's horizon alone for eta
+// >= 1, all three for eta < 1.
+inline int GlassLastCurve(const GlassFrame& f) { return f.eta < 1 ? kGlassCritical : kGlassReflectionHorizon; }
+
+// The zeros x in [0, pi) of A cos^2(x) + 2 B cos(x) sin(x) + C sin^2(x) =
+// P + R cos(2 x - delta), P = (A + C) / 2, R = hypot((A - C) / 2, B); none
+// unless |P| < R. Calls out(x, delta).
+template <class Out>
+void HalfAngleZeros(double qa, double qb, double qc, const Out& out) {
+  const double p = 0.5 * (qa + qc), q = 0.5 * (qa - qc);
+  const double r = std::hypot(q, qb);
+  if (!(r > 0) || !(std::abs(p) < r)) return;
+  const double delta = std::atan2(qb, q), g = std::acos(-p / r);
+  for (double two : {delta + g, delta - g}) {
+    // 2 x modulo 2 pi into [0, 2 pi): x in [0, pi).
+    out(0.5 * (two - kTwoPi<double> * std::floor(two / kTwoPi<double>)), delta);
+  }
+}
+
 // The roots theta in (0, theta_max) of the three quadratic forms along the
 // ray (cos(phi), sin(phi)) = (cp, sp), ascending.
 inline void GlassRoots(const GlassFrame& f, double cp, double sp, double theta_max,
@@ -58,36 +92,59 @@ inline void GlassRoots(const GlassFrame& f, double cp, double sp, double theta_m
   roots->clear();
   // m = cos(theta) a + sin(theta) b.
   const Vec3<double> a = f.M(1, 0, cp, sp), b = f.M(0, 1, cp, sp);
-  const Vec3<double> wo{f.so, 0, f.mu};
-  const double eta2 = f.eta * f.eta;
-  // The bilinear form of each quadratic.
-  auto form = [&](int curve, const Vec3<double>& u, const Vec3<double>& v) {
-    const double ou = Dot(wo, u), ov = Dot(wo, v), uv = Dot(u, v);
-    switch (curve) {
-      case kGlassReflectionHorizon:
-        return ou * v.z + ov * u.z - f.mu * uv;
-      case kGlassRefractionHorizon:
-        return f.mu * f.mu * uv - f.mu * (ou * v.z + ov * u.z) - (eta2 - 1) * u.z * v.z;
-      default:
-        return ou * ov - (1 - eta2) * uv;
-    }
-  };
-  const int last = f.eta < 1 ? kGlassCritical : kGlassReflectionHorizon;
-  for (int curve = kGlassReflectionHorizon; curve <= last; ++curve) {
-    // A cos^2 + 2 B cos sin + C sin^2 = P + R cos(2 theta - delta).
-    const double qa = form(curve, a, a), qb = form(curve, a, b), qc = form(curve, b, b);
-    const double p = 0.5 * (qa + qc), q = 0.5 * (qa - qc);
-    const double r = std::hypot(q, qb);
-    if (!(r > 0) || !(std::abs(p) < r)) continue;
-    const double delta = std::atan2(qb, q), g = std::acos(-p / r);
-    for (double two : {delta + g, delta - g}) {
-      // 2 theta modulo 2 pi into [0, 2 pi): theta in [0, pi).
-      double t = 0.5 * (two - kTwoPi<double> * std::floor(two / kTwoPi<double>));
-      if (t > 0 && t < theta_max) roots->push_back({t, curve});
-    }
+  for (int curve = kGlassReflectionHorizon; curve <= GlassLastCurve(f); ++curve) {
+    HalfAngleZeros(GlassForm(f, curve, a, a), GlassForm(f, curve, a, b), GlassForm(f, curve, b, b),
+                   [&](double t, double) {
+                     if (t > 0 && t < theta_max) roots->push_back({t, curve});
+                   });
   }
   std::sort(roots->begin(), roots->end(),
             [](const GlassRoot& x, const GlassRoot& y) { return x.theta < y.theta; });
+}
+
+// The rays phi in (-pi/2, pi/2) where a curve's roots along the rays
+// appear or vanish, in closed form. Along the ray phi, m = cos(theta) a +
+// sin(theta) (cos(phi) b1 + sin(phi) b2) with a, b1, b2 fixed
+// (GlassFrame::M), so each form's coefficients in (cos(theta),
+// sin(theta)) are qa (fixed), qb (linear in (cos(phi), sin(phi))) and qc
+// (quadratic). Roots appear:
+//  - where the ray is tangent to the curve: the discriminant qb^2 - qa qc,
+//    a quadratic form in (cos(phi), sin(phi)), is 0, with the double root
+//    inside (0, theta_max);
+//  - where a root crosses the lune's edge: theta = pi/2 for phi >= 0 (m =
+//    b, the form qc), and for phi < 0 the normal with m.z = 0, cos(phi)
+//    (0, alpha vz, 0) + sin(phi) (-alpha, 0, 0) up to a positive factor.
+// A scan of the rays' signatures finds changes only where it probes both
+// sides: a tangency inside one of its cells (roots that appear and vanish
+// again within a thousandth of a radian) was missed, by up to 1.3 times the
+// claim (alpha 0.2025, eta 1/3, mu 0.15, tolerance 1e-7).
+inline void GlassRayEvents(const GlassFrame& f, std::vector<double>* phis) {
+  const Vec3<double> a{f.alpha * f.vx, 0, f.vz}, b1{0, f.alpha, 0}, b2{-f.alpha * f.vz, 0, f.vx};
+  const Vec3<double> e1{0, f.alpha * f.vz, 0}, e2{-f.alpha, 0, 0};
+  auto to_phi = [](double x) { return x < 0.5 * kPi<double> ? x : x - kPi<double>; };
+  for (int curve = kGlassReflectionHorizon; curve <= GlassLastCurve(f); ++curve) {
+    auto form = [&](const Vec3<double>& u, const Vec3<double>& v) { return GlassForm(f, curve, u, v); };
+    const double qa = form(a, a), beta1 = form(a, b1), beta2 = form(a, b2);
+    const double g11 = form(b1, b1), g12 = form(b1, b2), g22 = form(b2, b2);
+    HalfAngleZeros(beta1 * beta1 - qa * g11, beta1 * beta2 - qa * g12, beta2 * beta2 - qa * g22,
+                   [&](double x, double) {
+                     const double phi = to_phi(x), cp = std::cos(phi), sp = std::sin(phi);
+                     const double qb = beta1 * cp + beta2 * sp;
+                     const double qc = g11 * cp * cp + 2 * g12 * cp * sp + g22 * sp * sp;
+                     // The double root: P + R cos(2 theta - delta) with |P| = R
+                     // is 0 at 2 theta = delta + pi for P > 0, delta for P < 0.
+                     double two = std::atan2(qb, 0.5 * (qa - qc)) + (qa + qc > 0 ? kPi<double> : 0.0);
+                     two -= kTwoPi<double> * std::floor(two / kTwoPi<double>);
+                     const double theta = 0.5 * two;
+                     if (theta > 0 && theta < f.ThetaMax(sp)) phis->push_back(phi);
+                   });
+    HalfAngleZeros(g11, g12, g22, [&](double x, double) {
+      if (to_phi(x) > 0) phis->push_back(to_phi(x));
+    });
+    HalfAngleZeros(form(e1, e1), form(e1, e2), form(e2, e2), [&](double x, double) {
+      if (to_phi(x) < 0) phis->push_back(to_phi(x));
+    });
+  }
 }
 
 // The index the rule runs at: the bsdf's (clamped to the Fresnel model's
@@ -176,21 +233,20 @@ struct GlassPiece : GkPiece {
 };
 
 // A piece's |K15 - G7| counts three times, as in SegmentRule
-// (adaptive_rule.h): next to the views where a root curve is tangent to
-// the rays, or where the critical curve meets the lune's edge (eta < 1),
-// an unsplit piece was measured to miss by up to 2.4 times its |K15 - G7|
-// (alpha 0.2066, eta 1/3, mu 0.932809, tolerance 1e-7: true error
-// 1.47e-7, |K15 - G7| 8.4e-8).
+// (adaptive_rule.h). Over 1200 views (roughness 1/15 to 1, eta 1/99.5 to
+// 99.5, mu 1e-4 to 1, both maskings), against the rule at tolerance
+// 1e-12, the largest error / claim was 0.08, 0.04 and 0.19 at tolerances
+// 1e-6, 1e-7 and 1e-8; counted once, 0.14, 0.63 and 0.43, too thin a
+// margin for views outside the sweep.
 inline constexpr double kGlassErrorSafety = 3;
 
 // The ratio of the geometric grading towards the roots and the lune's
 // edge along a ray, and towards phi = 0 over the rays: the far end of
 // each graded piece lies 16 times as far from the feature as its near
-// end. The pieces' own bisection
-// resolves what a level leaves; over 800 views (roughness 1/15 to 1,
-// eta 1/99.5 to 99.5, mu 1e-4 to 1, tolerances 1e-6 to 1e-8) it took 17
-// to 29% fewer nodes than ratio 4, with the same largest error against a
-// 1e-11 integration and error / claim at most 0.92 (0.93 with ratio 4).
+// end. The pieces' own bisection resolves what a level leaves; over 800
+// views (roughness 1/15 to 1, eta 1/99.5 to 99.5, mu 1e-4 to 1,
+// tolerances 1e-6 to 1e-8) it took 17 to 29% fewer nodes than ratio 4,
+// with the same largest error against a 1e-11 integration.
 inline constexpr double kGlassGrading = 1.0 / 16;
 
 // Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
@@ -306,9 +362,24 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     *err = res.error;
     return res.value;
   };
-  // The outer segments over phi in [-pi/2, pi/2]: cut at 0 and where the
-  // rays' signature changes (scan, then bisection).
+  // The outer segments over phi in [-pi/2, pi/2]: cut at 0, where a
+  // curve's roots appear or vanish (GlassRayEvents), and where the scan of
+  // the rays' signature sees any other change (roots of two curves
+  // passing each other: bisection).
   std::vector<double> cuts = {-0.5 * kPi<double>, 0.0, 0.5 * kPi<double>};
+  std::vector<double> events;
+  GlassRayEvents(f, &events);
+  std::sort(events.begin(), events.end());
+  cuts.insert(cuts.end(), events.begin(), events.end());
+  // A change between probes x0 and x1 (no event between them), by
+  // bisection.
+  auto bisect = [&](double x0, double x1, long s0) {
+    for (int it = 0; it < 60 && x1 - x0 > 1e-15; ++it) {
+      const double xm = 0.5 * (x0 + x1);
+      (GlassRaySignature(f, xm, &roots) == s0 ? x0 : x1) = xm;
+    }
+    cuts.push_back(0.5 * (x0 + x1));
+  };
   const int kScan = 128;
   for (int half = 0; half < 2; ++half) {
     const double lo = half == 0 ? -0.5 * kPi<double> : 0.0;
@@ -320,12 +391,22 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
       const double phi = lo + (k + 0.5) * step;
       const long s = GlassRaySignature(f, phi, &roots);
       if (s != prev) {
-        double x0 = prev_phi, x1 = phi;
-        for (int it = 0; it < 60 && x1 - x0 > 1e-15; ++it) {
-          const double xm = 0.5 * (x0 + x1);
-          (GlassRaySignature(f, xm, &roots) == prev ? x0 : x1) = xm;
+        // The cell split at its events: each part probed a 64th inside its
+        // ends at events, and bisected if its signature still changes.
+        auto e = std::upper_bound(events.begin(), events.end(), prev_phi);
+        double u = prev_phi;
+        long su = prev;
+        for (;; ++e) {
+          const bool last = e == events.end() || *e >= phi;
+          const double v = last ? phi : *e;
+          const double inset = (v - u) / 64;
+          const double pu = u == prev_phi ? u : u + inset, pv = last ? v : v - inset;
+          if (u != prev_phi) su = GlassRaySignature(f, pu, &roots);
+          const long sv = last ? s : GlassRaySignature(f, pv, &roots);
+          if (sv != su) bisect(pu, pv, su);
+          if (last) break;
+          u = v;
         }
-        cuts.push_back(0.5 * (x0 + x1));
       }
       prev = s;
       prev_phi = phi;
