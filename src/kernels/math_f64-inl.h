@@ -234,20 +234,15 @@ HWY_INLINE V ExpF64Unguarded(D d, V x) {
   return hn::BitCast(d, hn::Add(hn::BitCast(di, y), hn::ShiftLeft<52>(hn::BitCast(di, kf))));
 }
 
-// cos(x) for x in [0, pi], no range reduction: cos(x) = sin(t), t = pi/2 -
-// x in [-pi/2, pi/2], pi/2 in two parts (pi/2 - x is exact for x >= pi/4,
-// and below, where cos is near 1, its rounding costs at most 1.2e-16 sin(x)),
-// and sin(t) = t + t u Q(u), u = t^2, Q the Taylor series of (sin(t) - t) /
-// t^3 to t^21 (the first term left out, t^23 / 23!, is below 1.3e-18 at
-// |t| = pi/2), by Estrin's scheme. Error: |err| <= 5e-16 (absolute) and
-// 5e-16 |cos(x)| + 1e-32 on every target (CheckCosF64ZeroToPi, 65k points
-// against 50-digit values, x uniform over [0, pi], near 0, pi/2 and pi:
-// measured 3.0e-16 on AVX3 and AVX2, 4.4e-16 without fused multiply-adds
-// on SSE4, SSSE3 and SCALAR, near cos = +-1). Cost: 16 add/mul/FMA ops,
-// about half of hn::Cos's time in double lanes on AVX3.
+// sin(t) for t in [-pi/2, pi/2], no range reduction: t + t u Q(u), u =
+// t^2, Q the Taylor series of (sin(t) - t) / t^3 to t^21 (the first term
+// left out, t^23 / 23!, is below 1.3e-18 at |t| = pi/2), by Estrin's
+// scheme. Error: within 5e-16 |sin(t)| + 1e-32 on every target
+// (CheckSinF64HalfPi, 65k points against 50-digit values, t uniform over
+// [-pi/2, pi/2] and near 0: measured 2.9e-16 on every target). Cost: 15
+// add/mul/FMA ops.
 template <class D, class V>
-HWY_INLINE V CosF64ZeroToPi(D d, V x) {
-  const V t = hn::Add(hn::Sub(hn::Set(d, 1.5707963267948966), x), hn::Set(d, 6.123233995736766e-17));
+HWY_INLINE V SinF64HalfPi(D d, V t) {
   const V u = hn::Mul(t, t), u2 = hn::Mul(u, u), u4 = hn::Mul(u2, u2), u8 = hn::Mul(u4, u4);
   // (-1)^(k+1) / (2k + 3)!, k = 0..9.
   const V q01 = hn::MulAdd(hn::Set(d, 1.0 / 120), u, hn::Set(d, -1.0 / 6));
@@ -258,6 +253,20 @@ HWY_INLINE V CosF64ZeroToPi(D d, V x) {
   const V q03 = hn::MulAdd(q23, u2, q01), q47 = hn::MulAdd(q67, u2, q45);
   const V q = hn::MulAdd(q89, u8, hn::MulAdd(q47, u4, q03));
   return hn::MulAdd(hn::Mul(t, u), q, t);
+}
+
+// cos(x) for x in [0, pi], no range reduction: cos(x) = sin(t), t = pi/2 -
+// x in [-pi/2, pi/2], pi/2 in two parts (pi/2 - x is exact for x >= pi/4,
+// and below, where cos is near 1, its rounding costs at most 1.2e-16 sin(x)),
+// and sin(t) by SinF64HalfPi. Error: |err| <= 5e-16 (absolute) and
+// 5e-16 |cos(x)| + 1e-32 on every target (CheckCosF64ZeroToPi, 65k points
+// against 50-digit values, x uniform over [0, pi], near 0, pi/2 and pi:
+// measured 3.0e-16 on AVX3 and AVX2, 4.4e-16 without fused multiply-adds
+// on SSE4, SSSE3 and SCALAR, near cos = +-1). Cost: 16 add/mul/FMA ops,
+// about half of hn::Cos's time in double lanes on AVX3.
+template <class D, class V>
+HWY_INLINE V CosF64ZeroToPi(D d, V x) {
+  return SinF64HalfPi(d, hn::Add(hn::Sub(hn::Set(d, 1.5707963267948966), x), hn::Set(d, 6.123233995736766e-17)));
 }
 
 }  // namespace HWY_NAMESPACE

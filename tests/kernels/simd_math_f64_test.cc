@@ -225,6 +225,32 @@ inline const std::vector<double>& CosArgs() {
   return args;
 }
 
+// sin(t): t uniform over [-pi/2, pi/2] with random low bits, near 0 (both
+// signs), and the ends.
+inline const std::vector<double>& SinArgs() {
+  static const std::vector<double> args = [] {
+    std::vector<double> v;
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> jitter(0.0, 1.0);
+    const double half_pi = 1.5707963267948966;
+    const int kN = 50000;
+    for (int i = 0; i < kN; ++i) v.push_back(half_pi * (2 * (i + jitter(rng)) / kN - 1));
+    for (int i = 0; i < 15000; ++i) v.push_back((i % 2 ? -1 : 1) * std::pow(10.0, -12.0 * jitter(rng)));
+    for (double e : {0.0, half_pi, -half_pi, std::nextafter(half_pi, 0.0), 1e-300}) v.push_back(e);
+    return v;
+  }();
+  return args;
+}
+
+inline const std::vector<Ref>& SinRefs() {
+  static const std::vector<Ref> refs = [] {
+    std::vector<Ref> r;
+    for (double x : SinArgs()) r.push_back(ToRef(sin(Big(x))));
+    return r;
+  }();
+  return refs;
+}
+
 inline const std::vector<Ref>& CosRefs() {
   static const std::vector<Ref> refs = [] {
     std::vector<Ref> r;
@@ -267,6 +293,7 @@ constexpr double kExpRel = 3e-16;         // ExpF64Unguarded
 constexpr double kCosRel = 5e-16;         // CosF64ZeroToPi: rel |cos| + kCosAbs
 constexpr double kCosAbs = 1e-32;
 constexpr double kCosAbsMax = 5e-16;
+constexpr double kSinRel = 5e-16;         // SinF64HalfPi: rel |sin| + kCosAbs
 constexpr double kSubnormalUlp = 4.9406564584124654e-324;
 
 void CheckExpNegSquareF64() {
@@ -400,6 +427,23 @@ void CheckCosF64ZeroToPi() {
       hwy::TargetName(HWY_TARGET), worst_abs, kCosAbsMax, worst_rel, worst_x, kCosRel, kCosAbs, xs.size());
 }
 
+void CheckSinF64HalfPi() {
+  const std::vector<double>& xs = simd_math_f64_test::SinArgs();
+  const std::vector<Ref>& refs = simd_math_f64_test::SinRefs();
+  const auto got = MapF64(xs, [](auto d, auto v) { return SinF64HalfPi(d, v); });
+  double worst_rel = 0, worst_x = 0;
+  for (size_t i = 0; i < xs.size(); ++i) {
+    const double err = AbsErr(got[i], refs[i]);
+    ASSERT_LE(err, kSinRel * std::abs(refs[i].hi) + kCosAbs)
+        << "sin t=" << xs[i] << " got " << got[i] << " ref " << refs[i].hi;
+    if (refs[i].hi != 0 && err / std::abs(refs[i].hi) > worst_rel) {
+      worst_rel = err / std::abs(refs[i].hi), worst_x = xs[i];
+    }
+  }
+  std::printf("%s: SinF64HalfPi max rel error %.3g at t=%.17g (bound %.2g + %.0e, %zu points)\n",
+              hwy::TargetName(HWY_TARGET), worst_rel, worst_x, kSinRel, kCosAbs, xs.size());
+}
+
 }  // namespace
 }  // namespace HWY_NAMESPACE
 }  // namespace brdfbake
@@ -413,5 +457,6 @@ HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckBeckmannLambdaF64);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckErfcxF64);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckExpF64Unguarded);
 HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckCosF64ZeroToPi);
+HWY_EXPORT_AND_TEST_P(SimdMathF64Test, CheckSinF64HalfPi);
 }  // namespace brdfbake
 #endif

@@ -102,6 +102,29 @@ inline void GlassRoots(const GlassFrame& f, double cp, double sp, double theta_m
             [](const GlassRoot& x, const GlassRoot& y) { return x.theta < y.theta; });
 }
 
+// Whether the term a curve bounds lives at theta along the ray (cp, sp):
+// the reflection above the surface (its horizon), the refraction below
+// it (its horizon), the refraction at all (the critical angle: F's square
+// root is on that side; beyond it F = 1). A root of the refraction's
+// squared form where neither side lives is no edge at all.
+inline bool GlassCurveLives(const GlassFrame& f, int curve, double theta, double cp, double sp) {
+  const Vec3<double> m = f.M(std::cos(theta), std::sin(theta), cp, sp);
+  const double len = std::sqrt(Dot(m, m));
+  if (!(len > 0)) return true;
+  const Vec3<double> h = m / len;
+  const double c = f.so * h.x + f.mu * h.z;
+  const double inv_eta = 1 / f.eta;
+  const double ct2 = 1 - (1 - c) * (1 + c) * inv_eta * inv_eta;
+  switch (curve) {
+    case kGlassReflectionHorizon:
+      return 2 * c * h.z - f.mu > 0;
+    case kGlassRefractionHorizon:
+      return ct2 > 0 && (c * inv_eta - std::sqrt(ct2)) * h.z - f.mu * inv_eta < 0;
+    default:
+      return ct2 > 0;
+  }
+}
+
 // The rays phi in (-pi/2, pi/2) where a curve's roots along the rays
 // appear or vanish, in closed form. Along the ray phi, m = cos(theta) a +
 // sin(theta) (cos(phi) b1 + sin(phi) b2) with a, b1, b2 fixed
@@ -319,6 +342,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     const double sp = std::sin(phi), cp = std::cos(phi);
     const double theta_max = f.ThetaMax(sp);
     GlassRoots(f, cp, sp, theta_max, &roots);
+    const size_t n_real = roots.size();
     // Near the lune's edge, where n.z falls below alpha, h turns from the
     // normal to the horizon: a layer of width about alpha in theta, which
     // the pieces are graded towards by kGlassGrading (the roots inside it
@@ -329,17 +353,21 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     // Inside that layer the tilt tau of h, tan(tau) = alpha |n_t| / n.z,
     // moves by alpha (over which G2 of a direction near the horizon, or F
     // near the critical angle, changes) while n.z moves by (n.z^2 +
-    // alpha^2) / 2: graded by kGlassGrading towards each root from both
-    // sides down to a quarter of that.
-    const size_t n_roots = roots.size();
-    for (size_t k = 0; k < n_roots; ++k) {
-      if (roots[k].curve == 0) continue;
+    // alpha^2) / 2: graded by kGlassGrading towards each root down to a
+    // quarter of that, from the sides where its curve's term lives
+    // (GlassCurveLives); on the other side that term is 0 (or F is 1)
+    // and the rest is smooth.
+    for (size_t k = 0; k < n_real; ++k) {
       const double t0 = roots[k].theta;
+      const double below = k > 0 ? roots[k - 1].theta : 0.0;
+      const double above = k + 1 < n_real ? roots[k + 1].theta : theta_max;
+      const bool grade_below = GlassCurveLives(f, roots[k].curve, 0.5 * (below + t0), cp, sp);
+      const bool grade_above = GlassCurveLives(f, roots[k].curve, 0.5 * (t0 + above), cp, sp);
       const double nz = std::cos(t0) * f.vz + std::sin(t0) * sp * f.vx;
       const double finest = 0.125 * (nz * nz + f.alpha * f.alpha);
       for (double w = 0.25 * theta_max; w > finest && roots.size() < 160; w *= kGlassGrading) {
-        if (t0 - w > 0) roots.push_back({t0 - w, 0});
-        if (t0 + w < theta_max) roots.push_back({t0 + w, 0});
+        if (grade_below && t0 - w > 0) roots.push_back({t0 - w, 0});
+        if (grade_above && t0 + w < theta_max) roots.push_back({t0 + w, 0});
       }
     }
     std::sort(roots.begin(), roots.end(),
