@@ -277,8 +277,30 @@ inline constexpr double kGlassGrading = 1.0 / 16;
 // `tol`, or bisection stops helping (the worst piece's part below 1/50 of
 // the tolerance per piece), or `max_pieces`. f(x, v, e) fills the
 // integrand and its errors at 15 points x.
+// The pieces' storage of GlassSegmentsRule, one vector per nesting depth
+// and thread (the rules nest: E's rays in phi, E_avg's psi lines in c in
+// q), kept from call to call so that a line allocates nothing.
+class GlassPiecesScratch {
+ public:
+  GlassPiecesScratch() : pieces_(depth_ < kDepths ? &pool_[depth_] : &own_) {
+    ++depth_;
+    pieces_->clear();
+  }
+  ~GlassPiecesScratch() { --depth_; }
+  GlassPiecesScratch(const GlassPiecesScratch&) = delete;
+  GlassPiecesScratch& operator=(const GlassPiecesScratch&) = delete;
+  std::vector<GlassPiece>& pieces() { return *pieces_; }
+
+ private:
+  static constexpr int kDepths = 4;
+  static inline thread_local int depth_ = 0;
+  static inline thread_local std::vector<GlassPiece> pool_[kDepths];
+  std::vector<GlassPiece> own_;
+  std::vector<GlassPiece>* pieces_;
+};
+
 template <class F>
-RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double scale, double tol,
+RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
                              int max_pieces, const F& f, double safety = kGlassErrorSafety) {
   auto make = [&](int s, double t0, double t1) {
     const MappedSegment& g = segments[s];
@@ -296,9 +318,9 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
     p.segment = s;
     return p;
   };
-  std::vector<GlassPiece> pieces;
-  pieces.reserve(segments.size() + 8);
-  for (int s = 0; s < static_cast<int>(segments.size()); ++s) {
+  GlassPiecesScratch scratch;
+  std::vector<GlassPiece>& pieces = scratch.pieces();
+  for (int s = 0; s < n_segments; ++s) {
     if (segments[s].b > segments[s].a) pieces.push_back(make(s, 0.0, 1.0));
   }
   auto total = [&] {
@@ -320,6 +342,12 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
     err = total();
   }
   return SumOfPieces(pieces, err);
+}
+
+template <class F>
+RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double scale, double tol,
+                             int max_pieces, const F& f, double safety = kGlassErrorSafety) {
+  return GlassSegmentsRule(segments.data(), static_cast<int>(segments.size()), scale, tol, max_pieces, f, safety);
 }
 
 // The sequence of curves met along the ray at phi, as one number (the

@@ -63,17 +63,22 @@ inline constexpr double kAverageSafety = 1;
 inline constexpr double kInnerShare = 0.5;
 
 // Segments of [lo, hi] graded towards lo (ratio kGlassGrading) down to
-// `finest`, cut at `cut` if inside, unmapped.
-inline std::vector<MappedSegment> GradedFromLow(double lo, double hi, double finest, double cut) {
-  std::vector<double> cuts = {lo, hi};
-  if (cut > lo && cut < hi) cuts.push_back(cut);
-  for (double w = 0.25 * (hi - lo); w > finest && cuts.size() < 16; w *= kGlassGrading) cuts.push_back(lo + w);
-  std::sort(cuts.begin(), cuts.end());
-  std::vector<MappedSegment> segs;
-  for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-    if (cuts[k + 1] > cuts[k]) segs.push_back({cuts[k], cuts[k + 1], false, false});
+// `finest`, cut at `cut` if inside, unmapped: at most kMaxGraded, in
+// `segs`; returns their count.
+inline constexpr int kMaxGraded = 16;
+inline int GradedFromLow(double lo, double hi, double finest, double cut, MappedSegment* segs) {
+  double cuts[kMaxGraded + 1];
+  int n = 0;
+  cuts[n++] = lo;
+  cuts[n++] = hi;
+  if (cut > lo && cut < hi) cuts[n++] = cut;
+  for (double w = 0.25 * (hi - lo); w > finest && n < kMaxGraded; w *= kGlassGrading) cuts[n++] = lo + w;
+  std::sort(cuts, cuts + n);
+  int m = 0;
+  for (int k = 0; k + 1 < n; ++k) {
+    if (cuts[k + 1] > cuts[k]) segs[m++] = {cuts[k], cuts[k + 1], false, false};
   }
-  return segs;
+  return m;
 }
 
 // The psi lines take w in [0, 2] for psi in [0, pi]: w = sqrt(1 - cos(psi))
@@ -122,8 +127,10 @@ PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol
   const double lo = WOfCos(std::min(x_hi, 1.0)), hi = WOfCos(x_lo);
   if (!(hi > lo)) return {0, 0};
   const double finest = x_hi < 1 ? WOfCos(std::max(x_hi - width, -1.0)) - lo : hi - lo;
+  MappedSegment segs[kMaxGraded];
+  const int n = GradedFromLow(lo, hi, finest, 1.0, segs);
   const RuleResult res = GlassSegmentsRule(
-      GradedFromLow(lo, hi, finest, 1.0), scale, tol, 200,
+      segs, n, scale, tol, 200,
       [&](const double* w, double* v, double* e) {
         lines(line, w, v);
         for (int i = 0; i < 15; ++i) e[i] = 0;
