@@ -246,13 +246,14 @@ TEST(GlassAlbedoTest, RayEventsAreWhereRootsAppear) {
   int n_events = 0;
   for (const Case& c : views) {
     const GlassFrame f(c.alpha, c.eta, c.mu);
+    const GlassCurveForms forms(f);
     std::vector<double> events;
-    GlassRayEvents(f, &events);
+    GlassRayEvents(f, forms, &events);
     std::sort(events.begin(), events.end());
     std::vector<GlassRoot> roots;
     auto counts = [&](double phi) {
       const double sp = std::sin(phi), cp = std::cos(phi);
-      GlassRoots(f, cp, sp, f.ThetaMax(sp), &roots);
+      GlassRoots(forms, cp, sp, f.ThetaMax(sp), &roots);
       int n[4] = {0, 0, 0, 0};
       for (const GlassRoot& r : roots) ++n[r.curve];
       return n[1] + 8 * n[2] + 64 * n[3];

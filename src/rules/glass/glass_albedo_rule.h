@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 #include <vector>
 
 #include "brdfbake/models/dielectric.h"
@@ -85,18 +87,40 @@ void HalfAngleZeros(double qa, double qb, double qc, const Out& out) {
   }
 }
 
+// Each curve's form along the ray phi, as a quadratic in (cos(theta),
+// sin(theta)): m = cos(theta) a + sin(theta) (cos(phi) b1 + sin(phi) b2)
+// (GlassFrame::M), so its coefficients are qa (fixed), qb = beta1 cos(phi)
+// + beta2 sin(phi) and qc = g11 cos^2(phi) + 2 g12 cos(phi) sin(phi) +
+// g22 sin^2(phi), computed once per view.
+struct GlassCurveForms {
+  int last;
+  double qa[4], beta1[4], beta2[4], g11[4], g12[4], g22[4];
+  explicit GlassCurveForms(const GlassFrame& f) : last(GlassLastCurve(f)) {
+    const Vec3<double> a{f.alpha * f.vx, 0, f.vz}, b1{0, f.alpha, 0}, b2{-f.alpha * f.vz, 0, f.vx};
+    for (int curve = kGlassReflectionHorizon; curve <= last; ++curve) {
+      qa[curve] = GlassForm(f, curve, a, a);
+      beta1[curve] = GlassForm(f, curve, a, b1);
+      beta2[curve] = GlassForm(f, curve, a, b2);
+      g11[curve] = GlassForm(f, curve, b1, b1);
+      g12[curve] = GlassForm(f, curve, b1, b2);
+      g22[curve] = GlassForm(f, curve, b2, b2);
+    }
+  }
+  double Qb(int curve, double cp, double sp) const { return beta1[curve] * cp + beta2[curve] * sp; }
+  double Qc(int curve, double cp, double sp) const {
+    return (g11[curve] * cp + 2 * g12[curve] * sp) * cp + g22[curve] * sp * sp;
+  }
+};
+
 // The roots theta in (0, theta_max) of the three quadratic forms along the
 // ray (cos(phi), sin(phi)) = (cp, sp), ascending.
-inline void GlassRoots(const GlassFrame& f, double cp, double sp, double theta_max,
+inline void GlassRoots(const GlassCurveForms& forms, double cp, double sp, double theta_max,
                        std::vector<GlassRoot>* roots) {
   roots->clear();
-  // m = cos(theta) a + sin(theta) b.
-  const Vec3<double> a = f.M(1, 0, cp, sp), b = f.M(0, 1, cp, sp);
-  for (int curve = kGlassReflectionHorizon; curve <= GlassLastCurve(f); ++curve) {
-    HalfAngleZeros(GlassForm(f, curve, a, a), GlassForm(f, curve, a, b), GlassForm(f, curve, b, b),
-                   [&](double t, double) {
-                     if (t > 0 && t < theta_max) roots->push_back({t, curve});
-                   });
+  for (int curve = kGlassReflectionHorizon; curve <= forms.last; ++curve) {
+    HalfAngleZeros(forms.qa[curve], forms.Qb(curve, cp, sp), forms.Qc(curve, cp, sp), [&](double t, double) {
+      if (t > 0 && t < theta_max) roots->push_back({t, curve});
+    });
   }
   std::sort(roots->begin(), roots->end(),
             [](const GlassRoot& x, const GlassRoot& y) { return x.theta < y.theta; });
@@ -141,19 +165,15 @@ inline bool GlassCurveLives(const GlassFrame& f, int curve, double theta, double
 // sides: a tangency inside one of its cells (roots that appear and vanish
 // again within a thousandth of a radian) was missed, by up to 1.3 times the
 // claim (alpha 0.2025, eta 1/3, mu 0.15, tolerance 1e-7).
-inline void GlassRayEvents(const GlassFrame& f, std::vector<double>* phis) {
-  const Vec3<double> a{f.alpha * f.vx, 0, f.vz}, b1{0, f.alpha, 0}, b2{-f.alpha * f.vz, 0, f.vx};
+inline void GlassRayEvents(const GlassFrame& f, const GlassCurveForms& c, std::vector<double>* phis) {
   const Vec3<double> e1{0, f.alpha * f.vz, 0}, e2{-f.alpha, 0, 0};
   auto to_phi = [](double x) { return x < 0.5 * kPi<double> ? x : x - kPi<double>; };
-  for (int curve = kGlassReflectionHorizon; curve <= GlassLastCurve(f); ++curve) {
-    auto form = [&](const Vec3<double>& u, const Vec3<double>& v) { return GlassForm(f, curve, u, v); };
-    const double qa = form(a, a), beta1 = form(a, b1), beta2 = form(a, b2);
-    const double g11 = form(b1, b1), g12 = form(b1, b2), g22 = form(b2, b2);
-    HalfAngleZeros(beta1 * beta1 - qa * g11, beta1 * beta2 - qa * g12, beta2 * beta2 - qa * g22,
-                   [&](double x, double) {
+  for (int curve = kGlassReflectionHorizon; curve <= c.last; ++curve) {
+    const double qa = c.qa[curve], beta1 = c.beta1[curve], beta2 = c.beta2[curve];
+    HalfAngleZeros(beta1 * beta1 - qa * c.g11[curve], beta1 * beta2 - qa * c.g12[curve],
+                   beta2 * beta2 - qa * c.g22[curve], [&](double x, double) {
                      const double phi = to_phi(x), cp = std::cos(phi), sp = std::sin(phi);
-                     const double qb = beta1 * cp + beta2 * sp;
-                     const double qc = g11 * cp * cp + 2 * g12 * cp * sp + g22 * sp * sp;
+                     const double qb = c.Qb(curve, cp, sp), qc = c.Qc(curve, cp, sp);
                      // The double root: P + R cos(2 theta - delta) with |P| = R
                      // is 0 at 2 theta = delta + pi for P > 0, delta for P < 0.
                      double two = std::atan2(qb, 0.5 * (qa - qc)) + (qa + qc > 0 ? kPi<double> : 0.0);
@@ -161,9 +181,10 @@ inline void GlassRayEvents(const GlassFrame& f, std::vector<double>* phis) {
                      const double theta = 0.5 * two;
                      if (theta > 0 && theta < f.ThetaMax(sp)) phis->push_back(phi);
                    });
-    HalfAngleZeros(g11, g12, g22, [&](double x, double) {
+    HalfAngleZeros(c.g11[curve], c.g12[curve], c.g22[curve], [&](double x, double) {
       if (to_phi(x) > 0) phis->push_back(to_phi(x));
     });
+    auto form = [&](const Vec3<double>& u, const Vec3<double>& v) { return GlassForm(f, curve, u, v); };
     HalfAngleZeros(form(e1, e1), form(e1, e2), form(e2, e2), [&](double x, double) {
       if (to_phi(x) < 0) phis->push_back(to_phi(x));
     });
@@ -351,25 +372,46 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
 }
 
 // The sequence of curves met along the ray at phi, as one number (the
-// outer mesh is cut where it changes).
-inline long GlassRaySignature(const GlassFrame& f, double phi, std::vector<GlassRoot>* roots) {
+// outer mesh is cut where it changes). The roots are ordered by tan(theta),
+// which needs no angle: the form is cos^2(theta) (qa + 2 qb t + qc t^2), t
+// = tan(theta), whose roots are t1 = q / qc and t2 = qa / q, q = -(qb +
+// sign(qb) sqrt(qb^2 - qa qc)) (none unless qb^2 > qa qc, as for
+// GlassRoots); those in (0, tan(theta_max)) count (theta in (0, pi) is t
+// over the reals and inf, and theta_max is at most pi/2).
+inline long GlassRaySignature(const GlassFrame& f, const GlassCurveForms& forms, double phi) {
   const double sp = std::sin(phi), cp = std::cos(phi);
-  GlassRoots(f, cp, sp, f.ThetaMax(sp), roots);
+  const double t_max = sp >= 0 ? std::numeric_limits<double>::infinity() : f.vz / (-sp * f.vx);
+  GlassRoot roots[6];
+  int n = 0;
+  for (int curve = kGlassReflectionHorizon; curve <= forms.last; ++curve) {
+    const double qa = forms.qa[curve], qb = forms.Qb(curve, cp, sp), qc = forms.Qc(curve, cp, sp);
+    const double disc = qb * qb - qa * qc;
+    if (!(disc > 0)) continue;
+    const double q = -(qb + std::copysign(std::sqrt(disc), qb));
+    for (double t : {q / qc, qa / q}) {
+      if (t > 0 && t < t_max) roots[n++] = {t, curve};
+    }
+  }
+  // Insertion sort of at most 6 roots by t (held in .theta).
+  for (int i = 1; i < n; ++i) {
+    for (int j = i; j > 0 && roots[j].theta < roots[j - 1].theta; --j) std::swap(roots[j], roots[j - 1]);
+  }
   long s = 1;
-  for (const GlassRoot& r : *roots) s = 4 * s + r.curve;
+  for (int k = 0; k < n; ++k) s = 4 * s + roots[k].curve;
   return s;
 }
 
 template <class Nodes>
 RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, const Nodes& nodes) {
   const double area = 0.5 * kPi<double> * (1 + f.vz);
+  const GlassCurveForms forms(f);
   // The ray integral over theta at phi, to the absolute tolerance
   // `inner_tol`, with its error.
   std::vector<GlassRoot> roots;
   auto ray = [&](double phi, double inner_tol, double* err) {
     const double sp = std::sin(phi), cp = std::cos(phi);
     const double theta_max = f.ThetaMax(sp);
-    GlassRoots(f, cp, sp, theta_max, &roots);
+    GlassRoots(forms, cp, sp, theta_max, &roots);
     const size_t n_real = roots.size();
     // Near the lune's edge, where n.z falls below alpha, h turns from the
     // normal to the horizon: a layer of width about alpha in theta, which
@@ -424,7 +466,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   // passing each other: bisection).
   std::vector<double> cuts = {-0.5 * kPi<double>, 0.0, 0.5 * kPi<double>};
   std::vector<double> events;
-  GlassRayEvents(f, &events);
+  GlassRayEvents(f, forms, &events);
   std::sort(events.begin(), events.end());
   cuts.insert(cuts.end(), events.begin(), events.end());
   // A change between probes x0 and x1 (no event between them), by
@@ -432,7 +474,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   auto bisect = [&](double x0, double x1, long s0) {
     for (int it = 0; it < 60 && x1 - x0 > 1e-15; ++it) {
       const double xm = 0.5 * (x0 + x1);
-      (GlassRaySignature(f, xm, &roots) == s0 ? x0 : x1) = xm;
+      (GlassRaySignature(f, forms, xm) == s0 ? x0 : x1) = xm;
     }
     cuts.push_back(0.5 * (x0 + x1));
   };
@@ -442,10 +484,10 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     const double step = 0.5 * kPi<double> / kScan;
     // Strictly inside the half, so that phi = 0 and +-pi/2 are not probed.
     double prev_phi = lo + 0.5 * step;
-    long prev = GlassRaySignature(f, prev_phi, &roots);
+    long prev = GlassRaySignature(f, forms, prev_phi);
     for (int k = 1; k < kScan; ++k) {
       const double phi = lo + (k + 0.5) * step;
-      const long s = GlassRaySignature(f, phi, &roots);
+      const long s = GlassRaySignature(f, forms, phi);
       if (s != prev) {
         // The cell split at its events: each part probed a 64th inside its
         // ends at events, and bisected if its signature still changes.
@@ -457,8 +499,8 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
           const double v = last ? phi : *e;
           const double inset = (v - u) / 64;
           const double pu = u == prev_phi ? u : u + inset, pv = last ? v : v - inset;
-          if (u != prev_phi) su = GlassRaySignature(f, pu, &roots);
-          const long sv = last ? s : GlassRaySignature(f, pv, &roots);
+          if (u != prev_phi) su = GlassRaySignature(f, forms, pu);
+          const long sv = last ? s : GlassRaySignature(f, forms, pv);
           if (sv != su) bisect(pu, pv, su);
           if (last) break;
           u = v;
