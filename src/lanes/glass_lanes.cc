@@ -65,12 +65,14 @@ struct SimdGlassNodes {
   double lambda_o;
   DielectricPart part = DielectricPart::kBoth;
 
-  void operator()(const GlassRay& ray, const double* theta, double* v) const {
+  // k pieces' 15 nodes each, in one loop over their vectors (which
+  // overlap: each vector's chain of square roots and divisions is long).
+  void operator()(const GlassRay& ray, const double* theta, double* v, int k = 1) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const GlassFrame& f = *frame;
-    HWY_ALIGN double in[16], out[16];
-    NodesTo16(theta, in);
+    HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) NodesTo16(theta + 15 * j, in + 16 * j);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5);
     const V alpha = hn::Set(d, f.alpha), alpha2 = hn::Set(d, f.alpha * f.alpha);
     const V vx = hn::Set(d, f.vx), vz = hn::Set(d, f.vz);
@@ -94,7 +96,7 @@ struct SimdGlassNodes {
     const auto keep_r = hn::Ne(hn::Set(d, RefractionPart(part) ? 0.0 : 1.0), zero);
     const auto keep_t = hn::Ne(hn::Set(d, part == DielectricPart::kReflection ? 0.0 : 1.0), zero);
     const auto use_schlick = hn::Ne(hn::Set(d, schlick ? 1.0 : 0.0), zero);
-    for (size_t i = 0; i < 16; i += N) {
+    for (size_t i = 0; i < static_cast<size_t>(16 * k); i += N) {
       const V th = hn::Load(d, in + i);
       const V ct = CosF64ZeroToPi(d, th), st = SinF64HalfPi(d, th);
       // m = alpha (ct vx - st sp vz, st cp, .) and m.z = ct vz + st sp vx
@@ -154,7 +156,9 @@ struct SimdGlassNodes {
       const V w = hn::Div(hn::MulAdd(xr, dt, hn::Mul(xt, dr)), hn::Mul(dr, dt));
       hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
     }
-    for (int i = 0; i < 15; ++i) v[i] = out[i];
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i < 15; ++i) v[15 * j + i] = out[16 * j + i];
+    }
   }
 };
 
@@ -168,16 +172,17 @@ struct SimdGlassNodes {
 struct SimdAverageLines {
   using V = hn::Vec<DF64>;
   const AverageModel* model;
-  void operator()(const AverageLine& l, const double* w_in, double* v) const {
+  // k pieces' 15 nodes each, in one loop over their vectors.
+  void operator()(const AverageLine& l, const double* w_in, double* v, int k = 1) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
-    HWY_ALIGN double in[16], out[16];
-    NodesTo16(w_in, in);
+    HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) NodesTo16(w_in + 15 * j, in + 16 * j);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
     const V a2 = hn::Set(d, model->a2), num_scale = hn::Set(d, model->separable ? 8.0 : 4.0);
     const V a0 = hn::Set(d, l.a0), a1 = hn::Set(d, l.a1), b0 = hn::Set(d, l.b0), b1 = hn::Set(d, l.b1);
     auto root = [&](V z) { return hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z))))); };
-    for (size_t i = 0; i < 16; i += N) {
+    for (size_t i = 0; i < static_cast<size_t>(16 * k); i += N) {
       const V w = hn::Load(d, in + i);
       const auto low = hn::Le(w, one);
       const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
@@ -192,7 +197,9 @@ struct SimdAverageLines {
       const V num = hn::Mul(num_scale, hn::Mul(za, zb));
       hn::Store(hn::IfThenElseZero(ok, hn::Div(num, hn::IfThenElse(ok, den, one))), d, out + i);
     }
-    for (int i = 0; i < 15; ++i) v[i] = out[i];
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i < 15; ++i) v[15 * j + i] = out[16 * j + i];
+    }
   }
 };
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -241,8 +242,9 @@ struct ScalarGlassNodes {
     }
     return w;
   }
-  void operator()(const GlassRay& ray, const double* theta, double* v) const {
-    for (int i = 0; i < 15; ++i) {
+  // 15 k nodes: k pieces' 15 each.
+  void operator()(const GlassRay& ray, const double* theta, double* v, int k = 1) const {
+    for (int i = 0; i < 15 * k; ++i) {
       const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
       const Vec3<double> m = frame->M(ct, st, ray.cp, ray.sp);
       const double len = std::sqrt(Dot(m, m));
@@ -320,30 +322,65 @@ class GlassPiecesScratch {
   std::vector<GlassPiece>* pieces_;
 };
 
+// The most pieces GlassSegmentsRule evaluates in one call of its
+// integrand.
+inline constexpr int kGlassPieceBatch = 8;
+
 template <class F>
 RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
                              int max_pieces, const F& f, double safety = kGlassErrorSafety) {
-  auto make = [&](int s, double t0, double t1) {
-    const MappedSegment& g = segments[s];
-    GlassPiece p;
-    static_cast<GkPiece&>(p) = KronrodPieceBatch(t0, t1, scale, [&](const double* t, double* v, double* e) {
-      double x[15], jac[15];
-      for (int i = 0; i < 15; ++i) g.Map(t[i], &x[i], &jac[i]);
-      f(x, v, e);
+  // Pieces are made k at a time (the segments' first pieces, a bisected
+  // piece's halves) with one call of f for their 15 k nodes, so that a
+  // lanes evaluator overlaps them; each piece's sums are
+  // KronrodPieceBatch's, term for term.
+  const KronrodRule& rule = Kronrod15();
+  auto make = [&](const GlassPiece* spans, int k, GlassPiece* out) {
+    if (k <= 0) return;
+    double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch];
+    double v[15 * kGlassPieceBatch], e[15 * kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) {
+      const MappedSegment& g = segments[spans[j].segment];
+      const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
+      for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+    }
+    if constexpr (std::is_invocable_v<const F&, const double*, double*, double*, int>) {
+      f(x, v, e, k);
+    } else {
+      for (int j = 0; j < k; ++j) f(x + 15 * j, v + 15 * j, e + 15 * j);
+    }
+    for (int j = 0; j < k; ++j) {
+      double sk = 0, sg = 0, prop = 0;
       for (int i = 0; i < 15; ++i) {
-        v[i] *= jac[i];
-        e[i] *= jac[i];
+        const double vi = v[15 * j + i] * jac[15 * j + i], ei = e[15 * j + i] * jac[15 * j + i];
+        sk += rule.wk[i] * vi;
+        sg += rule.wg[i] * vi;
+        prop += rule.wk[i] * ei;
       }
-    });
-    p.err *= safety;
-    p.segment = s;
-    return p;
+      const double sc = 0.5 * (spans[j].b - spans[j].a) * scale;
+      GlassPiece p;
+      static_cast<GkPiece&>(p) = GkPiece{spans[j].a, spans[j].b, sk * sc, std::abs(sk - sg) * sc, prop * sc};
+      p.err *= safety;
+      p.segment = spans[j].segment;
+      out[j] = p;
+    }
   };
   GlassPiecesScratch scratch;
   std::vector<GlassPiece>& pieces = scratch.pieces();
+  GlassPiece spans[kGlassPieceBatch], made[kGlassPieceBatch];
+  int k = 0;
+  auto flush = [&] {
+    make(spans, k, made);
+    pieces.insert(pieces.end(), made, made + k);
+    k = 0;
+  };
   for (int s = 0; s < n_segments; ++s) {
-    if (segments[s].b > segments[s].a) pieces.push_back(make(s, 0.0, 1.0));
+    if (!(segments[s].b > segments[s].a)) continue;
+    spans[k].a = 0.0;
+    spans[k].b = 1.0;
+    spans[k].segment = s;
+    if (++k == kGlassPieceBatch) flush();
   }
+  if (k > 0) flush();
   auto total = [&] {
     double e = 0;
     for (const GlassPiece& p : pieces) e += p.err + p.prop;
@@ -358,8 +395,11 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
     if (pieces[worst].err <= 0.02 * tol / pieces.size()) break;
     const GlassPiece p = pieces[worst];
     const double m = 0.5 * (p.a + p.b);
-    pieces[worst] = make(p.segment, p.a, m);
-    pieces.push_back(make(p.segment, m, p.b));
+    spans[0].a = p.a, spans[0].b = m, spans[0].segment = p.segment;
+    spans[1].a = m, spans[1].b = p.b, spans[1].segment = p.segment;
+    make(spans, 2, made);
+    pieces[worst] = made[0];
+    pieces.push_back(made[1]);
     err = total();
   }
   return SumOfPieces(pieces, err);
@@ -453,10 +493,15 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     }
     segs.push_back({a, theta_max, sing_a, false});
     const GlassRay gr{cp, sp};
-    const RuleResult res = GlassSegmentsRule(segs, 1.0, inner_tol, 200, [&](const double* x, double* v, double* e) {
-      nodes(gr, x, v);
-      for (int i = 0; i < 15; ++i) e[i] = 0;
-    });
+    const RuleResult res =
+        GlassSegmentsRule(segs, 1.0, inner_tol, 200, [&](const double* x, double* v, double* e, int k) {
+          if constexpr (std::is_invocable_v<const Nodes&, const GlassRay&, const double*, double*, int>) {
+            nodes(gr, x, v, k);
+          } else {
+            for (int j = 0; j < k; ++j) nodes(gr, x + 15 * j, v + 15 * j);
+          }
+          for (int i = 0; i < 15 * k; ++i) e[i] = 0;
+        });
     *err = res.error;
     return res.value;
   };

@@ -104,8 +104,9 @@ struct AverageLine {
 // The double reference of the line's nodes.
 struct ScalarAverageLines {
   const AverageModel* model;
-  void operator()(const AverageLine& l, const double* w, double* v) const {
-    for (int i = 0; i < 15; ++i) {
+  // 15 k nodes: k pieces' 15 each.
+  void operator()(const AverageLine& l, const double* w, double* v, int k = 1) const {
+    for (int i = 0; i < 15 * k; ++i) {
       double x, jac;
       CosOfW(w[i], &x, &jac);
       v[i] = jac * model->G2(l.a0 + l.a1 * x, l.b0 + l.b1 * x);
@@ -131,9 +132,9 @@ PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol
   const int n = GradedFromLow(lo, hi, finest, 1.0, segs);
   const RuleResult res = GlassSegmentsRule(
       segs, n, scale, tol, 200,
-      [&](const double* w, double* v, double* e) {
-        lines(line, w, v);
-        for (int i = 0; i < 15; ++i) e[i] = 0;
+      [&](const double* w, double* v, double* e, int k) {
+        lines(line, w, v, k);
+        for (int i = 0; i < 15 * k; ++i) e[i] = 0;
       },
       kAverageSafety);
   return {res.value, res.error};
