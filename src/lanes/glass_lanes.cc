@@ -65,8 +65,9 @@ struct SimdGlassNodes {
   double lambda_o;
   DielectricPart part = DielectricPart::kBoth;
 
-  // k pieces' 15 nodes each, in one loop over their vectors (which
-  // overlap: each vector's chain of square roots and divisions is long).
+  // k pieces' 15 nodes each (k at most kGlassPieceBatch), in one loop
+  // over their vectors (which overlap: each vector's chain of square roots
+  // and divisions is long).
   void operator()(const GlassRay& ray, const double* theta, double* v, int k = 1) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -172,7 +173,8 @@ struct SimdGlassNodes {
 struct SimdAverageLines {
   using V = hn::Vec<DF64>;
   const AverageModel* model;
-  // k pieces' 15 nodes each, in one loop over their vectors.
+  // k pieces' 15 nodes each (k at most kGlassPieceBatch), in one loop
+  // over their vectors.
   void operator()(const AverageLine& l, const double* w_in, double* v, int k = 1) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);

@@ -48,9 +48,23 @@ struct GkPiece {
   double a = 0, b = 0, value = 0, err = 0, prop = 0;
 };
 
-// Gauss-Kronrod 15 on [a, b] times `scale` of a batch integrand:
-// f(x, v, e) fills v[i] and e[i], the integrand at the 15 nodes x[i] and
-// the errors of its own (inner) evaluation there.
+// Gauss-Kronrod 15 on [a, b] times `scale` from the integrand v[i] at the
+// 15 nodes of [a, b] (Kronrod15's x mapped to it) and the errors e[i] of
+// its own (inner) evaluation there.
+inline GkPiece KronrodPieceOf(double a, double b, double scale, const double* v, const double* e) {
+  const KronrodRule& r = Kronrod15();
+  double k = 0, g = 0, prop = 0;
+  for (int i = 0; i < 15; ++i) {
+    k += r.wk[i] * v[i];
+    g += r.wg[i] * v[i];
+    prop += r.wk[i] * e[i];
+  }
+  const double s = 0.5 * (b - a) * scale;
+  return GkPiece{a, b, k * s, std::abs(k - g) * s, prop * s};
+}
+
+// The same of a batch integrand: f(x, v, e) fills v[i] and e[i] at the 15
+// nodes x[i].
 template <class F>
 GkPiece KronrodPieceBatch(double a, double b, double scale, const F& f) {
   const KronrodRule& r = Kronrod15();
@@ -58,14 +72,7 @@ GkPiece KronrodPieceBatch(double a, double b, double scale, const F& f) {
   double x[15], v[15], e[15];
   for (int i = 0; i < 15; ++i) x[i] = c + h * r.x[i];
   f(x, v, e);
-  double k = 0, g = 0, prop = 0;
-  for (int i = 0; i < 15; ++i) {
-    k += r.wk[i] * v[i];
-    g += r.wg[i] * v[i];
-    prop += r.wk[i] * e[i];
-  }
-  const double s = h * scale;
-  return GkPiece{a, b, k * s, std::abs(k - g) * s, prop * s};
+  return KronrodPieceOf(a, b, scale, v, e);
 }
 
 // The same for f(x, &inner_err) returning the integrand at one point.

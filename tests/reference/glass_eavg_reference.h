@@ -34,8 +34,8 @@ inline RuleResult GlassEavgOverMu(double alpha, double eta, Masking masking, dou
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i + 1] > cuts[i]) segs.push_back({cuts[i], cuts[i + 1], cuts[i] == sc, cuts[i + 1] == sc});
   }
-  return GlassSegmentsRule(segs, 1.0, tol, 400, [&](const double* x, double* v, double* e) {
-    for (int i = 0; i < 15; ++i) {
+  return GlassSegmentsRule(segs, 1.0, tol, 400, [&](const double* x, double* v, double* e, int k) {
+    for (int i = 0; i < 15 * k; ++i) {
       const double s = x[i];
       const RuleResult r = GlassAlbedo(alpha, eta, masking, std::max(s * s, 1e-7), 0.1 * tol, 4096, part);
       v[i] = 4 * s * s * s * r.value;

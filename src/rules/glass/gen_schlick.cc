@@ -22,11 +22,12 @@ double GenSchlickWeight(const GenSchlickShape& shape, double c) {
 namespace {
 
 // The integrand cos(theta) sin(theta) W(h) 1{r.z > 0} along a ray of the
-// lune (glass_albedo_rule.h) at its 15 angles, r the reflection of wo
-// about h; weight(h, c) is W at c = wo.h.
+// lune (glass_albedo_rule.h) at the 15 angles of each of k pieces, r the
+// reflection of wo about h; weight(h, c) is W at c = wo.h.
 template <class Weight>
-void ReflectionNodes(const GlassFrame& f, const GlassRay& ray, const double* theta, double* v, const Weight& weight) {
-  for (int i = 0; i < 15; ++i) {
+void ReflectionNodes(const GlassFrame& f, const GlassRay& ray, const double* theta, double* v, int k,
+                     const Weight& weight) {
+  for (int i = 0; i < 15 * k; ++i) {
     const double ct = std::cos(theta[i]), st = std::sin(theta[i]);
     const Vec3<double> m = f.M(ct, st, ray.cp, ray.sp);
     const double len = std::sqrt(Dot(m, m));
@@ -44,8 +45,8 @@ void ReflectionNodes(const GlassFrame& f, const GlassRay& ray, const double* the
 struct GenSchlickNodes {
   const GlassFrame* frame;
   GenSchlickShape shape;
-  void operator()(const GlassRay& ray, const double* theta, double* v) const {
-    ReflectionNodes(*frame, ray, theta, v, [&](const Vec3<double>&, double c) { return GenSchlickWeight(shape, c); });
+  void operator()(const GlassRay& ray, const double* theta, double* v, int k) const {
+    ReflectionNodes(*frame, ray, theta, v, k, [&](const Vec3<double>&, double c) { return GenSchlickWeight(shape, c); });
   }
 };
 
@@ -55,8 +56,8 @@ struct F82Nodes {
   GgxNdf<double> ndf;
   Masking masking;
   double lambda_o;
-  void operator()(const GlassRay& ray, const double* theta, double* v) const {
-    ReflectionNodes(*frame, ray, theta, v, [&](const Vec3<double>& h, double c) {
+  void operator()(const GlassRay& ray, const double* theta, double* v, int k) const {
+    ReflectionNodes(*frame, ray, theta, v, k, [&](const Vec3<double>& h, double c) {
       const double li = ndf.Lambda(h * (2 * c) - Vec3<double>{frame->so, 0, frame->mu});
       // Separable: G1(r); height-correlated: (1 + Lambda(wo)) / (1 +
       // Lambda(wo) + Lambda(r)).

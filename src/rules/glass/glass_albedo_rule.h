@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -295,11 +294,6 @@ inline constexpr double kGlassErrorSafety = 3;
 // with the same largest error against a 1e-11 integration.
 inline constexpr double kGlassGrading = 1.0 / 16;
 
-// Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
-// until the summed `safety` x |K15 - G7| plus the nodes' own errors meet
-// `tol`, or bisection stops helping (the worst piece's part below 1/50 of
-// the tolerance per piece), or `max_pieces`. f(x, v, e) fills the
-// integrand and its errors at 15 points x.
 // The pieces' storage of GlassSegmentsRule, one vector per nesting depth
 // and thread (the rules nest: E's rays in phi, E_avg's psi lines in c in
 // q), kept from call to call so that a line allocates nothing.
@@ -326,13 +320,17 @@ class GlassPiecesScratch {
 // integrand.
 inline constexpr int kGlassPieceBatch = 8;
 
+// Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
+// until the summed `safety` x |K15 - G7| plus the nodes' own errors meet
+// `tol`, or bisection stops helping (the worst piece's part below 1/50 of
+// the tolerance per piece), or `max_pieces`. f(x, v, e, k) fills the
+// integrand and its errors at the 15 k points x of k pieces (k at most
+// kGlassPieceBatch): the pieces are made k at a time (the segments' first
+// pieces, a bisected piece's halves), so that a lanes evaluator overlaps
+// their nodes.
 template <class F>
 RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
                              int max_pieces, const F& f, double safety = kGlassErrorSafety) {
-  // Pieces are made k at a time (the segments' first pieces, a bisected
-  // piece's halves) with one call of f for their 15 k nodes, so that a
-  // lanes evaluator overlaps them; each piece's sums are
-  // KronrodPieceBatch's, term for term.
   const KronrodRule& rule = Kronrod15();
   auto make = [&](const GlassPiece* spans, int k, GlassPiece* out) {
     if (k <= 0) return;
@@ -343,22 +341,14 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
       const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
       for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
     }
-    if constexpr (std::is_invocable_v<const F&, const double*, double*, double*, int>) {
-      f(x, v, e, k);
-    } else {
-      for (int j = 0; j < k; ++j) f(x + 15 * j, v + 15 * j, e + 15 * j);
+    f(x, v, e, k);
+    for (int i = 0; i < 15 * k; ++i) {
+      v[i] *= jac[i];
+      e[i] *= jac[i];
     }
     for (int j = 0; j < k; ++j) {
-      double sk = 0, sg = 0, prop = 0;
-      for (int i = 0; i < 15; ++i) {
-        const double vi = v[15 * j + i] * jac[15 * j + i], ei = e[15 * j + i] * jac[15 * j + i];
-        sk += rule.wk[i] * vi;
-        sg += rule.wg[i] * vi;
-        prop += rule.wk[i] * ei;
-      }
-      const double sc = 0.5 * (spans[j].b - spans[j].a) * scale;
       GlassPiece p;
-      static_cast<GkPiece&>(p) = GkPiece{spans[j].a, spans[j].b, sk * sc, std::abs(sk - sg) * sc, prop * sc};
+      static_cast<GkPiece&>(p) = KronrodPieceOf(spans[j].a, spans[j].b, scale, v + 15 * j, e + 15 * j);
       p.err *= safety;
       p.segment = spans[j].segment;
       out[j] = p;
@@ -495,11 +485,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     const GlassRay gr{cp, sp};
     const RuleResult res =
         GlassSegmentsRule(segs, 1.0, inner_tol, 200, [&](const double* x, double* v, double* e, int k) {
-          if constexpr (std::is_invocable_v<const Nodes&, const GlassRay&, const double*, double*, int>) {
-            nodes(gr, x, v, k);
-          } else {
-            for (int j = 0; j < k; ++j) nodes(gr, x + 15 * j, v + 15 * j);
-          }
+          nodes(gr, x, v, k);
           for (int i = 0; i < 15 * k; ++i) e[i] = 0;
         });
     *err = res.error;
@@ -576,8 +562,8 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   const double scale = 2 / area;
   const double inner_tol = 0.1 * tol / (scale * 1.5 * kPi<double>);
   return GlassSegmentsRule(segs, scale, tol, std::max(max_pieces, 8),
-                           [&](const double* x, double* v, double* e) {
-                             for (int i = 0; i < 15; ++i) v[i] = ray(x[i], inner_tol, &e[i]);
+                           [&](const double* x, double* v, double* e, int k) {
+                             for (int i = 0; i < 15 * k; ++i) v[i] = ray(x[i], inner_tol, &e[i]);
                            });
 }
 

@@ -206,8 +206,8 @@ RuleResult OverC(const AverageModel& m, double sh, double chh, double tol, const
   // weights (c w <= 1, the maps' Jacobians at most 1.5 times a width
   // summing to 1).
   const double line_tol = kInnerShare * tol / 1.5;
-  return GlassSegmentsRule(segs, 1.0, tol, 200, [&](const double* x, double* v, double* e) {
-    for (int i = 0; i < 15; ++i) {
+  return GlassSegmentsRule(segs, 1.0, tol, 200, [&](const double* x, double* v, double* e, int k) {
+    for (int i = 0; i < 15 * k; ++i) {
       const double c = std::clamp(x[i], 0.0, 1.0);
       const double s = std::sqrt((1 - c) * (1 + c));
       const double cc = c * chh, k = s * sh;
@@ -262,8 +262,8 @@ RuleResult GlassAlbedoAverageWith(const AverageModel& m, double tol, int max_pie
       const double crit = std::sqrt((1 - m.eta) * (1 + m.eta));
       segs = {{0, crit, false, true}, {crit, 1, true, false}};
     }
-    return GlassSegmentsRule(segs, 2.0, tol, 64, [&](const double* x, double* v, double* e) {
-      for (int i = 0; i < 15; ++i) {
+    return GlassSegmentsRule(segs, 2.0, tol, 64, [&](const double* x, double* v, double* e, int k) {
+      for (int i = 0; i < 15 * k; ++i) {
         double wr, wt;
         m.Weights(x[i], &wr, &wt);
         v[i] = x[i] * (part == DielectricPart::kBoth ? 1.0 : wr + wt);
@@ -306,15 +306,18 @@ RuleResult GlassAlbedoAverageWith(const AverageModel& m, double tol, int max_pie
   for (size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i + 1] > cuts[i]) segs.push_back({cuts[i], cuts[i + 1], false, false});
   }
-  return GlassSegmentsRule(segs, 1.0, tol, std::max(max_pieces, 8), [&](const double* x, double* v, double* e) {
-    for (int i = 0; i < 15; ++i) {
-      double sh, chh, w;
-      at(x[i], &sh, &chh, &w);
-      const RuleResult r = OverC(m, sh, chh, kInnerShare * tol / std::max(1.5 * w, 1e-300), lines);
-      v[i] = w * r.value;
-      e[i] = w * r.error;
-    }
-  }, kAverageSafety);
+  return GlassSegmentsRule(
+      segs, 1.0, tol, std::max(max_pieces, 8),
+      [&](const double* x, double* v, double* e, int k) {
+        for (int i = 0; i < 15 * k; ++i) {
+          double sh, chh, w;
+          at(x[i], &sh, &chh, &w);
+          const RuleResult r = OverC(m, sh, chh, kInnerShare * tol / std::max(1.5 * w, 1e-300), lines);
+          v[i] = w * r.value;
+          e[i] = w * r.error;
+        }
+      },
+      kAverageSafety);
 }
 
 }  // namespace brdfbake
