@@ -286,6 +286,40 @@ TEST(GlassAlbedoTest, RayEventsAreWhereRootsAppear) {
   EXPECT_GE(n_events, 9);
 }
 
+// The scan's signature, from the roots' tangents, is the sequence of
+// curves GlassRoots finds (by angles) along every ray of a fine scan, but
+// within 1e-9 of a root's coincidence with another or with an end.
+TEST(GlassAlbedoTest, SignatureFromTangentsIsTheRootsSequence) {
+  const Case views[] = {{0.2025, 1 / 3.0, 0.15}, {0.36, 1 / 12.7, 0.95}, {0.0044, 1 / 1.1, 1e-4},
+                        {0.5, 1.5, 0.2},          {1.0, 1 / 3.0, 0.01},   {0.09, 1 / 1.5, 1.0}};
+  const int kRays = 20000;
+  int compared = 0;
+  for (const Case& c : views) {
+    const GlassFrame f(c.alpha, c.eta, c.mu);
+    const GlassCurveForms forms(f);
+    std::vector<GlassRoot> roots;
+    for (int k = 0; k < kRays; ++k) {
+      const double phi = -0.5 * kPi<double> + kPi<double> * (k + 0.5) / kRays;
+      const double sp = std::sin(phi), cp = std::cos(phi), theta_max = f.ThetaMax(sp);
+      GlassRoots(forms, cp, sp, theta_max, &roots);
+      bool near_tie = false;
+      long want = 1;
+      double prev = 0;
+      for (const GlassRoot& r : roots) {
+        near_tie |= r.theta - prev < 1e-9;
+        prev = r.theta;
+        want = 4 * want + r.curve;
+      }
+      near_tie |= theta_max - prev < 1e-9;
+      if (near_tie) continue;
+      EXPECT_EQ(GlassRaySignature(f, forms, phi), want)
+          << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 6 * kRays - 100);
+}
+
 // The views where roots appeared and vanished within one cell of the
 // rays' scan: their E at the table's tolerances within its claim of the
 // converged value.
