@@ -169,38 +169,70 @@ struct SimdGlassNodes {
 // height-correlated (1 / G2 = 1 / ga + 1 / gb - 1) and 8 za zb / (sqrt(2 -
 // y^2) (za + ra) (zb + rb)) separable; 0 where both cosines are 0 (the
 // reference's G1 is 0 on the horizon). Each node differs from the
-// reference by the rounding of these terms only.
+// reference by the rounding of these terms only. Pieces forms each
+// piece's 16 nodes (Kronrod16: the 16th at the centre, of weight 0) and
+// its K15 and G7 sums in lanes, one horizontal sum each: the sums differ
+// from the reference's by their order of addition.
 struct SimdAverageLines {
   using V = hn::Vec<DF64>;
   const AverageModel* model;
-  // k pieces' 15 nodes each (k at most kGlassPieceBatch), in one loop
-  // over their vectors.
+
+  // jac G2 at the nodes w, given the line's coefficients in lanes.
+  struct Line {
+    V a0, a1, b0, b1;
+  };
+  HWY_INLINE V Value(const Line& l, V w) const {
+    const DF64 d;
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
+    const V a2 = hn::Set(d, model->a2);
+    auto root = [&](V z) { return hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z))))); };
+    const auto low = hn::Le(w, one);
+    const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
+    const V x = hn::IfThenElse(low, hn::Mul(hn::Sub(one, y), hn::Add(one, y)),
+                               hn::Mul(hn::Sub(y, one), hn::Add(y, one)));
+    const V za = hn::Max(hn::MulAdd(l.a1, x, l.a0), zero), zb = hn::Max(hn::MulAdd(l.b1, x, l.b0), zero);
+    const V ra = root(za), rb = root(zb);
+    const V den_g = model->separable ? hn::Mul(hn::Add(za, ra), hn::Add(zb, rb))
+                                     : hn::MulAdd(ra, zb, hn::Mul(rb, za));
+    const V den = hn::Mul(hn::Sqrt(hn::NegMulAdd(y, y, two)), den_g);
+    const auto ok = hn::Gt(den, zero);
+    const V num = hn::Mul(hn::Set(d, model->separable ? 8.0 : 4.0), hn::Mul(za, zb));
+    return hn::IfThenElseZero(ok, hn::Div(num, hn::IfThenElse(ok, den, one)));
+  }
+  static Line LineOf(const AverageLine& l) {
+    const DF64 d;
+    return {hn::Set(d, l.a0), hn::Set(d, l.a1), hn::Set(d, l.b0), hn::Set(d, l.b1)};
+  }
+
+  // 15 k nodes: k pieces' 15 each (k at most kGlassPieceBatch).
   void operator()(const AverageLine& l, const double* w_in, double* v, int k = 1) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
     for (int j = 0; j < k; ++j) NodesTo16(w_in + 15 * j, in + 16 * j);
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
-    const V a2 = hn::Set(d, model->a2), num_scale = hn::Set(d, model->separable ? 8.0 : 4.0);
-    const V a0 = hn::Set(d, l.a0), a1 = hn::Set(d, l.a1), b0 = hn::Set(d, l.b0), b1 = hn::Set(d, l.b1);
-    auto root = [&](V z) { return hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z))))); };
-    for (size_t i = 0; i < static_cast<size_t>(16 * k); i += N) {
-      const V w = hn::Load(d, in + i);
-      const auto low = hn::Le(w, one);
-      const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
-      const V x = hn::IfThenElse(low, hn::Mul(hn::Sub(one, y), hn::Add(one, y)),
-                                 hn::Mul(hn::Sub(y, one), hn::Add(y, one)));
-      const V za = hn::Max(hn::MulAdd(a1, x, a0), zero), zb = hn::Max(hn::MulAdd(b1, x, b0), zero);
-      const V ra = root(za), rb = root(zb);
-      const V den_g = model->separable ? hn::Mul(hn::Add(za, ra), hn::Add(zb, rb))
-                                       : hn::MulAdd(ra, zb, hn::Mul(rb, za));
-      const V den = hn::Mul(hn::Sqrt(hn::NegMulAdd(y, y, two)), den_g);
-      const auto ok = hn::Gt(den, zero);
-      const V num = hn::Mul(num_scale, hn::Mul(za, zb));
-      hn::Store(hn::IfThenElseZero(ok, hn::Div(num, hn::IfThenElse(ok, den, one))), d, out + i);
-    }
+    const Line line = LineOf(l);
+    for (size_t i = 0; i < static_cast<size_t>(16 * k); i += N) hn::Store(Value(line, hn::Load(d, in + i)), d, out + i);
     for (int j = 0; j < k; ++j) {
       for (int i = 0; i < 15; ++i) v[15 * j + i] = out[16 * j + i];
+    }
+  }
+
+  // The sums of k pieces [a[j], b[j]] (k at most kMaxGraded).
+  void Pieces(const AverageLine& l, const double* a, const double* b, int k, LineSums* out) const {
+    static const Kronrod16 rule;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    const Line line = LineOf(l);
+    for (int j = 0; j < k; ++j) {
+      const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
+      const V vc = hn::Set(d, c), vh = hn::Set(d, h);
+      V ks = hn::Zero(d), gs = hn::Zero(d);
+      for (size_t i = 0; i < 16; i += N) {
+        const V f = Value(line, hn::MulAdd(vh, hn::Load(d, rule.x + i), vc));
+        ks = hn::MulAdd(hn::Load(d, rule.wk + i), f, ks);
+        gs = hn::MulAdd(hn::Load(d, rule.wg + i), f, gs);
+      }
+      out[j] = {h * hn::GetLane(hn::SumOfLanes(d, ks)), h * hn::GetLane(hn::SumOfLanes(d, gs))};
     }
   }
 };
@@ -214,6 +246,16 @@ void GlassAverageLine(double alpha, Masking masking, const double* coefficients,
   const AverageModel m = AverageModelOf(alpha, 1.5, masking, DielectricPart::kBoth);
   const AverageLine line{coefficients[0], coefficients[1], coefficients[2], coefficients[3]};
   SimdAverageLines{&m}(line, w, v);
+}
+
+void GlassAverageSums(double alpha, Masking masking, const double* coefficients, double a, double b, double* kron,
+                      double* gauss) {
+  const AverageModel m = AverageModelOf(alpha, 1.5, masking, DielectricPart::kBoth);
+  const AverageLine line{coefficients[0], coefficients[1], coefficients[2], coefficients[3]};
+  LineSums sums;
+  SimdAverageLines{&m}.Pieces(line, &a, &b, 1, &sums);
+  *kron = sums.kron;
+  *gauss = sums.gauss;
 }
 
 RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
@@ -266,6 +308,12 @@ HWY_EXPORT(GlassAverageLine);
 void SimdGlassAverageLineValues(double alpha, Masking masking, const double* coefficients, const double* w,
                                 double* v) {
   HWY_DYNAMIC_DISPATCH(GlassAverageLine)(alpha, masking, coefficients, w, v);
+}
+
+HWY_EXPORT(GlassAverageSums);
+void SimdGlassAverageLineSums(double alpha, Masking masking, const double* coefficients, double a, double b,
+                              double* kron, double* gauss) {
+  HWY_DYNAMIC_DISPATCH(GlassAverageSums)(alpha, masking, coefficients, a, b, kron, gauss);
 }
 
 }  // namespace brdfbake

@@ -22,14 +22,18 @@ RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu,
 void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
                          double* v, DielectricPart part = DielectricPart::kBoth);
 
-// GlassAlbedoAverage (glass_average.h) with each psi piece's 15 nodes in
-// lanes.
+// GlassAlbedoAverage (glass_average.h) with each psi piece's nodes and
+// Kronrod sums in lanes.
 RuleResult SimdGlassAlbedoAverage(double alpha, double eta, Masking masking, double tol, int max_pieces,
                                   DielectricPart part = DielectricPart::kBoth);
 // A psi line's 15 node values (ScalarAverageLines' at the coefficients
 // a0, a1, b0, b1 of AverageLine), for the tests.
 void SimdGlassAverageLineValues(double alpha, Masking masking, const double* coefficients, const double* w,
                                 double* v);
+// The K15 and G7 sums of the psi piece [a, b] of w along that line
+// (ScalarAverageLines::Pieces), for the tests.
+void SimdGlassAverageLineSums(double alpha, Masking masking, const double* coefficients, double a, double b,
+                              double* kron, double* gauss);
 
 }  // namespace brdfbake
 

@@ -13,6 +13,10 @@
 //    reflection's cosines cc -+ k x, the refraction's cc - k x and ct
 //    cos(theta_h) - k x / eta), pieces from 1e-8 to 1 wide, every third
 //    ending on the horizon.
+//  - Piece by piece: the K15 and G7 sums of the same pieces, the nodes
+//    formed in lanes and summed in another order: within kNodeBound times
+//    the piece's width (the weights sum to 2, times the half width) and
+//    the rounding of 16 terms.
 //  - Texel by texel: the adaptive levels may split a piece differently
 //    where a |K15 - G7| sits at a threshold, so the two averages agree
 //    within their claims: |simd - scalar| <= kClaimShare (claim_simd +
@@ -41,12 +45,12 @@ constexpr double kNodeBound = 1e-11;
 constexpr double kClaimShare = 0.25;
 constexpr double kRoundingBound = 1e-13;
 
-TEST(GlassAverageLanesTest, LineNodesAgreeWithTheScalarReferenceOnEveryTarget) {
+TEST(GlassAverageLanesTest, LineNodesAndSumsAgreeWithTheScalarReferenceOnEveryTarget) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const std::string& target : AvailableTargets()) {
     ForceTarget(target);
     std::mt19937_64 rng(35);  // the same lines on every target
-    double worst = 0;
+    double worst = 0, worst_sum = 0;
     for (Masking masking : {Masking::kHeightCorrelated, Masking::kSeparable}) {
       for (double alpha : {1e-4, 2e-3, 0.04, 0.3, 1.0}) {
         const AverageModel m = AverageModelOf(alpha, 1.5, masking, DielectricPart::kBoth);
@@ -69,6 +73,15 @@ TEST(GlassAverageLanesTest, LineNodesAgreeWithTheScalarReferenceOnEveryTarget) {
           for (int i = 0; i < 15; ++i) w[i] = a + 0.5 * width * (1 + Kronrod15().x[i]);
           SimdGlassAverageLineValues(alpha, masking, coef, w, got);
           ScalarAverageLines{&m}(line, w, want);
+          double kron, gauss;
+          SimdGlassAverageLineSums(alpha, masking, coef, a, a + width, &kron, &gauss);
+          LineSums ref;
+          const double b = a + width;
+          ScalarAverageLines{&m}.Pieces(line, &a, &b, 1, &ref);
+          const double sum_bound = kNodeBound * width + 1e-15 * std::abs(ref.kron);
+          EXPECT_LE(std::abs(kron - ref.kron), sum_bound) << target << " alpha " << alpha << " piece " << a;
+          EXPECT_LE(std::abs(gauss - ref.gauss), sum_bound) << target << " alpha " << alpha << " piece " << a;
+          worst_sum = std::max(worst_sum, std::abs(kron - ref.kron) / sum_bound);
           for (int i = 0; i < 15; ++i) {
             ASSERT_TRUE(std::isfinite(got[i])) << target << " w " << w[i];
             EXPECT_LE(std::abs(got[i] - want[i]), kNodeBound)
@@ -78,8 +91,8 @@ TEST(GlassAverageLanesTest, LineNodesAgreeWithTheScalarReferenceOnEveryTarget) {
         }
       }
     }
-    std::printf("%s: largest |simd - scalar| of the E_avg line nodes %.3g\n", target.c_str(),
-                worst);
+    std::printf("%s: largest |simd - scalar| of the E_avg line nodes %.3g; of the sums, %.3g of their bound\n",
+                target.c_str(), worst, worst_sum);
   }
   ForceTarget("best");
 }

@@ -272,9 +272,12 @@ struct MappedSegment {
   }
 };
 
-// A piece of a mapped segment: [a, b] in t.
-struct GlassPiece : GkPiece {
-  int segment = 0;
+// A piece of a mapped segment: [a, b] in t, with GkPiece's sums. No
+// member initializers: the rule's arrays of them would be zeroed on every
+// call of a psi line (a sixth of that rule's own time).
+struct GlassPiece {
+  double a, b, value, err, prop;
+  int segment;
 };
 
 // A piece's |K15 - G7| counts three times, as in SegmentRule
@@ -339,7 +342,16 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
     for (int j = 0; j < k; ++j) {
       const MappedSegment& g = segments[spans[j].segment];
       const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
-      for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+      if (g.singular_a || g.singular_b) {
+        for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+      } else {
+        // Map's identity branch, out of the loop.
+        const double w = g.b - g.a;
+        for (int i = 0; i < 15; ++i) {
+          x[15 * j + i] = g.a + w * (c + h * rule.x[i]);
+          jac[15 * j + i] = w;
+        }
+      }
     }
     f(x, v, e, k);
     for (int i = 0; i < 15 * k; ++i) {
@@ -347,11 +359,8 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
       e[i] *= jac[i];
     }
     for (int j = 0; j < k; ++j) {
-      GlassPiece p;
-      static_cast<GkPiece&>(p) = KronrodPieceOf(spans[j].a, spans[j].b, scale, v + 15 * j, e + 15 * j);
-      p.err *= safety;
-      p.segment = spans[j].segment;
-      out[j] = p;
+      const GkPiece p = KronrodPieceOf(spans[j].a, spans[j].b, scale, v + 15 * j, e + 15 * j);
+      out[j] = GlassPiece{p.a, p.b, p.value, p.err * safety, p.prop, spans[j].segment};
     }
   };
   GlassPiecesScratch scratch;

@@ -62,23 +62,23 @@ struct AverageModel {
 inline constexpr double kAverageSafety = 1;
 inline constexpr double kInnerShare = 0.5;
 
-// Segments of [lo, hi] graded towards lo (ratio kGlassGrading) down to
-// `finest`, cut at `cut` if inside, unmapped: at most kMaxGraded, in
-// `segs`; returns their count.
+// The cuts of [lo, hi] graded towards lo (ratio kGlassGrading) down to
+// `finest`, and at `cut` if inside, ascending and distinct, in `cuts`
+// (room for kMaxGraded + 1); returns the number of pieces [cuts[j],
+// cuts[j + 1]], at most kMaxGraded.
 inline constexpr int kMaxGraded = 16;
-inline int GradedFromLow(double lo, double hi, double finest, double cut, MappedSegment* segs) {
-  double cuts[kMaxGraded + 1];
+inline int GradedFromLow(double lo, double hi, double finest, double cut, double* cuts) {
   int n = 0;
   cuts[n++] = lo;
   cuts[n++] = hi;
   if (cut > lo && cut < hi) cuts[n++] = cut;
   for (double w = 0.25 * (hi - lo); w > finest && n < kMaxGraded; w *= kGlassGrading) cuts[n++] = lo + w;
   std::sort(cuts, cuts + n);
-  int m = 0;
-  for (int k = 0; k + 1 < n; ++k) {
-    if (cuts[k + 1] > cuts[k]) segs[m++] = {cuts[k], cuts[k + 1], false, false};
+  int m = 1;
+  for (int k = 1; k < n; ++k) {
+    if (cuts[k] > cuts[m - 1]) cuts[m++] = cuts[k];
   }
-  return m;
+  return m - 1;
 }
 
 // The psi lines take w in [0, 2] for psi in [0, pi]: w = sqrt(1 - cos(psi))
@@ -94,11 +94,17 @@ inline void CosOfW(double w, double* x, double* jac) {
   *jac = 2 / std::sqrt(2 - y * y);
 }
 
-// A psi line: v = jac(w) G2(a0 + a1 x, b0 + b1 x) at 15 nodes w, x =
+// A psi line: v = jac(w) G2(a0 + a1 x, b0 + b1 x) at nodes w, x =
 // cos(psi) and jac = dpsi/dw from CosOfW; the cosines' coefficients are
 // the line's.
 struct AverageLine {
   double a0, a1, b0, b1;
+};
+
+// A Kronrod piece [a, b] of w along a line: its K15 and G7 sums, each
+// times the half width (b - a) / 2.
+struct LineSums {
+  double kron, gauss;
 };
 
 // The double reference of the line's nodes.
@@ -112,15 +118,36 @@ struct ScalarAverageLines {
       v[i] = jac * model->G2(l.a0 + l.a1 * x, l.b0 + l.b1 * x);
     }
   }
+  // The sums of k pieces [a[j], b[j]] (k at most kMaxGraded).
+  void Pieces(const AverageLine& l, const double* a, const double* b, int k, LineSums* out) const {
+    const KronrodRule& r = Kronrod15();
+    for (int j = 0; j < k; ++j) {
+      const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
+      double w[15], v[15];
+      for (int i = 0; i < 15; ++i) w[i] = c + h * r.x[i];
+      (*this)(l, w, v);
+      double ks = 0, gs = 0;
+      for (int i = 0; i < 15; ++i) {
+        ks += r.wk[i] * v[i];
+        gs += r.wg[i] * v[i];
+      }
+      out[j] = {h * ks, h * gs};
+    }
+  }
 };
 
 // `scale` times the integral over psi from acos(x_hi) to acos(x_lo), x_lo
 // <= 0, of the line's G2, to `tol` (absolute), with its error. A horizon
 // at x_hi < 1, where G2 turns on over (x_hi - x) ~ `width`, grades the
-// pieces towards it.
+// pieces towards it. The adaptive rule of GlassSegmentsRule (the worst
+// piece bisected, the same stops) on plain pieces of w, whose nodes and
+// sums the evaluator forms: a lanes evaluator forms them in lanes, and
+// the line's inner errors are none.
 struct PsiLine {
   double value, error;
 };
+
+inline constexpr int kMaxLinePieces = 200;
 
 template <class Lines>
 PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol, const AverageLine& line,
@@ -128,16 +155,42 @@ PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol
   const double lo = WOfCos(std::min(x_hi, 1.0)), hi = WOfCos(x_lo);
   if (!(hi > lo)) return {0, 0};
   const double finest = x_hi < 1 ? WOfCos(std::max(x_hi - width, -1.0)) - lo : hi - lo;
-  MappedSegment segs[kMaxGraded];
-  const int n = GradedFromLow(lo, hi, finest, 1.0, segs);
-  const RuleResult res = GlassSegmentsRule(
-      segs, n, scale, tol, 200,
-      [&](const double* w, double* v, double* e, int k) {
-        lines(line, w, v, k);
-        for (int i = 0; i < 15 * k; ++i) e[i] = 0;
-      },
-      kAverageSafety);
-  return {res.value, res.error};
+  double cuts[kMaxGraded + 1];
+  const int n = GradedFromLow(lo, hi, finest, 1.0, cuts);
+  struct Piece {
+    double a, b, value, err;
+  };
+  Piece pieces[kMaxLinePieces];
+  LineSums sums[kMaxGraded];
+  lines.Pieces(line, cuts, cuts + 1, n, sums);
+  auto piece = [&](double pa, double pb, const LineSums& s) {
+    return Piece{pa, pb, scale * s.kron, kAverageSafety * scale * std::abs(s.kron - s.gauss)};
+  };
+  for (int j = 0; j < n; ++j) pieces[j] = piece(cuts[j], cuts[j + 1], sums[j]);
+  int count = n;
+  auto total = [&] {
+    double e = 0;
+    for (int j = 0; j < count; ++j) e += pieces[j].err;
+    return e;
+  };
+  double err = total();
+  while (err > tol && count > 0 && count < kMaxLinePieces) {
+    int worst = 0;
+    for (int j = 1; j < count; ++j) {
+      if (pieces[j].err > pieces[worst].err) worst = j;
+    }
+    if (pieces[worst].err <= 0.02 * tol / count) break;
+    const Piece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    const double ends[3] = {p.a, m, p.b};
+    lines.Pieces(line, ends, ends + 1, 2, sums);
+    pieces[worst] = piece(p.a, m, sums[0]);
+    pieces[count++] = piece(m, p.b, sums[1]);
+    err = total();
+  }
+  double value = 0;
+  for (int j = 0; j < count; ++j) value += pieces[j].value;
+  return {value, err + 4e-16 * value};
 }
 
 // The reflection's line: wo.n = cc - k cos(psi) > 0 and r.n = cc + k
