@@ -74,7 +74,7 @@ struct SimdGlassNodes {
     const GlassFrame& f = *frame;
     HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
     for (int j = 0; j < k; ++j) NodesTo16(theta + 15 * j, in + 16 * j);
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), half = hn::Set(d, 0.5);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0);
     const V alpha = hn::Set(d, f.alpha), alpha2 = hn::Set(d, f.alpha * f.alpha);
     const V vx = hn::Set(d, f.vx), vz = hn::Set(d, f.vz);
     const V cp = hn::Set(d, ray.cp), sp = hn::Set(d, ray.sp);
@@ -101,60 +101,67 @@ struct SimdGlassNodes {
       const V th = hn::Load(d, in + i);
       const V ct = CosF64ZeroToPi(d, th), st = SinF64HalfPi(d, th);
       // m = alpha (ct vx - st sp vz, st cp, .) and m.z = ct vz + st sp vx
-      // (GlassFrame::M).
+      // (GlassFrame::M), unnormalized: l2 = |m|^2 (at least alpha^2 for
+      // a unit normal of the stretched frame) and cm = wo.m = |m| c.
       const V ssp = hn::Mul(st, sp);
       const V mx = hn::Mul(alpha, hn::Sub(hn::Mul(ct, vx), hn::Mul(ssp, vz)));
       const V my = hn::Mul(alpha, hn::Mul(st, cp));
       const V mz = hn::Add(hn::Mul(ct, vz), hn::Mul(ssp, vx));
-      const V len = hn::Sqrt(hn::MulAdd(mx, mx, hn::MulAdd(my, my, hn::Mul(mz, mz))));
-      const auto valid = hn::And(hn::Gt(len, zero), hn::Ge(mz, zero));
-      const V inv_len = hn::Div(one, hn::IfThenElse(valid, len, one));
-      const V hx = hn::Mul(mx, inv_len), hy = hn::Mul(my, inv_len), hz = hn::Mul(mz, inv_len);
-      const V c = hn::Min(hn::Max(hn::MulAdd(so, hx, hn::Mul(mu, hz)), zero), one);
-      // Fresnel: sin^2(theta_t) = (1 - c^2) / eta^2; F = (r_parl^2 +
-      // r_perp^2) / 2 over one division, r_parl = (eta c - cos_t) / (eta c +
-      // cos_t), r_perp = (c - eta cos_t) / (c + eta cos_t).
-      const V omc2 = hn::Mul(hn::Sub(one, c), hn::Add(one, c));
-      const V sin2_t = hn::Mul(omc2, inv_eta2);
-      const auto tir = hn::Ge(sin2_t, one);
-      const V ct2 = hn::Sub(one, sin2_t);
-      const V cos_t = hn::Sqrt(hn::Max(ct2, zero));
-      const V ec = hn::Mul(eta, c), et = hn::Mul(eta, cos_t);
-      const V pa = hn::Sub(ec, cos_t), pb = hn::Add(ec, cos_t);
-      const V sa = hn::Sub(c, et), sb = hn::Add(c, et);
+      const V l2 = hn::MulAdd(mx, mx, hn::MulAdd(my, my, hn::Mul(mz, mz)));
+      const auto valid = hn::And(hn::Gt(l2, zero), hn::Ge(mz, zero));
+      const V cm = hn::Max(hn::MulAdd(so, mx, hn::Mul(mu, mz)), zero);
+      // |m|^2 sin^2(theta_t) = (|m|^2 - cm^2) / eta^2, and lct = |m|
+      // cos_t; F's amplitudes are ratios of terms of degree 1 in |m|, so
+      // they take cm and lct for c and cos_t.
+      const V ls2 = hn::Mul(hn::Max(hn::NegMulAdd(cm, cm, l2), zero), inv_eta2);
+      const auto tir = hn::Ge(ls2, l2);
+      const V lct2 = hn::Sub(l2, ls2);
+      const V lct = hn::Sqrt(hn::Max(lct2, zero));
+      const V ec = hn::Mul(eta, cm), et = hn::Mul(eta, lct);
+      const V pa = hn::Sub(ec, lct), pb = hn::Add(ec, lct);
+      const V sa = hn::Sub(cm, et), sb = hn::Add(cm, et);
       const V pb2 = hn::Mul(pb, pb), sb2 = hn::Mul(sb, sb);
       const V f_den = hn::Mul(pb2, sb2);
       const auto f_ok = hn::And(hn::Not(tir), hn::Gt(f_den, zero));
       const V f_num = hn::MulAdd(hn::Mul(pa, pa), sb2, hn::Mul(hn::Mul(sa, sa), pb2));
-      const V f_val = hn::Mul(half, hn::Div(f_num, hn::IfThenElse(f_ok, f_den, one)));
-      // F is not formed for the Schlick weight (eta may be inf there).
-      const V fr = hn::IfThenElse(use_schlick, zero, hn::IfThenElse(f_ok, f_val, one));
-      // Reflection r = 2 c h - wo (wo = (so, 0, mu)).
-      const V two_c = hn::Add(c, c);
-      const V rx = hn::MulSub(two_c, hx, so), ry = hn::Mul(two_c, hy), rz = hn::MulSub(two_c, hz, mu);
-      const auto r_ok = hn::And(hn::And(hn::Gt(rz, zero), hn::Gt(fr, zero)), keep_r);
+      // F = fn / fd: f_num / (2 f_den), 1 (total internal reflection), or
+      // not formed for the Schlick weight (eta may be inf there).
+      const V fn = hn::IfThenElse(use_schlick, zero, hn::IfThenElse(f_ok, f_num, one));
+      const V fd = hn::IfThenElse(hn::AndNot(use_schlick, f_ok), hn::Add(f_den, f_den), one);
+      // The reflection |m|^2 r = 2 cm m - |m|^2 wo (wo = (so, 0, mu)):
+      // Lambda is of degree 0 in its direction.
+      const V two_c = hn::Add(cm, cm);
+      const V rx = hn::MulSub(two_c, mx, hn::Mul(l2, so)), ry = hn::Mul(two_c, my);
+      const V rz = hn::MulSub(two_c, mz, hn::Mul(l2, mu));
+      const auto r_ok = hn::And(hn::And(hn::Gt(rz, zero), hn::Gt(fn, zero)), keep_r);
       const V rz_safe = hn::IfThenElse(r_ok, rz, one);
       const V pr = hn::Mul(alpha2, hn::MulAdd(rx, rx, hn::Mul(ry, ry)));
       V num_r, den_r;
       g2_over_g1(pr, rz_safe, &num_r, &den_r);
-      // Refraction t = -wo / eta + (c / eta - cos_t) h, cos_t^2 = 1 - (1 -
-      // c^2) / eta^2.
-      const V k = hn::Sub(hn::Mul(c, inv_eta), cos_t);
-      const V tx = hn::MulSub(k, hx, hn::Mul(so, inv_eta)), ty = hn::Mul(k, hy);
-      const V tz = hn::MulSub(k, hz, hn::Mul(mu, inv_eta));
-      const auto t_ok = hn::And(hn::And(hn::And(hn::Gt(ct2, zero), hn::Lt(fr, one)), hn::Lt(tz, zero)), keep_t);
+      // The refraction |m|^2 t = -|m|^2 wo / eta + (cm / eta - lct) m.
+      const V k = hn::Sub(hn::Mul(cm, inv_eta), lct);
+      const V l2e = hn::Mul(l2, inv_eta);
+      const V tx = hn::MulSub(k, mx, hn::Mul(so, l2e)), ty = hn::Mul(k, my);
+      const V tz = hn::MulSub(k, mz, hn::Mul(mu, l2e));
+      const auto t_ok = hn::And(hn::And(hn::And(hn::Gt(lct2, zero), hn::Lt(fn, fd)), hn::Lt(tz, zero)), keep_t);
       const V tz_safe = hn::IfThenElse(t_ok, hn::Neg(tz), one);
       const V pt = hn::Mul(alpha2, hn::MulAdd(tx, tx, hn::Mul(ty, ty)));
-      const V omc = hn::Sub(one, c), omc2s = hn::Mul(omc, omc);
-      const V s5 = hn::Mul(hn::Mul(omc2s, omc2s), omc);
-      const V weight_t = hn::IfThenElse(use_schlick, hn::Sub(one, s5), hn::Sub(one, fr));
+      // The refraction's weight times fd: fd - fn = fd (1 - F), or
+      // Schlick's complement 1 - (1 - c)^5, c = cm / |m| (fd = 1).
+      V weight_t = hn::Sub(fd, fn);
+      if (schlick) {
+        const V omc = hn::Sub(one, hn::Min(hn::Div(cm, hn::Sqrt(hn::IfThenElse(valid, l2, one))), one));
+        const V omc2s = hn::Mul(omc, omc);
+        weight_t = hn::NegMulAdd(hn::Mul(omc2s, omc2s), omc, one);
+      }
       V num_t, den_t;
       g2_over_g1(pt, tz_safe, &num_t, &den_t);
-      // w = fr num_r / den_r + weight_t num_t / den_t over one division,
-      // each term 0 (over 1) where it does not count.
-      const V xr = hn::IfThenElseZero(r_ok, hn::Mul(fr, num_r)), dr = hn::IfThenElse(r_ok, den_r, one);
+      // w = (fn num_r / den_r + weight_t num_t / den_t) / fd over one
+      // division, each term 0 (over 1) where it does not count.
+      const V xr = hn::IfThenElseZero(r_ok, hn::Mul(fn, num_r)), dr = hn::IfThenElse(r_ok, den_r, one);
       const V xt = hn::IfThenElseZero(t_ok, hn::Mul(weight_t, num_t)), dt = hn::IfThenElse(t_ok, den_t, one);
-      const V w = hn::Div(hn::MulAdd(xr, dt, hn::Mul(xt, dr)), hn::Mul(dr, dt));
+      const V den = hn::Mul(fd, hn::Mul(dr, dt));
+      const V w = hn::Div(hn::MulAdd(xr, dt, hn::Mul(xt, dr)), den);
       hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
     }
     for (int j = 0; j < k; ++j) {
@@ -168,7 +175,8 @@ struct SimdGlassNodes {
 // (z + r), so jac G2 = 4 za zb / (sqrt(2 - y^2) (ra zb + rb za))
 // height-correlated (1 / G2 = 1 / ga + 1 / gb - 1) and 8 za zb / (sqrt(2 -
 // y^2) (za + ra) (zb + rb)) separable; 0 where both cosines are 0 (the
-// reference's G1 is 0 on the horizon). Each node differs from the
+// reference's G1 is 0 on the horizon); height-correlated, sqrt(2 - y^2)
+// ra = sqrt((2 - y^2) ra^2), likewise rb. Each node differs from the
 // reference by the rounding of these terms only. Pieces forms each
 // piece's 16 nodes (Kronrod16: the 16th at the centre, of weight 0) and
 // its K15 and G7 sums in lanes, one horizontal sum each: the sums differ
@@ -185,16 +193,21 @@ struct SimdAverageLines {
     const DF64 d;
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), two = hn::Set(d, 2.0);
     const V a2 = hn::Set(d, model->a2);
-    auto root = [&](V z) { return hn::Sqrt(hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z))))); };
+    auto square = [&](V z) { return hn::MulAdd(z, z, hn::Mul(a2, hn::Mul(hn::Sub(one, z), hn::Add(one, z)))); };
     const auto low = hn::Le(w, one);
     const V y = hn::IfThenElse(low, w, hn::Sub(two, w));
     const V x = hn::IfThenElse(low, hn::Mul(hn::Sub(one, y), hn::Add(one, y)),
                                hn::Mul(hn::Sub(y, one), hn::Add(y, one)));
     const V za = hn::Max(hn::MulAdd(l.a1, x, l.a0), zero), zb = hn::Max(hn::MulAdd(l.b1, x, l.b0), zero);
-    const V ra = root(za), rb = root(zb);
-    const V den_g = model->separable ? hn::Mul(hn::Add(za, ra), hn::Add(zb, rb))
-                                     : hn::MulAdd(ra, zb, hn::Mul(rb, za));
-    const V den = hn::Mul(hn::Sqrt(hn::NegMulAdd(y, y, two)), den_g);
+    const V jac2 = hn::NegMulAdd(y, y, two);  // (2 / jac)^2
+    V den;
+    if (model->separable) {
+      den = hn::Mul(hn::Sqrt(jac2), hn::Mul(hn::Add(za, hn::Sqrt(square(za))), hn::Add(zb, hn::Sqrt(square(zb)))));
+    } else {
+      // sqrt(2 - y^2) (ra zb + rb za) with the Jacobian's root inside ra's
+      // and rb's: two square roots, not three.
+      den = hn::MulAdd(hn::Sqrt(hn::Mul(jac2, square(za))), zb, hn::Mul(hn::Sqrt(hn::Mul(jac2, square(zb))), za));
+    }
     const auto ok = hn::Gt(den, zero);
     const V num = hn::Mul(hn::Set(d, model->separable ? 8.0 : 4.0), hn::Mul(za, zb));
     return hn::IfThenElseZero(ok, hn::Div(num, hn::IfThenElse(ok, den, one)));
