@@ -65,15 +65,69 @@ struct SimdGlassNodes {
   double lambda_o;
   DielectricPart part = DielectricPart::kBoth;
 
-  // k pieces' 15 nodes each (k at most kGlassPieceBatch), in one loop
-  // over their vectors (which overlap: each vector's chain of square roots
-  // and divisions is long).
+  // k pieces' 15 nodes each (k at most kGlassPieceBatch).
   void operator()(const GlassRay& ray, const double* theta, double* v, int k = 1) const {
+    HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) NodesTo16(theta + 15 * j, in + 16 * j);
+    Values16(ray, in, out, k);
+    for (int j = 0; j < k; ++j) {
+      for (int i = 0; i < 15; ++i) v[15 * j + i] = out[16 * j + i];
+    }
+  }
+
+  // The sums of k pieces of the ray's segments (GlassSumsRule): each
+  // piece's 16 nodes (Kronrod16) mapped by its segment's MappedSegment::Map
+  // in lanes, and the sums of the values times the Jacobians, one
+  // horizontal sum each.
+  void Pieces(const GlassRay& ray, const MappedSegment* segments, const GlassPiece* spans, int k,
+              GlassSums* sums) const {
+    static const Kronrod16 rule;
+    const DF64 d;
+    const size_t N = hn::Lanes(d);
+    HWY_ALIGN double x[16 * kGlassPieceBatch], jac[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
+    const V one = hn::Set(d, 1.0), two = hn::Set(d, 2.0), three = hn::Set(d, 3.0), six = hn::Set(d, 6.0);
+    for (int j = 0; j < k; ++j) {
+      const MappedSegment& g = segments[spans[j].segment];
+      const V c = hn::Set(d, 0.5 * (spans[j].a + spans[j].b)), h = hn::Set(d, 0.5 * (spans[j].b - spans[j].a));
+      const V a = hn::Set(d, g.a), width = hn::Set(d, g.b - g.a);
+      for (size_t i = 0; i < 16; i += N) {
+        const V t = hn::MulAdd(h, hn::Load(d, rule.x + i), c);
+        V m = t, dm = one;
+        if (g.singular_a && g.singular_b) {
+          m = hn::Mul(hn::Mul(t, t), hn::NegMulAdd(two, t, three));
+          dm = hn::Mul(hn::Mul(six, t), hn::Sub(one, t));
+        } else if (g.singular_a) {
+          m = hn::Mul(t, t);
+          dm = hn::Mul(two, t);
+        } else if (g.singular_b) {
+          const V u = hn::Sub(one, t);
+          m = hn::NegMulAdd(u, u, one);
+          dm = hn::Mul(two, u);
+        }
+        hn::Store(hn::MulAdd(width, m, a), d, x + 16 * j + i);
+        hn::Store(hn::Mul(width, dm), d, jac + 16 * j + i);
+      }
+    }
+    Values16(ray, x, out, k);
+    for (int j = 0; j < k; ++j) {
+      V ks = hn::Zero(d), gs = hn::Zero(d);
+      for (size_t i = 0; i < 16; i += N) {
+        const V f = hn::Mul(hn::Load(d, out + 16 * j + i), hn::Load(d, jac + 16 * j + i));
+        ks = hn::MulAdd(hn::Load(d, rule.wk + i), f, ks);
+        gs = hn::MulAdd(hn::Load(d, rule.wg + i), f, gs);
+      }
+      const double h = 0.5 * (spans[j].b - spans[j].a);
+      sums[j] = {h * hn::GetLane(hn::SumOfLanes(d, ks)), h * hn::GetLane(hn::SumOfLanes(d, gs))};
+    }
+  }
+
+  // The values at 16 k aligned angles theta in `in`, to `out`, in one
+  // loop over their vectors (which overlap: each vector's chain of square
+  // roots and divisions is long).
+  void Values16(const GlassRay& ray, const double* in, double* out, int k) const {
     const DF64 d;
     const size_t N = hn::Lanes(d);
     const GlassFrame& f = *frame;
-    HWY_ALIGN double in[16 * kGlassPieceBatch], out[16 * kGlassPieceBatch];
-    for (int j = 0; j < k; ++j) NodesTo16(theta + 15 * j, in + 16 * j);
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0);
     const V alpha = hn::Set(d, f.alpha), alpha2 = hn::Set(d, f.alpha * f.alpha);
     const V vx = hn::Set(d, f.vx), vz = hn::Set(d, f.vz);
@@ -164,9 +218,6 @@ struct SimdGlassNodes {
       const V w = hn::Div(hn::MulAdd(xr, dt, hn::Mul(xt, dr)), den);
       hn::Store(hn::IfThenElseZero(valid, hn::Mul(hn::Mul(ct, st), w)), d, out + i);
     }
-    for (int j = 0; j < k; ++j) {
-      for (int i = 0; i < 15; ++i) v[15 * j + i] = out[16 * j + i];
-    }
   }
 };
 
@@ -230,8 +281,9 @@ struct SimdAverageLines {
     }
   }
 
-  // The sums of k pieces [a[j], b[j]] (k at most kMaxGraded).
-  void Pieces(const AverageLine& l, const double* a, const double* b, int k, LineSums* out) const {
+  // The sums of the k pieces [a[j], b[j]] of w (k at most
+  // kGlassPieceBatch).
+  void Pieces(const AverageLine& l, const double* a, const double* b, int k, GlassSums* out) const {
     static const Kronrod16 rule;
     const DF64 d;
     const size_t N = hn::Lanes(d);
@@ -265,7 +317,7 @@ void GlassAverageSums(double alpha, Masking masking, const double* coefficients,
                       double* gauss) {
   const AverageModel m = AverageModelOf(alpha, 1.5, masking, DielectricPart::kBoth);
   const AverageLine line{coefficients[0], coefficients[1], coefficients[2], coefficients[3]};
-  LineSums sums;
+  GlassSums sums;
   SimdAverageLines{&m}.Pieces(line, &a, &b, 1, &sums);
   *kron = sums.kron;
   *gauss = sums.gauss;
@@ -279,6 +331,24 @@ RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, doub
   const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
   const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
   return GlassAlbedoWith(frame, tol, max_pieces, nodes);
+}
+
+void GlassPieceSums(double alpha, double eta, Masking masking, double mu, double phi, double a, double b,
+                    bool singular_a, bool singular_b, double ta, double tb, double* kron, double* gauss) {
+  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
+                                                     DielectricTransport::kImportance);
+  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
+  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
+  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  const MappedSegment segment{a, b, singular_a, singular_b};
+  GlassPiece span{};
+  span.a = ta;
+  span.b = tb;
+  span.segment = 0;
+  GlassSums sums;
+  nodes.Pieces(GlassRay{std::cos(phi), std::sin(phi)}, &segment, &span, 1, &sums);
+  *kron = sums.kron;
+  *gauss = sums.gauss;
 }
 
 void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi, const double* theta, double* v,
@@ -309,6 +379,13 @@ HWY_EXPORT(GlassNodes);
 void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
                          double* v, DielectricPart part) {
   HWY_DYNAMIC_DISPATCH(GlassNodes)(alpha, eta, masking, mu, phi, theta, v, part);
+}
+
+HWY_EXPORT(GlassPieceSums);
+void SimdGlassPieceSums(double alpha, double eta, Masking masking, double mu, double phi, double a, double b,
+                        bool singular_a, bool singular_b, double ta, double tb, double* kron, double* gauss) {
+  HWY_DYNAMIC_DISPATCH(GlassPieceSums)(alpha, eta, masking, mu, phi, a, b, singular_a, singular_b, ta, tb, kron,
+                                       gauss);
 }
 
 HWY_EXPORT(GlassAverage);

@@ -22,6 +22,12 @@ RuleResult SimdGlassAlbedo(double alpha, double eta, Masking masking, double mu,
 void SimdGlassNodeValues(double alpha, double eta, Masking masking, double mu, double phi, const double* theta,
                          double* v, DielectricPart part = DielectricPart::kBoth);
 
+// The K15 and G7 sums of the piece [ta, tb] of t of the segment [a, b]
+// (MappedSegment) of the ray phi (MappedPieceSums of ScalarGlassNodes),
+// for the tests.
+void SimdGlassPieceSums(double alpha, double eta, Masking masking, double mu, double phi, double a, double b,
+                        bool singular_a, bool singular_b, double ta, double tb, double* kron, double* gauss);
+
 // GlassAlbedoAverage (glass_average.h) with each psi piece's nodes and
 // Kronrod sums in lanes.
 RuleResult SimdGlassAlbedoAverage(double alpha, double eta, Masking masking, double tol, int max_pieces,

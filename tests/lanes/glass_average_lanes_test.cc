@@ -75,7 +75,7 @@ TEST(GlassAverageLanesTest, LineNodesAndSumsAgreeWithTheScalarReferenceOnEveryTa
           ScalarAverageLines{&m}(line, w, want);
           double kron, gauss;
           SimdGlassAverageLineSums(alpha, masking, coef, a, a + width, &kron, &gauss);
-          LineSums ref;
+          GlassSums ref;
           const double b = a + width;
           ScalarAverageLines{&m}.Pieces(line, &a, &b, 1, &ref);
           const double sum_bound = kNodeBound * width + 1e-15 * std::abs(ref.kron);

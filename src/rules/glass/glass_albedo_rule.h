@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -326,43 +327,13 @@ inline constexpr int kGlassPieceBatch = 8;
 // Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
 // until the summed `safety` x |K15 - G7| plus the nodes' own errors meet
 // `tol`, or bisection stops helping (the worst piece's part below 1/50 of
-// the tolerance per piece), or `max_pieces`. f(x, v, e, k) fills the
-// integrand and its errors at the 15 k points x of k pieces (k at most
-// kGlassPieceBatch): the pieces are made k at a time (the segments' first
-// pieces, a bisected piece's halves), so that a lanes evaluator overlaps
-// their nodes.
-template <class F>
-RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
-                             int max_pieces, const F& f, double safety = kGlassErrorSafety) {
-  const KronrodRule& rule = Kronrod15();
-  auto make = [&](const GlassPiece* spans, int k, GlassPiece* out) {
-    if (k <= 0) return;
-    double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch];
-    double v[15 * kGlassPieceBatch], e[15 * kGlassPieceBatch];
-    for (int j = 0; j < k; ++j) {
-      const MappedSegment& g = segments[spans[j].segment];
-      const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
-      if (g.singular_a || g.singular_b) {
-        for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
-      } else {
-        // Map's identity branch, out of the loop.
-        const double w = g.b - g.a;
-        for (int i = 0; i < 15; ++i) {
-          x[15 * j + i] = g.a + w * (c + h * rule.x[i]);
-          jac[15 * j + i] = w;
-        }
-      }
-    }
-    f(x, v, e, k);
-    for (int i = 0; i < 15 * k; ++i) {
-      v[i] *= jac[i];
-      e[i] *= jac[i];
-    }
-    for (int j = 0; j < k; ++j) {
-      const GkPiece p = KronrodPieceOf(spans[j].a, spans[j].b, scale, v + 15 * j, e + 15 * j);
-      out[j] = GlassPiece{p.a, p.b, p.value, p.err * safety, p.prop, spans[j].segment};
-    }
-  };
+// the tolerance per piece), or `max_pieces`. make(spans, k, out) makes
+// the k pieces [a, b] of t (of the segment `segment`) of `spans`, value
+// and errors, k at most kGlassPieceBatch: the segments' first pieces, a
+// bisected piece's halves, so that a lanes evaluator overlaps their nodes.
+template <class Make>
+RuleResult GlassPiecesRule(const MappedSegment* segments, int n_segments, double tol, int max_pieces,
+                           const Make& make) {
   GlassPiecesScratch scratch;
   std::vector<GlassPiece>& pieces = scratch.pieces();
   GlassPiece spans[kGlassPieceBatch], made[kGlassPieceBatch];
@@ -404,6 +375,89 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
   return SumOfPieces(pieces, err);
 }
 
+// GlassPiecesRule of `scale` times the integrand: f(x, v, e, k) fills the
+// integrand and its errors at the 15 k points x of k pieces; the maps'
+// Jacobians and the Kronrod sums are formed here.
+template <class F>
+RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
+                             int max_pieces, const F& f, double safety = kGlassErrorSafety) {
+  const KronrodRule& rule = Kronrod15();
+  return GlassPiecesRule(segments, n_segments, tol, max_pieces, [&](const GlassPiece* spans, int k, GlassPiece* out) {
+    double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch];
+    double v[15 * kGlassPieceBatch], e[15 * kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) {
+      const MappedSegment& g = segments[spans[j].segment];
+      const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
+      if (g.singular_a || g.singular_b) {
+        for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+      } else {
+        // Map's identity branch, out of the loop.
+        const double w = g.b - g.a;
+        for (int i = 0; i < 15; ++i) {
+          x[15 * j + i] = g.a + w * (c + h * rule.x[i]);
+          jac[15 * j + i] = w;
+        }
+      }
+    }
+    f(x, v, e, k);
+    for (int i = 0; i < 15 * k; ++i) {
+      v[i] *= jac[i];
+      e[i] *= jac[i];
+    }
+    for (int j = 0; j < k; ++j) {
+      const GkPiece p = KronrodPieceOf(spans[j].a, spans[j].b, scale, v + 15 * j, e + 15 * j);
+      out[j] = GlassPiece{p.a, p.b, p.value, p.err * safety, p.prop, spans[j].segment};
+    }
+  });
+}
+
+// A piece's K15 and G7 sums of the integrand times the map's Jacobian,
+// each times the piece's half width in t.
+struct GlassSums {
+  double kron, gauss;
+};
+
+// GlassPiecesRule of `scale` times an integrand with no errors of its own
+// whose evaluator forms the pieces' sums: sums(spans, k, out) fills the
+// GlassSums of the k pieces `spans` of the segments.
+template <class Sums>
+RuleResult GlassSumsRule(const MappedSegment* segments, int n_segments, double scale, double tol, int max_pieces,
+                         const Sums& sums, double safety = kGlassErrorSafety) {
+  return GlassPiecesRule(segments, n_segments, tol, max_pieces, [&](const GlassPiece* spans, int k, GlassPiece* out) {
+    GlassSums s[kGlassPieceBatch];
+    sums(spans, k, s);
+    for (int j = 0; j < k; ++j) {
+      out[j] = GlassPiece{spans[j].a, spans[j].b, scale * s[j].kron, safety * scale * std::abs(s[j].kron - s[j].gauss),
+                          0.0, spans[j].segment};
+    }
+  });
+}
+
+// The scalar sums of k pieces of the segments: node(x, v, k) fills the
+// integrand at the 15 k points x of the k pieces.
+template <class Node>
+void MappedPieceSums(const MappedSegment* segments, const GlassPiece* spans, int k, GlassSums* out,
+                     const Node& node) {
+  const KronrodRule& rule = Kronrod15();
+  double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch], v[15 * kGlassPieceBatch];
+  for (int j = 0; j < k; ++j) {
+    const MappedSegment& g = segments[spans[j].segment];
+    const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
+    for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+  }
+  node(x, v, k);
+  for (int j = 0; j < k; ++j) {
+    const double h = 0.5 * (spans[j].b - spans[j].a);
+    double ks = 0, gs = 0;
+    for (int i = 0; i < 15; ++i) {
+      const double f = v[15 * j + i] * jac[15 * j + i];
+      ks += rule.wk[i] * f;
+      gs += rule.wg[i] * f;
+    }
+    out[j] = {h * ks, h * gs};
+  }
+}
+
 template <class F>
 RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double scale, double tol,
                              int max_pieces, const F& f, double safety = kGlassErrorSafety) {
@@ -439,6 +493,14 @@ inline long GlassRaySignature(const GlassFrame& f, const GlassCurveForms& forms,
   for (int k = 0; k < n; ++k) s = 4 * s + roots[k].curve;
   return s;
 }
+
+// Whether a nodes evaluator forms its pieces' sums itself (Pieces, as
+// the lanes evaluator does); otherwise MappedPieceSums forms them from its
+// node values.
+template <class Nodes, class = void>
+struct HasPieceSums : std::false_type {};
+template <class Nodes>
+struct HasPieceSums<Nodes, std::void_t<decltype(&Nodes::Pieces)>> : std::true_type {};
 
 template <class Nodes>
 RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, const Nodes& nodes) {
@@ -492,11 +554,17 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     }
     segs.push_back({a, theta_max, sing_a, false});
     const GlassRay gr{cp, sp};
-    const RuleResult res =
-        GlassSegmentsRule(segs, 1.0, inner_tol, 200, [&](const double* x, double* v, double* e, int k) {
-          nodes(gr, x, v, k);
-          for (int i = 0; i < 15 * k; ++i) e[i] = 0;
-        });
+    const RuleResult res = GlassSumsRule(segs.data(), static_cast<int>(segs.size()), 1.0, inner_tol, 200,
+                                         [&](const GlassPiece* spans, int k, GlassSums* out) {
+                                           if constexpr (HasPieceSums<Nodes>::value) {
+                                             nodes.Pieces(gr, segs.data(), spans, k, out);
+                                           } else {
+                                             MappedPieceSums(segs.data(), spans, k, out,
+                                                             [&](const double* x, double* v, int n) {
+                                                               nodes(gr, x, v, n);
+                                                             });
+                                           }
+                                         });
     *err = res.error;
     return res.value;
   };

@@ -101,12 +101,6 @@ struct AverageLine {
   double a0, a1, b0, b1;
 };
 
-// A Kronrod piece [a, b] of w along a line: its K15 and G7 sums, each
-// times the half width (b - a) / 2.
-struct LineSums {
-  double kron, gauss;
-};
-
 // The double reference of the line's nodes.
 struct ScalarAverageLines {
   const AverageModel* model;
@@ -118,8 +112,9 @@ struct ScalarAverageLines {
       v[i] = jac * model->G2(l.a0 + l.a1 * x, l.b0 + l.b1 * x);
     }
   }
-  // The sums of k pieces [a[j], b[j]] (k at most kMaxGraded).
-  void Pieces(const AverageLine& l, const double* a, const double* b, int k, LineSums* out) const {
+  // The sums of the k pieces [a[j], b[j]] of w (k at most
+  // kGlassPieceBatch).
+  void Pieces(const AverageLine& l, const double* a, const double* b, int k, GlassSums* out) const {
     const KronrodRule& r = Kronrod15();
     for (int j = 0; j < k; ++j) {
       const double c = 0.5 * (a[j] + b[j]), h = 0.5 * (b[j] - a[j]);
@@ -139,15 +134,11 @@ struct ScalarAverageLines {
 // `scale` times the integral over psi from acos(x_hi) to acos(x_lo), x_lo
 // <= 0, of the line's G2, to `tol` (absolute), with its error. A horizon
 // at x_hi < 1, where G2 turns on over (x_hi - x) ~ `width`, grades the
-// pieces towards it. The adaptive rule of GlassSegmentsRule (the worst
-// piece bisected, the same stops) on plain pieces of w, whose nodes and
-// sums the evaluator forms: a lanes evaluator forms them in lanes, and
-// the line's inner errors are none.
+// pieces towards it. The evaluator forms the sums of the pieces of w
+// (GlassSumsRule; a lanes evaluator forms their nodes too, in lanes).
 struct PsiLine {
   double value, error;
 };
-
-inline constexpr int kMaxLinePieces = 200;
 
 template <class Lines>
 PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol, const AverageLine& line,
@@ -157,40 +148,21 @@ PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol
   const double finest = x_hi < 1 ? WOfCos(std::max(x_hi - width, -1.0)) - lo : hi - lo;
   double cuts[kMaxGraded + 1];
   const int n = GradedFromLow(lo, hi, finest, 1.0, cuts);
-  struct Piece {
-    double a, b, value, err;
-  };
-  Piece pieces[kMaxLinePieces];
-  LineSums sums[kMaxGraded];
-  lines.Pieces(line, cuts, cuts + 1, n, sums);
-  auto piece = [&](double pa, double pb, const LineSums& s) {
-    return Piece{pa, pb, scale * s.kron, kAverageSafety * scale * std::abs(s.kron - s.gauss)};
-  };
-  for (int j = 0; j < n; ++j) pieces[j] = piece(cuts[j], cuts[j + 1], sums[j]);
-  int count = n;
-  auto total = [&] {
-    double e = 0;
-    for (int j = 0; j < count; ++j) e += pieces[j].err;
-    return e;
-  };
-  double err = total();
-  while (err > tol && count > 0 && count < kMaxLinePieces) {
-    int worst = 0;
-    for (int j = 1; j < count; ++j) {
-      if (pieces[j].err > pieces[worst].err) worst = j;
-    }
-    if (pieces[worst].err <= 0.02 * tol / count) break;
-    const Piece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    const double ends[3] = {p.a, m, p.b};
-    lines.Pieces(line, ends, ends + 1, 2, sums);
-    pieces[worst] = piece(p.a, m, sums[0]);
-    pieces[count++] = piece(m, p.b, sums[1]);
-    err = total();
-  }
-  double value = 0;
-  for (int j = 0; j < count; ++j) value += pieces[j].value;
-  return {value, err + 4e-16 * value};
+  MappedSegment segs[kMaxGraded];
+  for (int j = 0; j < n; ++j) segs[j] = {cuts[j], cuts[j + 1], false, false};
+  const RuleResult res = GlassSumsRule(
+      segs, n, scale, tol, 200,
+      [&](const GlassPiece* spans, int k, GlassSums* out) {
+        double a[kGlassPieceBatch], b[kGlassPieceBatch];
+        for (int j = 0; j < k; ++j) {
+          const MappedSegment& g = segs[spans[j].segment];
+          a[j] = g.a + (g.b - g.a) * spans[j].a;
+          b[j] = g.a + (g.b - g.a) * spans[j].b;
+        }
+        lines.Pieces(line, a, b, k, out);
+      },
+      kAverageSafety);
+  return {res.value, res.error};
 }
 
 // The reflection's line: wo.n = cc - k cos(psi) > 0 and r.n = cc + k
