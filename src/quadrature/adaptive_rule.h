@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 #include "brdfbake/models/vec3.h"
@@ -103,12 +104,16 @@ void BisectWorst(std::vector<Piece>* pieces, const Make& make) {
 // A rule's result from its final pieces: their values summed in order,
 // and the error `err` plus the rounding of that sum.
 template <class Piece>
-RuleResult SumOfPieces(const std::vector<Piece>& pieces, double err) {
+RuleResult SumOfPieces(const Piece* pieces, size_t n, double err) {
   RuleResult out;
-  for (const Piece& p : pieces) out.value += p.value;
+  for (size_t i = 0; i < n; ++i) out.value += pieces[i].value;
   out.error = err + 4e-16 * out.value;
-  out.pieces = static_cast<int>(pieces.size());
+  out.pieces = static_cast<int>(n);
   return out;
+}
+template <class Piece>
+RuleResult SumOfPieces(const std::vector<Piece>& pieces, double err) {
+  return SumOfPieces(pieces.data(), pieces.size(), err);
 }
 
 // One interval [a, b] of psi for SegmentRule. An end is `singular` where

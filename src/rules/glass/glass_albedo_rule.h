@@ -298,15 +298,12 @@ inline constexpr double kGlassErrorSafety = 3;
 // with the same largest error against a 1e-11 integration.
 inline constexpr double kGlassGrading = 1.0 / 16;
 
-// The pieces' storage of GlassSegmentsRule, one vector per nesting depth
+// The pieces' storage of GlassPiecesRule, one vector per nesting depth
 // and thread (the rules nest: E's rays in phi, E_avg's psi lines in c in
 // q), kept from call to call so that a line allocates nothing.
 class GlassPiecesScratch {
  public:
-  GlassPiecesScratch() : pieces_(depth_ < kDepths ? &pool_[depth_] : &own_) {
-    ++depth_;
-    pieces_->clear();
-  }
+  GlassPiecesScratch() : pieces_(depth_ < kDepths ? &pool_[depth_] : &own_) { ++depth_; }
   ~GlassPiecesScratch() { --depth_; }
   GlassPiecesScratch(const GlassPiecesScratch&) = delete;
   GlassPiecesScratch& operator=(const GlassPiecesScratch&) = delete;
@@ -334,13 +331,20 @@ inline constexpr int kGlassPieceBatch = 8;
 template <class Make>
 RuleResult GlassPiecesRule(const MappedSegment* segments, int n_segments, double tol, int max_pieces,
                            const Make& make) {
+  // The pieces in the scratch vector's first n entries; it grows (and
+  // zeroes) only past the largest count its thread has needed.
   GlassPiecesScratch scratch;
-  std::vector<GlassPiece>& pieces = scratch.pieces();
-  GlassPiece spans[kGlassPieceBatch], made[kGlassPieceBatch];
+  std::vector<GlassPiece>& store = scratch.pieces();
+  size_t n = 0;
+  auto room = [&](size_t need) {
+    if (store.size() < need) store.resize(std::max<size_t>(need, 2 * store.size()));
+    return store.data();
+  };
+  GlassPiece spans[kGlassPieceBatch];
   int k = 0;
   auto flush = [&] {
-    make(spans, k, made);
-    pieces.insert(pieces.end(), made, made + k);
+    make(spans, k, room(n + k) + n);
+    n += k;
     k = 0;
   };
   for (int s = 0; s < n_segments; ++s) {
@@ -351,28 +355,31 @@ RuleResult GlassPiecesRule(const MappedSegment* segments, int n_segments, double
     if (++k == kGlassPieceBatch) flush();
   }
   if (k > 0) flush();
+  GlassPiece* pieces = room(n);
   auto total = [&] {
     double e = 0;
-    for (const GlassPiece& p : pieces) e += p.err + p.prop;
+    for (size_t i = 0; i < n; ++i) e += pieces[i].err + pieces[i].prop;
     return e;
   };
   double err = total();
-  while (err > tol && !pieces.empty() && static_cast<int>(pieces.size()) < max_pieces) {
+  while (err > tol && n > 0 && static_cast<int>(n) < max_pieces) {
     size_t worst = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
+    for (size_t i = 1; i < n; ++i) {
       if (pieces[i].err > pieces[worst].err) worst = i;
     }
-    if (pieces[worst].err <= 0.02 * tol / pieces.size()) break;
+    if (pieces[worst].err <= 0.02 * tol / n) break;
     const GlassPiece p = pieces[worst];
     const double m = 0.5 * (p.a + p.b);
     spans[0].a = p.a, spans[0].b = m, spans[0].segment = p.segment;
     spans[1].a = m, spans[1].b = p.b, spans[1].segment = p.segment;
+    GlassPiece made[2];
     make(spans, 2, made);
+    pieces = room(n + 1);
     pieces[worst] = made[0];
-    pieces.push_back(made[1]);
+    pieces[n++] = made[1];
     err = total();
   }
-  return SumOfPieces(pieces, err);
+  return SumOfPieces(pieces, n, err);
 }
 
 // GlassPiecesRule of `scale` times the integrand: f(x, v, e, k) fills the
@@ -509,6 +516,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   // The ray integral over theta at phi, to the absolute tolerance
   // `inner_tol`, with its error.
   std::vector<GlassRoot> roots;
+  std::vector<MappedSegment> segs;
   auto ray = [&](double phi, double inner_tol, double* err) {
     const double sp = std::sin(phi), cp = std::cos(phi);
     const double theta_max = f.ThetaMax(sp);
@@ -543,7 +551,7 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     }
     std::sort(roots.begin(), roots.end(),
               [](const GlassRoot& x, const GlassRoot& y) { return x.theta < y.theta; });
-    std::vector<MappedSegment> segs;
+    segs.clear();
     double a = 0;
     bool sing_a = false;
     for (const GlassRoot& r : roots) {
@@ -629,16 +637,16 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
     cuts.push_back(w);
   }
   std::sort(cuts.begin(), cuts.end());
-  std::vector<MappedSegment> segs;
+  std::vector<MappedSegment> outer;
   for (size_t k = 0; k + 1 < cuts.size(); ++k) {
-    if (cuts[k + 1] > cuts[k]) segs.push_back({cuts[k], cuts[k + 1], true, true});
+    if (cuts[k + 1] > cuts[k]) outer.push_back({cuts[k], cuts[k + 1], true, true});
   }
   // Each ray's error is at most a tenth of the tolerance over the outer
   // weights (scale 2 / area, Jacobians of the maps at most 1.5 times the
   // segment's width, widths summing to pi).
   const double scale = 2 / area;
   const double inner_tol = 0.1 * tol / (scale * 1.5 * kPi<double>);
-  return GlassSegmentsRule(segs, scale, tol, std::max(max_pieces, 8),
+  return GlassSegmentsRule(outer, scale, tol, std::max(max_pieces, 8),
                            [&](const double* x, double* v, double* e, int k) {
                              for (int i = 0; i < 15 * k; ++i) v[i] = ray(x[i], inner_tol, &e[i]);
                            });
