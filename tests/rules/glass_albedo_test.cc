@@ -320,6 +320,40 @@ TEST(GlassAlbedoTest, SignatureFromTangentsIsTheRootsSequence) {
   EXPECT_GE(compared, 6 * kRays - 100);
 }
 
+// The side of each root where the reflection's term or the refraction (the
+// critical angle) lives, from the slope HalfAngleZeros gives, is the side
+// GlassCurveLives finds at the midpoints to the neighbouring roots.
+TEST(GlassAlbedoTest, RootSlopesGiveTheSideWhereTheTermLives) {
+  const Case views[] = {{0.2025, 1 / 3.0, 0.15}, {0.36, 1 / 12.7, 0.95}, {0.0044, 1 / 1.1, 1e-4},
+                        {0.5, 1.5, 0.2},          {1.0, 1 / 3.0, 0.01},   {0.09, 1 / 1.5, 1.0}};
+  const int kRays = 5000;
+  int compared = 0;
+  for (const Case& c : views) {
+    const GlassFrame f(c.alpha, c.eta, c.mu);
+    const GlassCurveForms forms(f);
+    std::vector<GlassRoot> roots;
+    for (int k = 0; k < kRays; ++k) {
+      const double phi = -0.5 * kPi<double> + kPi<double> * (k + 0.5) / kRays;
+      const double sp = std::sin(phi), cp = std::cos(phi), theta_max = f.ThetaMax(sp);
+      GlassRoots(forms, cp, sp, theta_max, &roots);
+      for (size_t i = 0; i < roots.size(); ++i) {
+        if (roots[i].curve == kGlassRefractionHorizon) continue;
+        const double below = i > 0 ? roots[i - 1].theta : 0.0;
+        const double above = i + 1 < roots.size() ? roots[i + 1].theta : theta_max;
+        const double t0 = roots[i].theta;
+        ASSERT_NE(roots[i].slope, 0) << "phi " << phi;
+        EXPECT_EQ(GlassCurveLives(f, roots[i].curve, 0.5 * (below + t0), cp, sp), roots[i].slope < 0)
+            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+        EXPECT_EQ(GlassCurveLives(f, roots[i].curve, 0.5 * (t0 + above), cp, sp), roots[i].slope > 0)
+            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+        ++compared;
+      }
+    }
+  }
+  EXPECT_GE(compared, 1000);
+  std::printf("%d roots compared\n", compared);
+}
+
 // The views where roots appeared and vanished within one cell of the
 // rays' scan: their E at the table's tolerances within its claim of the
 // converged value.

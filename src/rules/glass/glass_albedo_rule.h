@@ -52,6 +52,7 @@ enum GlassCurve { kGlassReflectionHorizon = 1, kGlassRefractionHorizon = 2, kGla
 struct GlassRoot {
   double theta;
   int curve;
+  int slope = 0;  // the curve's form rising (+1) or falling (-1) through it; 0 unknown
 };
 
 // The bilinear form of each curve's quadratic: the unnormalized normals m
@@ -75,16 +76,20 @@ inline int GlassLastCurve(const GlassFrame& f) { return f.eta < 1 ? kGlassCritic
 
 // The zeros x in [0, pi) of A cos^2(x) + 2 B cos(x) sin(x) + C sin^2(x) =
 // P + R cos(2 x - delta), P = (A + C) / 2, R = hypot((A - C) / 2, B); none
-// unless |P| < R. Calls out(x, delta).
+// unless |P| < R. Calls out(x, slope): 2 x = delta + g, g = acos(-P / R)
+// in (0, pi), where the form falls through 0 (its derivative -2 R sin(g)),
+// slope -1; 2 x = delta - g, where it rises, slope +1; 0 if g is 0 or pi.
 template <class Out>
 void HalfAngleZeros(double qa, double qb, double qc, const Out& out) {
   const double p = 0.5 * (qa + qc), q = 0.5 * (qa - qc);
   const double r = std::hypot(q, qb);
   if (!(r > 0) || !(std::abs(p) < r)) return;
   const double delta = std::atan2(qb, q), g = std::acos(-p / r);
-  for (double two : {delta + g, delta - g}) {
+  const int steep = g > 0 && g < kPi<double> ? 1 : 0;
+  for (int side : {-1, 1}) {
     // 2 x modulo 2 pi into [0, 2 pi): x in [0, pi).
-    out(0.5 * (two - kTwoPi<double> * std::floor(two / kTwoPi<double>)), delta);
+    const double two = delta - side * g;
+    out(0.5 * (two - kTwoPi<double> * std::floor(two / kTwoPi<double>)), side * steep);
   }
 }
 
@@ -119,8 +124,8 @@ inline void GlassRoots(const GlassCurveForms& forms, double cp, double sp, doubl
                        std::vector<GlassRoot>* roots) {
   roots->clear();
   for (int curve = kGlassReflectionHorizon; curve <= forms.last; ++curve) {
-    HalfAngleZeros(forms.qa[curve], forms.Qb(curve, cp, sp), forms.Qc(curve, cp, sp), [&](double t, double) {
-      if (t > 0 && t < theta_max) roots->push_back({t, curve});
+    HalfAngleZeros(forms.qa[curve], forms.Qb(curve, cp, sp), forms.Qc(curve, cp, sp), [&](double t, int slope) {
+      if (t > 0 && t < theta_max) roots->push_back({t, curve, slope});
     });
   }
   std::sort(roots->begin(), roots->end(),
@@ -172,7 +177,7 @@ inline void GlassRayEvents(const GlassFrame& f, const GlassCurveForms& c, std::v
   for (int curve = kGlassReflectionHorizon; curve <= c.last; ++curve) {
     const double qa = c.qa[curve], beta1 = c.beta1[curve], beta2 = c.beta2[curve];
     HalfAngleZeros(beta1 * beta1 - qa * c.g11[curve], beta1 * beta2 - qa * c.g12[curve],
-                   beta2 * beta2 - qa * c.g22[curve], [&](double x, double) {
+                   beta2 * beta2 - qa * c.g22[curve], [&](double x, int) {
                      const double phi = to_phi(x), cp = std::cos(phi), sp = std::sin(phi);
                      const double qb = c.Qb(curve, cp, sp), qc = c.Qc(curve, cp, sp);
                      // The double root: P + R cos(2 theta - delta) with |P| = R
@@ -182,11 +187,11 @@ inline void GlassRayEvents(const GlassFrame& f, const GlassCurveForms& c, std::v
                      const double theta = 0.5 * two;
                      if (theta > 0 && theta < f.ThetaMax(sp)) phis->push_back(phi);
                    });
-    HalfAngleZeros(c.g11[curve], c.g12[curve], c.g22[curve], [&](double x, double) {
+    HalfAngleZeros(c.g11[curve], c.g12[curve], c.g22[curve], [&](double x, int) {
       if (to_phi(x) > 0) phis->push_back(to_phi(x));
     });
     auto form = [&](const Vec3<double>& u, const Vec3<double>& v) { return GlassForm(f, curve, u, v); };
-    HalfAngleZeros(form(e1, e1), form(e1, e2), form(e2, e2), [&](double x, double) {
+    HalfAngleZeros(form(e1, e1), form(e1, e2), form(e2, e2), [&](double x, int) {
       if (to_phi(x) < 0) phis->push_back(to_phi(x));
     });
   }
@@ -540,8 +545,15 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
       const double t0 = roots[k].theta;
       const double below = k > 0 ? roots[k - 1].theta : 0.0;
       const double above = k + 1 < n_real ? roots[k + 1].theta : theta_max;
-      const bool grade_below = GlassCurveLives(f, roots[k].curve, 0.5 * (below + t0), cp, sp);
-      const bool grade_above = GlassCurveLives(f, roots[k].curve, 0.5 * (t0 + above), cp, sp);
+      // The reflection's term lives where its form, |m|^2 (2 c h.z - mu), is
+      // positive, the refraction (the critical angle) where its form,
+      // |m|^2 (c^2 - (1 - eta^2)), is: on the side the form rises to. The
+      // refraction's horizon is a root of a squared form: probed.
+      const int slope = roots[k].curve == kGlassRefractionHorizon ? 0 : roots[k].slope;
+      const bool grade_below =
+          slope != 0 ? slope < 0 : GlassCurveLives(f, roots[k].curve, 0.5 * (below + t0), cp, sp);
+      const bool grade_above =
+          slope != 0 ? slope > 0 : GlassCurveLives(f, roots[k].curve, 0.5 * (t0 + above), cp, sp);
       const double nz = std::cos(t0) * f.vz + std::sin(t0) * sp * f.vx;
       const double finest = 0.125 * (nz * nz + f.alpha * f.alpha);
       for (double w = 0.25 * theta_max; w > finest && roots.size() < 160; w *= kGlassGrading) {
