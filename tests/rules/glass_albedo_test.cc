@@ -320,14 +320,20 @@ TEST(GlassAlbedoTest, SignatureFromTangentsIsTheRootsSequence) {
   EXPECT_GE(compared, 6 * kRays - 100);
 }
 
-// The side of each root where the reflection's term or the refraction (the
-// critical angle) lives, from the slope HalfAngleZeros gives, is the side
-// GlassCurveLives finds at the midpoints to the neighbouring roots.
-TEST(GlassAlbedoTest, RootSlopesGiveTheSideWhereTheTermLives) {
+// The roots the rule cuts each ray at (GlassTangentRoots, by their
+// tangents) are GlassRoots' (by angles, HalfAngleZeros): the same curves
+// in the same order, the same slopes, the angles within 1e-14 / (the gap
+// to the next root) (where no two roots are within 1e-9 of each other or
+// of the lune's edge). And the
+// side of each root where the reflection's term or the refraction (the
+// critical angle) lives, from its slope, is the side GlassCurveLives finds
+// at the midpoints to the neighbouring roots.
+TEST(GlassAlbedoTest, TangentRootsAndTheirSlopesAreTheRays) {
   const Case views[] = {{0.2025, 1 / 3.0, 0.15}, {0.36, 1 / 12.7, 0.95}, {0.0044, 1 / 1.1, 1e-4},
                         {0.5, 1.5, 0.2},          {1.0, 1 / 3.0, 0.01},   {0.09, 1 / 1.5, 1.0}};
   const int kRays = 5000;
-  int compared = 0;
+  int compared = 0, sides = 0;
+  double worst = 0;
   for (const Case& c : views) {
     const GlassFrame f(c.alpha, c.eta, c.mu);
     const GlassCurveForms forms(f);
@@ -336,22 +342,47 @@ TEST(GlassAlbedoTest, RootSlopesGiveTheSideWhereTheTermLives) {
       const double phi = -0.5 * kPi<double> + kPi<double> * (k + 0.5) / kRays;
       const double sp = std::sin(phi), cp = std::cos(phi), theta_max = f.ThetaMax(sp);
       GlassRoots(forms, cp, sp, theta_max, &roots);
-      for (size_t i = 0; i < roots.size(); ++i) {
-        if (roots[i].curve == kGlassRefractionHorizon) continue;
-        const double below = i > 0 ? roots[i - 1].theta : 0.0;
-        const double above = i + 1 < roots.size() ? roots[i + 1].theta : theta_max;
-        const double t0 = roots[i].theta;
-        ASSERT_NE(roots[i].slope, 0) << "phi " << phi;
-        EXPECT_EQ(GlassCurveLives(f, roots[i].curve, 0.5 * (below + t0), cp, sp), roots[i].slope < 0)
-            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
-        EXPECT_EQ(GlassCurveLives(f, roots[i].curve, 0.5 * (t0 + above), cp, sp), roots[i].slope > 0)
-            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+      GlassRoot tangent[6];
+      const int n = GlassTangentRoots(f, forms, cp, sp, tangent);
+      bool near_tie = false;
+      double prev = 0;
+      for (const GlassRoot& r : roots) {
+        near_tie |= r.theta - prev < 1e-9;
+        prev = r.theta;
+      }
+      near_tie |= theta_max - prev < 1e-9;
+      if (!near_tie) {
+        ASSERT_EQ(n, static_cast<int>(roots.size())) << "phi " << phi;
+        for (int i = 0; i < n; ++i) {
+          EXPECT_EQ(tangent[i].curve, roots[i].curve) << "phi " << phi;
+          EXPECT_EQ(tangent[i].slope, roots[i].slope) << "phi " << phi;
+          // A root next to another of its curve (a near tangency) is
+          // ill-conditioned: both ways lose about 1e-15 / (their gap).
+          const double gap = std::min(i > 0 ? roots[i].theta - roots[i - 1].theta : 1.0,
+                                      i + 1 < n ? roots[i + 1].theta - roots[i].theta : 1.0);
+          const double d = std::abs(std::atan(tangent[i].theta) - roots[i].theta);
+          EXPECT_LE(d, 5e-14 + 1e-14 / gap) << "phi " << phi << " gap " << gap;
+          worst = std::max(worst, d * gap);
+        }
         ++compared;
+      }
+      for (int i = 0; i < n; ++i) {
+        if (tangent[i].curve == kGlassRefractionHorizon) continue;
+        const double t0 = std::atan(tangent[i].theta);
+        const double below = i > 0 ? std::atan(tangent[i - 1].theta) : 0.0;
+        const double above = i + 1 < n ? std::atan(tangent[i + 1].theta) : theta_max;
+        EXPECT_EQ(GlassCurveLives(f, tangent[i].curve, 0.5 * (below + t0), cp, sp), tangent[i].slope < 0)
+            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+        EXPECT_EQ(GlassCurveLives(f, tangent[i].curve, 0.5 * (t0 + above), cp, sp), tangent[i].slope > 0)
+            << "phi " << phi << " alpha " << c.alpha << " eta " << c.eta << " mu " << c.mu;
+        ++sides;
       }
     }
   }
-  EXPECT_GE(compared, 1000);
-  std::printf("%d roots compared\n", compared);
+  EXPECT_GE(compared, 6 * kRays - 100);
+  EXPECT_GE(sides, 1000);
+  std::printf("%d rays compared (largest angle difference times gap %.3g), %d roots' sides\n", compared, worst,
+              sides);
 }
 
 // The views where roots appeared and vanished within one cell of the

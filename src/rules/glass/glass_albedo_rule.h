@@ -119,7 +119,8 @@ struct GlassCurveForms {
 };
 
 // The roots theta in (0, theta_max) of the three quadratic forms along the
-// ray (cos(phi), sin(phi)) = (cp, sp), ascending.
+// ray (cos(phi), sin(phi)) = (cp, sp), ascending, by their angles (the
+// tests' reference for GlassTangentRoots, which the rule uses).
 inline void GlassRoots(const GlassCurveForms& forms, double cp, double sp, double theta_max,
                        std::vector<GlassRoot>* roots) {
   roots->clear();
@@ -476,17 +477,17 @@ RuleResult GlassSegmentsRule(const std::vector<MappedSegment>& segments, double 
   return GlassSegmentsRule(segments.data(), static_cast<int>(segments.size()), scale, tol, max_pieces, f, safety);
 }
 
-// The sequence of curves met along the ray at phi, as one number (the
-// outer mesh is cut where it changes). The roots are ordered by tan(theta),
-// which needs no angle: the form is cos^2(theta) (qa + 2 qb t + qc t^2), t
-// = tan(theta), whose roots are t1 = q / qc and t2 = qa / q, q = -(qb +
-// sign(qb) sqrt(qb^2 - qa qc)) (none unless qb^2 > qa qc, as for
+// The roots along the ray (cos(phi), sin(phi)) = (cp, sp) by their
+// tangents, which need no angle: the form is cos^2(theta) (qa + 2 qb t +
+// qc t^2), t = tan(theta), whose roots are t1 = q / qc and t2 = qa / q, q
+// = -(qb + sign(qb) sqrt(qb^2 - qa qc)) (none unless qb^2 > qa qc, as for
 // GlassRoots); those in (0, tan(theta_max)) count (theta in (0, pi) is t
-// over the reals and inf, and theta_max is at most pi/2).
-inline long GlassRaySignature(const GlassFrame& f, const GlassCurveForms& forms, double phi) {
-  const double sp = std::sin(phi), cp = std::cos(phi);
+// over the reals and inf, and theta_max is at most pi/2). The form's
+// derivative in theta at a root has the sign of qb + qc t: the slope.
+// Fills out (at most 6) ascending, t in .theta; returns their count.
+inline int GlassTangentRoots(const GlassFrame& f, const GlassCurveForms& forms, double cp, double sp,
+                             GlassRoot* out) {
   const double t_max = sp >= 0 ? std::numeric_limits<double>::infinity() : f.vz / (-sp * f.vx);
-  GlassRoot roots[6];
   int n = 0;
   for (int curve = kGlassReflectionHorizon; curve <= forms.last; ++curve) {
     const double qa = forms.qa[curve], qb = forms.Qb(curve, cp, sp), qc = forms.Qc(curve, cp, sp);
@@ -494,13 +495,21 @@ inline long GlassRaySignature(const GlassFrame& f, const GlassCurveForms& forms,
     if (!(disc > 0)) continue;
     const double q = -(qb + std::copysign(std::sqrt(disc), qb));
     for (double t : {q / qc, qa / q}) {
-      if (t > 0 && t < t_max) roots[n++] = {t, curve};
+      if (t > 0 && t < t_max) out[n++] = {t, curve, qb + qc * t > 0 ? 1 : -1};
     }
   }
-  // Insertion sort of at most 6 roots by t (held in .theta).
+  // Insertion sort of at most 6 roots by t.
   for (int i = 1; i < n; ++i) {
-    for (int j = i; j > 0 && roots[j].theta < roots[j - 1].theta; --j) std::swap(roots[j], roots[j - 1]);
+    for (int j = i; j > 0 && out[j].theta < out[j - 1].theta; --j) std::swap(out[j], out[j - 1]);
   }
+  return n;
+}
+
+// The sequence of curves met along the ray at phi, as one number (the
+// outer mesh is cut where it changes).
+inline long GlassRaySignature(const GlassFrame& f, const GlassCurveForms& forms, double phi) {
+  GlassRoot roots[6];
+  const int n = GlassTangentRoots(f, forms, std::cos(phi), std::sin(phi), roots);
   long s = 1;
   for (int k = 0; k < n; ++k) s = 4 * s + roots[k].curve;
   return s;
@@ -525,7 +534,10 @@ RuleResult GlassAlbedoWith(const GlassFrame& f, double tol, int max_pieces, cons
   auto ray = [&](double phi, double inner_tol, double* err) {
     const double sp = std::sin(phi), cp = std::cos(phi);
     const double theta_max = f.ThetaMax(sp);
-    GlassRoots(forms, cp, sp, theta_max, &roots);
+    GlassRoot found[6];
+    const int n_found = GlassTangentRoots(f, forms, cp, sp, found);
+    roots.clear();
+    for (int k = 0; k < n_found; ++k) roots.push_back({std::atan(found[k].theta), found[k].curve, found[k].slope});
     const size_t n_real = roots.size();
     // Near the lune's edge, where n.z falls below alpha, h turns from the
     // normal to the horizon: a layer of width about alpha in theta, which
