@@ -281,8 +281,7 @@ struct SimdAverageLines {
     }
   }
 
-  // The sums of the k pieces [a[j], b[j]] of w (k at most
-  // kGlassPieceBatch).
+  // The sums of the k pieces [a[j], b[j]] of w (k at most kMaxGraded).
   void Pieces(const AverageLine& l, const double* a, const double* b, int k, GlassSums* out) const {
     static const Kronrod16 rule;
     const DF64 d;

@@ -327,6 +327,38 @@ class GlassPiecesScratch {
 // integrand.
 inline constexpr int kGlassPieceBatch = 8;
 
+// GlassPiecesRule's adaptive loop from the n pieces it has made:
+// room(need) gives storage for `need` pieces that holds the pieces so far.
+template <class Room, class Make>
+RuleResult GlassBisect(size_t n, double tol, int max_pieces, const Room& room, const Make& make) {
+  GlassPiece* pieces = room(n);
+  auto total = [&] {
+    double e = 0;
+    for (size_t i = 0; i < n; ++i) e += pieces[i].err + pieces[i].prop;
+    return e;
+  };
+  double err = total();
+  while (err > tol && n > 0 && static_cast<int>(n) < max_pieces) {
+    size_t worst = 0;
+    for (size_t i = 1; i < n; ++i) {
+      if (pieces[i].err > pieces[worst].err) worst = i;
+    }
+    if (pieces[worst].err <= 0.02 * tol / n) break;
+    const GlassPiece p = pieces[worst];
+    const double m = 0.5 * (p.a + p.b);
+    GlassPiece spans[2];
+    spans[0].a = p.a, spans[0].b = m, spans[0].segment = p.segment;
+    spans[1].a = m, spans[1].b = p.b, spans[1].segment = p.segment;
+    GlassPiece made[2];
+    make(spans, 2, made);
+    pieces = room(n + 1);
+    pieces[worst] = made[0];
+    pieces[n++] = made[1];
+    err = total();
+  }
+  return SumOfPieces(pieces, n, err);
+}
+
 // Gauss-Kronrod 15 over the mapped segments, the worst piece bisected
 // until the summed `safety` x |K15 - G7| plus the nodes' own errors meet
 // `tol`, or bisection stops helping (the worst piece's part below 1/50 of
@@ -361,31 +393,7 @@ RuleResult GlassPiecesRule(const MappedSegment* segments, int n_segments, double
     if (++k == kGlassPieceBatch) flush();
   }
   if (k > 0) flush();
-  GlassPiece* pieces = room(n);
-  auto total = [&] {
-    double e = 0;
-    for (size_t i = 0; i < n; ++i) e += pieces[i].err + pieces[i].prop;
-    return e;
-  };
-  double err = total();
-  while (err > tol && n > 0 && static_cast<int>(n) < max_pieces) {
-    size_t worst = 0;
-    for (size_t i = 1; i < n; ++i) {
-      if (pieces[i].err > pieces[worst].err) worst = i;
-    }
-    if (pieces[worst].err <= 0.02 * tol / n) break;
-    const GlassPiece p = pieces[worst];
-    const double m = 0.5 * (p.a + p.b);
-    spans[0].a = p.a, spans[0].b = m, spans[0].segment = p.segment;
-    spans[1].a = m, spans[1].b = p.b, spans[1].segment = p.segment;
-    GlassPiece made[2];
-    make(spans, 2, made);
-    pieces = room(n + 1);
-    pieces[worst] = made[0];
-    pieces[n++] = made[1];
-    err = total();
-  }
-  return SumOfPieces(pieces, n, err);
+  return GlassBisect(n, tol, max_pieces, room, make);
 }
 
 // GlassPiecesRule of `scale` times the integrand: f(x, v, e, k) fills the
@@ -430,6 +438,12 @@ struct GlassSums {
   double kron, gauss;
 };
 
+// The piece `span` of `scale` times an integrand with no errors of its
+// own, from its sums.
+inline GlassPiece GlassPieceOfSums(const GlassPiece& span, const GlassSums& s, double scale, double safety) {
+  return GlassPiece{span.a, span.b, scale * s.kron, safety * scale * std::abs(s.kron - s.gauss), 0.0, span.segment};
+}
+
 // GlassPiecesRule of `scale` times an integrand with no errors of its own
 // whose evaluator forms the pieces' sums: sums(spans, k, out) fills the
 // GlassSums of the k pieces `spans` of the segments.
@@ -439,10 +453,7 @@ RuleResult GlassSumsRule(const MappedSegment* segments, int n_segments, double s
   return GlassPiecesRule(segments, n_segments, tol, max_pieces, [&](const GlassPiece* spans, int k, GlassPiece* out) {
     GlassSums s[kGlassPieceBatch];
     sums(spans, k, s);
-    for (int j = 0; j < k; ++j) {
-      out[j] = GlassPiece{spans[j].a, spans[j].b, scale * s[j].kron, safety * scale * std::abs(s[j].kron - s[j].gauss),
-                          0.0, spans[j].segment};
-    }
+    for (int j = 0; j < k; ++j) out[j] = GlassPieceOfSums(spans[j], s[j], scale, safety);
   });
 }
 

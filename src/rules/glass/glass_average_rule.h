@@ -68,16 +68,26 @@ inline constexpr double kInnerShare = 0.5;
 // cuts[j + 1]], at most kMaxGraded.
 inline constexpr int kMaxGraded = 16;
 inline int GradedFromLow(double lo, double hi, double finest, double cut, double* cuts) {
-  int n = 0;
-  cuts[n++] = lo;
-  cuts[n++] = hi;
-  if (cut > lo && cut < hi) cuts[n++] = cut;
-  for (double w = 0.25 * (hi - lo); w > finest && n < kMaxGraded; w *= kGlassGrading) cuts[n++] = lo + w;
-  std::sort(cuts, cuts + n);
-  int m = 1;
-  for (int k = 1; k < n; ++k) {
-    if (cuts[k] > cuts[m - 1]) cuts[m++] = cuts[k];
+  const bool inside = cut > lo && cut < hi;
+  // lo + w, w descending, as many as the cuts leave room for.
+  double graded[kMaxGraded];
+  int ng = 0;
+  for (double w = 0.25 * (hi - lo); w > finest && ng + 2 + inside < kMaxGraded; w *= kGlassGrading) {
+    graded[ng++] = lo + w;
   }
+  // Merged ascending, repeats dropped.
+  int m = 0;
+  auto add = [&](double x) {
+    if (m == 0 || x > cuts[m - 1]) cuts[m++] = x;
+  };
+  add(lo);
+  bool placed = !inside;
+  for (int i = ng - 1; i >= 0; --i) {
+    if (!placed && cut <= graded[i]) add(cut), placed = true;
+    add(graded[i]);
+  }
+  if (!placed) add(cut);
+  add(hi);
   return m - 1;
 }
 
@@ -112,8 +122,7 @@ struct ScalarAverageLines {
       v[i] = jac * model->G2(l.a0 + l.a1 * x, l.b0 + l.b1 * x);
     }
   }
-  // The sums of the k pieces [a[j], b[j]] of w (k at most
-  // kGlassPieceBatch).
+  // The sums of the k pieces [a[j], b[j]] of w (k at most kMaxGraded).
   void Pieces(const AverageLine& l, const double* a, const double* b, int k, GlassSums* out) const {
     const KronrodRule& r = Kronrod15();
     for (int j = 0; j < k; ++j) {
@@ -140,6 +149,8 @@ struct PsiLine {
   double value, error;
 };
 
+inline constexpr int kMaxLinePieces = 200;
+
 template <class Lines>
 PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol, const AverageLine& line,
                 const Lines& lines) {
@@ -148,20 +159,27 @@ PsiLine OverPsi(double x_lo, double x_hi, double width, double scale, double tol
   const double finest = x_hi < 1 ? WOfCos(std::max(x_hi - width, -1.0)) - lo : hi - lo;
   double cuts[kMaxGraded + 1];
   const int n = GradedFromLow(lo, hi, finest, 1.0, cuts);
-  MappedSegment segs[kMaxGraded];
-  for (int j = 0; j < n; ++j) segs[j] = {cuts[j], cuts[j + 1], false, false};
-  const RuleResult res = GlassSumsRule(
-      segs, n, scale, tol, 200,
-      [&](const GlassPiece* spans, int k, GlassSums* out) {
-        double a[kGlassPieceBatch], b[kGlassPieceBatch];
-        for (int j = 0; j < k; ++j) {
-          const MappedSegment& g = segs[spans[j].segment];
-          a[j] = g.a + (g.b - g.a) * spans[j].a;
-          b[j] = g.a + (g.b - g.a) * spans[j].b;
-        }
-        lines.Pieces(line, a, b, k, out);
-      },
-      kAverageSafety);
+  // GlassSumsRule on the segments [cuts[j], cuts[j + 1]], their pieces on
+  // the stack and their first pieces' sums in one call.
+  GlassPiece pieces[kMaxLinePieces];
+  GlassSums sums[kMaxGraded];
+  lines.Pieces(line, cuts, cuts + 1, n, sums);
+  for (int j = 0; j < n; ++j) {
+    GlassPiece whole;
+    whole.a = 0.0, whole.b = 1.0, whole.segment = j;
+    pieces[j] = GlassPieceOfSums(whole, sums[j], scale, kAverageSafety);
+  }
+  auto make = [&](const GlassPiece* spans, int k, GlassPiece* out) {
+    double a[kGlassPieceBatch], b[kGlassPieceBatch];
+    for (int j = 0; j < k; ++j) {
+      const double lo_j = cuts[spans[j].segment], width = cuts[spans[j].segment + 1] - lo_j;
+      a[j] = lo_j + width * spans[j].a;
+      b[j] = lo_j + width * spans[j].b;
+    }
+    lines.Pieces(line, a, b, k, sums);
+    for (int j = 0; j < k; ++j) out[j] = GlassPieceOfSums(spans[j], sums[j], scale, kAverageSafety);
+  };
+  const RuleResult res = GlassBisect(n, tol, kMaxLinePieces, [&](size_t) { return pieces; }, make);
   return {res.value, res.error};
 }
 
