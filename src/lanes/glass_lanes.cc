@@ -322,42 +322,46 @@ void GlassAverageSums(double alpha, Masking masking, const double* coefficients,
   *gauss = sums.gauss;
 }
 
+// A view's rough dielectric, its rule's frame and the lanes nodes of its
+// albedo, as the bake forms them.
+struct SimdGlassView {
+  RoughDielectric<double, GgxNdf<double>> bsdf;
+  GlassFrame frame;
+  double lambda_o;
+  SimdGlassNodes nodes;
+  SimdGlassView(double alpha, double eta, Masking masking, double mu, DielectricPart part)
+      : bsdf(GgxNdf<double>(alpha), eta, masking, DielectricTransport::kImportance),
+        frame(bsdf.ndf().alpha_x(), GlassRuleEta(bsdf.eta(), eta, part), mu),
+        lambda_o(bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu})),
+        nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part} {}
+  SimdGlassView(const SimdGlassView&) = delete;
+  SimdGlassView& operator=(const SimdGlassView&) = delete;
+};
+
 RuleResult GlassTexel(double alpha, double eta, Masking masking, double mu, double tol, int max_pieces,
                       DielectricPart part) {
-  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
-                                                     DielectricTransport::kImportance);
-  const GlassFrame frame(bsdf.ndf().alpha_x(), GlassRuleEta(bsdf.eta(), eta, part), mu);
-  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
-  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
-  return GlassAlbedoWith(frame, tol, max_pieces, nodes);
+  const SimdGlassView view(alpha, eta, masking, mu, part);
+  return GlassAlbedoWith(view.frame, tol, max_pieces, view.nodes);
 }
 
 void GlassPieceSums(double alpha, double eta, Masking masking, double mu, double phi, double a, double b,
                     bool singular_a, bool singular_b, double ta, double tb, double* kron, double* gauss) {
-  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
-                                                     DielectricTransport::kImportance);
-  const GlassFrame frame(bsdf.ndf().alpha_x(), bsdf.eta(), mu);
-  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
-  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o};
+  const SimdGlassView view(alpha, eta, masking, mu, DielectricPart::kBoth);
   const MappedSegment segment{a, b, singular_a, singular_b};
   GlassPiece span{};
   span.a = ta;
   span.b = tb;
   span.segment = 0;
   GlassSums sums;
-  nodes.Pieces(GlassRay{std::cos(phi), std::sin(phi)}, &segment, &span, 1, &sums);
+  view.nodes.Pieces(GlassRay{std::cos(phi), std::sin(phi)}, &segment, &span, 1, &sums);
   *kron = sums.kron;
   *gauss = sums.gauss;
 }
 
 void GlassNodes(double alpha, double eta, Masking masking, double mu, double phi, const double* theta, double* v,
                 DielectricPart part) {
-  const RoughDielectric<double, GgxNdf<double>> bsdf(GgxNdf<double>(alpha), eta, masking,
-                                                     DielectricTransport::kImportance);
-  const GlassFrame frame(bsdf.ndf().alpha_x(), GlassRuleEta(bsdf.eta(), eta, part), mu);
-  const double lambda_o = bsdf.Lambda(Vec3<double>{frame.so, 0, frame.mu});
-  const SimdGlassNodes nodes{&frame, bsdf.masking() == Masking::kSeparable, 1 + lambda_o, lambda_o, part};
-  nodes(GlassRay{std::cos(phi), std::sin(phi)}, theta, v);
+  const SimdGlassView view(alpha, eta, masking, mu, part);
+  view.nodes(GlassRay{std::cos(phi), std::sin(phi)}, theta, v);
 }
 
 }  // namespace HWY_NAMESPACE

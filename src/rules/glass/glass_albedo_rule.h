@@ -396,30 +396,36 @@ RuleResult GlassPiecesRule(const MappedSegment* segments, int n_segments, double
   return GlassBisect(n, tol, max_pieces, room, make);
 }
 
+// The 15 Kronrod nodes x of each of k pieces of the segments, mapped, and
+// the maps' Jacobians.
+inline void MapPieceNodes(const MappedSegment* segments, const GlassPiece* spans, int k, double* x, double* jac) {
+  const KronrodRule& rule = Kronrod15();
+  for (int j = 0; j < k; ++j) {
+    const MappedSegment& g = segments[spans[j].segment];
+    const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
+    if (g.singular_a || g.singular_b) {
+      for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
+    } else {
+      // Map's identity branch, out of the loop.
+      const double w = g.b - g.a;
+      for (int i = 0; i < 15; ++i) {
+        x[15 * j + i] = g.a + w * (c + h * rule.x[i]);
+        jac[15 * j + i] = w;
+      }
+    }
+  }
+}
+
 // GlassPiecesRule of `scale` times the integrand: f(x, v, e, k) fills the
 // integrand and its errors at the 15 k points x of k pieces; the maps'
 // Jacobians and the Kronrod sums are formed here.
 template <class F>
 RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, double scale, double tol,
                              int max_pieces, const F& f, double safety = kGlassErrorSafety) {
-  const KronrodRule& rule = Kronrod15();
   return GlassPiecesRule(segments, n_segments, tol, max_pieces, [&](const GlassPiece* spans, int k, GlassPiece* out) {
     double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch];
     double v[15 * kGlassPieceBatch], e[15 * kGlassPieceBatch];
-    for (int j = 0; j < k; ++j) {
-      const MappedSegment& g = segments[spans[j].segment];
-      const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
-      if (g.singular_a || g.singular_b) {
-        for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
-      } else {
-        // Map's identity branch, out of the loop.
-        const double w = g.b - g.a;
-        for (int i = 0; i < 15; ++i) {
-          x[15 * j + i] = g.a + w * (c + h * rule.x[i]);
-          jac[15 * j + i] = w;
-        }
-      }
-    }
+    MapPieceNodes(segments, spans, k, x, jac);
     f(x, v, e, k);
     for (int i = 0; i < 15 * k; ++i) {
       v[i] *= jac[i];
@@ -437,6 +443,17 @@ RuleResult GlassSegmentsRule(const MappedSegment* segments, int n_segments, doub
 struct GlassSums {
   double kron, gauss;
 };
+
+// The sums of the values f at a piece's 15 Kronrod nodes, of half width h.
+inline GlassSums KronrodSums(const double* f, double h) {
+  const KronrodRule& rule = Kronrod15();
+  double ks = 0, gs = 0;
+  for (int i = 0; i < 15; ++i) {
+    ks += rule.wk[i] * f[i];
+    gs += rule.wg[i] * f[i];
+  }
+  return {h * ks, h * gs};
+}
 
 // The piece `span` of `scale` times an integrand with no errors of its
 // own, from its sums.
@@ -462,24 +479,11 @@ RuleResult GlassSumsRule(const MappedSegment* segments, int n_segments, double s
 template <class Node>
 void MappedPieceSums(const MappedSegment* segments, const GlassPiece* spans, int k, GlassSums* out,
                      const Node& node) {
-  const KronrodRule& rule = Kronrod15();
   double x[15 * kGlassPieceBatch], jac[15 * kGlassPieceBatch], v[15 * kGlassPieceBatch];
-  for (int j = 0; j < k; ++j) {
-    const MappedSegment& g = segments[spans[j].segment];
-    const double c = 0.5 * (spans[j].a + spans[j].b), h = 0.5 * (spans[j].b - spans[j].a);
-    for (int i = 0; i < 15; ++i) g.Map(c + h * rule.x[i], &x[15 * j + i], &jac[15 * j + i]);
-  }
+  MapPieceNodes(segments, spans, k, x, jac);
   node(x, v, k);
-  for (int j = 0; j < k; ++j) {
-    const double h = 0.5 * (spans[j].b - spans[j].a);
-    double ks = 0, gs = 0;
-    for (int i = 0; i < 15; ++i) {
-      const double f = v[15 * j + i] * jac[15 * j + i];
-      ks += rule.wk[i] * f;
-      gs += rule.wg[i] * f;
-    }
-    out[j] = {h * ks, h * gs};
-  }
+  for (int i = 0; i < 15 * k; ++i) v[i] *= jac[i];
+  for (int j = 0; j < k; ++j) out[j] = KronrodSums(v + 15 * j, 0.5 * (spans[j].b - spans[j].a));
 }
 
 template <class F>

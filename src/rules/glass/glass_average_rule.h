@@ -130,12 +130,7 @@ struct ScalarAverageLines {
       double w[15], v[15];
       for (int i = 0; i < 15; ++i) w[i] = c + h * r.x[i];
       (*this)(l, w, v);
-      double ks = 0, gs = 0;
-      for (int i = 0; i < 15; ++i) {
-        ks += r.wk[i] * v[i];
-        gs += r.wg[i] * v[i];
-      }
-      out[j] = {h * ks, h * gs};
+      out[j] = KronrodSums(v, h);
     }
   }
 };
