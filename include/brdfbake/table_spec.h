@@ -231,6 +231,8 @@ struct TableShape {
   int value_channels = 1;             // the channels before the error channel
   int64_t Texels() const { return width * height; }
 };
+// A model this build does not contain (BRDFBAKE_MODELS) has no shape:
+// std::invalid_argument, as ValidateModelParams says.
 TableShape ShapeOf(const BakeSpec& spec);
 
 // The same axes as ShapeOf's, as pointers into `spec`: to set their sizes,
@@ -256,6 +258,10 @@ std::vector<IntegratorKind> TableIntegrators(const BakeSpec& spec);
 // any other), and the names of this build's models that bake it.
 bool ModelBakes(ModelKind model, TableKind table);
 std::vector<std::string> ModelsBaking(TableKind table);
+// Whether `model`'s tables take a Smith masking (BakeSpec::masking): not
+// the lobes whose shadowing is their own (charlie) or that have none
+// (disney-diffuse); false for a model this build does not contain.
+bool ModelTakesMasking(ModelKind model);
 
 // Stored values are clamped to the physical range: E, 1-E, E_avg and
 // 1-E_avg to [0, 1]; dfg.scale, dfg.bias >= 0 with scale + bias <= 1 in the

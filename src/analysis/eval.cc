@@ -13,6 +13,8 @@
 #include "base/error.h"
 #include "base/text.h"
 #include "brdfbake/bake.h"
+#include "brdfbake/batch.h"
+#include "brdfbake/model.h"
 
 namespace brdfbake {
 namespace {
@@ -35,6 +37,32 @@ const std::vector<std::string>& EvalQuantities() {
 namespace {
 
 bool IsGenSchlick(const std::string& q) { return q == "gen_schlick_s" || q == "gen_schlick_ior_s"; }
+
+// A table model (ggx-aniso, ggx-glass): a model kind of this build that is
+// no family of Models(), with table quantities and no pointwise Model.
+bool IsTableModel(ModelKind kind) {
+  const std::vector<ModelInfo>& families = Models();
+  return std::none_of(families.begin(), families.end(), [&](const ModelInfo& m) { return m.kind == kind; });
+}
+
+// Whether `kind`'s E table lies over a material's own widths and angles
+// (the ellipsoid's mu x phi_o) rather than over the roughness.
+bool TablesOverOwnWidths(ModelKind kind) {
+  BakeSpec spec;
+  spec.model.kind = kind;
+  spec.table = TableKind::kE;
+  const std::vector<Axis*> axes = TableAxes(&spec);
+  return std::none_of(axes.begin(), axes.end(), [](const Axis* a) { return a->name == "roughness"; });
+}
+
+// The names of this build's models with the lobe quantity K (sel).
+std::vector<std::string> ModelsWithK() {
+  std::vector<std::string> names;
+  for (const ModelKind m : ModelKindsBuilt()) {
+    if (BatchSupports(m, Quantity::kK)) names.push_back(ModelName(m));
+  }
+  return names;
+}
 // The GGX lobe's Fresnel-shape tables: one value per view and roughness.
 bool IsFresnelShape(const std::string& q) { return IsGenSchlick(q) || q == "f82_bias"; }
 
@@ -44,7 +72,6 @@ bool IsTableQuantity(const std::string& q) { return q == "E" || q == "dfg" || q 
 
 void ValidateEvalRequest(const EvalRequest& req) {
   const bool aniso = req.model.kind == ModelKind::kGgxAniso;
-  const bool glass = req.model.kind == ModelKind::kGgxGlass;
   ModelParams params = req.model;
   if (aniso) params.kind = ModelKind::kGgx;  // the widths come from roughness and anisotropy
   bool tables_only = !req.quantities.empty();
@@ -81,7 +108,7 @@ void ValidateEvalRequest(const EvalRequest& req) {
     }
     const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
     if (IsTableQuantity(q)) {
-      if (req.model.kind == ModelKind::kEllipsoid) continue;  // the material's own widths and angles
+      if (TablesOverOwnWidths(req.model.kind)) continue;
       if (req.model.alpha_x != req.model.alpha_y) {
         Bad("{quantity}: " + q + " is tabulated for isotropic models: give {alpha} or {roughness}, "
             "not {alpha_x}/{alpha_y}");
@@ -91,17 +118,17 @@ void ValidateEvalRequest(const EvalRequest& req) {
       }
       continue;
     }
-    if (aniso || glass) {
+    if (IsTableModel(req.model.kind)) {
       Bad("{quantity}: " + std::string(req.model.name()) + " has the table quantities E and E_avg only (got '" + q + "')");
     }
     if (table_sweep) {
       Bad("{sweep} " + req.sweep + ": only E, dfg and E_avg can be evaluated without a swept "
           "direction (got '" + q + "')");
     }
-    const bool is_sel = req.model.kind == ModelKind::kSel;
-    if (is_sel != (q == "K")) {
-      Bad(is_sel ? "{quantity}: model sel has only the quantity K"
-                 : "{quantity}: K is defined for model sel only");
+    const bool lobe = BatchSupports(req.model.kind, Quantity::kK);
+    if (lobe != (q == "K")) {
+      Bad(lobe ? "{quantity}: model " + std::string(req.model.name()) + " has only the quantity K"
+               : "{quantity}: K is defined for model " + JoinList(ModelsWithK(), " and ") + " only");
     }
   }
   if (req.count < 1 || req.count > 10000000) Bad("{count} must be in [1, 10000000]");
@@ -135,11 +162,12 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
   spec.model = req.model;
   // The tables take alpha from `roughness` (0 is their mirror): the model's
   // own widths only stand in.
-  if (spec.model.kind != ModelKind::kEllipsoid && spec.model.alpha_x == 0) {
+  const bool own_widths = TablesOverOwnWidths(spec.model.kind);
+  if (!own_widths && spec.model.alpha_x == 0) {
     spec.model.alpha_x = spec.model.alpha_y = 1.0;
   }
   spec.masking = req.masking;
-  if (spec.model.kind == ModelKind::kEllipsoid) {
+  if (own_widths) {
     // The material's E at the view (mu, --phi-o), or its E_avg.
     spec.table = q == "E_avg" ? TableKind::kEavg : TableKind::kE;
     if (q == "E_avg") {
@@ -195,11 +223,8 @@ std::string TableQuantityColumns(const EvalRequest& req, const std::string& q, d
 void EvalCsv(const EvalRequest& req, std::ostream& out) {
   ValidateEvalRequest(req);
   const bool table_sweep = req.sweep == "roughness" || req.sweep == "none";
-  // ggx-aniso is a table model (E, E_avg) without a pointwise Model.
-  const std::unique_ptr<Model> model =
-      req.model.kind == ModelKind::kGgxAniso || req.model.kind == ModelKind::kGgxGlass || table_sweep
-          ? nullptr
-          : MakeModel(req.model);
+  // A table model (ggx-aniso, ggx-glass) has no pointwise Model.
+  const std::unique_ptr<Model> model = IsTableModel(req.model.kind) || table_sweep ? nullptr : MakeModel(req.model);
   const Vec3<double> wo = FromMuPhi(req.mu_o, req.phi_o);
   const bool grey = req.fresnel.IsGrey();
 

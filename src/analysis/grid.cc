@@ -98,9 +98,11 @@ std::vector<std::pair<std::string, std::string>> GridAttributes(const GridReques
 void ValidateGridRequest(const GridRequest& req) {
   ValidateModelParams(req.model);
   ValidateFresnel(req.fresnel);
-  if (req.model.kind == ModelKind::kSel) Bad("{grid}: model sel is a lobe, not a BRDF");
-  if (req.model.kind == ModelKind::kGgxGlass) {
-    Bad("{grid}: model ggx-glass has the table quantities E and E_avg only");
+  // The models without a BRDF: a lobe (sel's K) or a table model.
+  if (!BatchSupports(req.model.kind, Quantity::kBrdf)) {
+    Bad("{grid}: model " + std::string(req.model.name()) +
+        (BatchSupports(req.model.kind, Quantity::kK) ? " is a lobe, not a BRDF"
+                                                     : " has the table quantities E and E_avg only"));
   }
   if (req.width < 1 || req.height < 1 || req.width > 16384 || req.height > 16384) {
     Bad("{width}/{height} must be in [1, 16384]");

@@ -99,9 +99,13 @@ int AxisIndex(const Table& t, const char* name) {
 
 bool ProbeSupports(const BakeSpec& s) {
   // ExactTableValues knows E, E_avg, dfg and the tables of one quantity
-  // over mu x roughness (f82_bias), over gamma or ior slices too; not the
-  // slope-plane tables, nor gen_schlick's slices.
-  return s.model.kind != ModelKind::kEllipsoid && s.table != TableKind::kSelNorm && !s.GenSchlick();
+  // over the roughness (f82_bias), over gamma, ior or anisotropy slices
+  // too; not the tables without a roughness axis (a material's own table,
+  // a lobe's norm over its widths), nor gen_schlick's slices.
+  BakeSpec axes = s;
+  const std::vector<Axis*> named = TableAxes(&axes);
+  const bool roughness = std::any_of(named.begin(), named.end(), [](const Axis* a) { return a->name == "roughness"; });
+  return roughness && !s.GenSchlick();
 }
 
 std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptions& o) {

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.h"
+#include "brdfbake/model.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/probe.h"
 #include "rules/ggx_aniso/aniso_ggx.h"
@@ -476,7 +477,7 @@ void WriteReport(const Report& report, const std::string& dir) {
   }
   std::string what = std::string(TableName(t.table)) + " " + t.model.name();
   const bool gamma_axis = t.HasGammaAxis();
-  if (t.model.kind == ModelKind::kStudentT && !gamma_axis) what += " gamma=" + Num(t.model.gamma);
+  if (ModelTakes(t.model.kind, ModelOption::kGamma) && !gamma_axis) what += " gamma=" + Num(t.model.gamma);
   std::string size = t.table == TableKind::kEavg
                          ? std::to_string(t.roughness.size)
                          : std::to_string(t.mu.size) + "x" + std::to_string(t.roughness.size);

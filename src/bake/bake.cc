@@ -180,6 +180,25 @@ std::string IntegratorJson(const BakeSpec& spec) {
 
 namespace {
 
+// Sets the coordinate of `at` that the view or lobe axis `a` gives at its
+// entry i (mu and the roughness at least their clamps).
+void SetAt(const Axis& a, int i, TexelAt* at) {
+  const double v = a.Value(i);
+  if (a.name == "mu") {
+    at->mu = std::max(v, a.clamp_min);
+  } else if (a.name == "roughness") {
+    at->roughness = std::max(v, a.clamp_min);
+  } else if (a.name == "phi_o") {
+    at->phi = v;
+  } else if (a.name == "anisotropy") {
+    at->anisotropy = v;
+  } else if (a.name == "alpha_x") {
+    at->alpha_x = v;
+  } else if (a.name == "alpha_y") {
+    at->alpha_y = v;
+  }
+}
+
 // For an E table over (mu, phi_o) (ellipsoid) or (mu, phi_o, r, s)
 // (ggx-aniso, phi_o fastest of the rows): each texel's first texel of the
 // same view and material. Where mu = 1 wo is the normal whatever phi_o;
@@ -292,8 +311,6 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   const Axis& ax_r = spec.roughness;
   const bool eavg = spec.table == TableKind::kEavg;
   const bool sel = spec.table == TableKind::kSelNorm;
-  const bool ellipsoid = spec.model.kind == ModelKind::kEllipsoid;
-  const bool aniso = spec.Anisotropic();
   TableShape shape = ShapeOf(spec);
   t.axes = std::move(shape.axes);
   t.width = int(shape.width);
@@ -341,6 +358,9 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
                                                   spec.threads);
   }
   const BakerRow& row = *BakerRowOf(spec.model.kind);
+  // A table over the family's own view axes (the ellipsoid's mu x phi_o,
+  // ggx-aniso's four): each texel's coordinates from the axes' names.
+  const bool own_view = row.own_axes && !t.axes.empty() && !ParameterAxis(t.axes.back());
   if (row.prepare) {
     for (const BakeSpec& s : slice_specs) row.prepare(s);
   }
@@ -363,11 +383,12 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
   } else if (eavg) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), z = static_cast<int>(i / t.width);
-      // Rows: a parameter axis's slices, or ggx-aniso's anisotropy.
+      // Rows: a parameter axis's slices, or a family's own axis (ggx-aniso's
+      // anisotropy).
       TexelAt at;
       at.roughness = std::max(ax_r.Value(x), ax_r.clamp_min);
       at.alpha = AlphaFromRoughness(at.roughness);
-      if (aniso) at.anisotropy = spec.anisotropy.Value(z);
+      if (t.axes.size() > 1 && !ParameterAxis(t.axes[1])) SetAt(t.axes[1], z, &at);
       const EavgEstimate e = EavgAt(slice_specs[slice_specs.size() > 1 ? z : 0], at, uint64_t(i));
       const double value = std::clamp(e.value, 0.0, e_max);
       v0[i] = spec.complement ? 1.0 - value : value;
@@ -379,7 +400,7 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     // phi_o is the same view, and phi_o values equal modulo 2 pi (0 and
     // 2 pi on an edges axis) are too. same_as[idx] is the first texel of
     // idx's view.
-    const bool views = (ellipsoid || aniso) && spec.table == TableKind::kE;
+    const bool views = own_view && spec.table == TableKind::kE && t.axes.size() > 1 && t.axes[1].name == "phi_o";
     const std::vector<int64_t> same_as =
         views ? SameViewTexels(spec, ax_mu, t.width, total) : std::vector<int64_t>();
     tbb::parallel_for(int64_t(0), total, [&](int64_t idx) {
@@ -387,19 +408,13 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
       const int x = static_cast<int>(idx % t.width), y = static_cast<int>(idx / t.width);
       const double mu = std::max(ax_mu.Value(x), ax_mu.clamp_min);
       TexelEstimate v;
-      if (ellipsoid) {
+      if (own_view) {
         TexelAt at;
-        at.mu = mu;
-        at.phi = spec.phi.Value(y);
-        v = row.texel(spec, at, 0);
-      } else if (aniso) {
-        // Rows: phi_o fastest, then roughness, then anisotropy.
-        const int yp = y % spec.phi.size, rest = y / spec.phi.size;
-        TexelAt at;
-        at.mu = mu;
-        at.roughness = std::max(ax_r.Value(rest % ax_r.size), ax_r.clamp_min);
-        at.anisotropy = spec.anisotropy.Value(rest / ax_r.size);
-        at.phi = spec.phi.Value(yp);
+        int64_t rest = idx;
+        for (const Axis& a : t.axes) {
+          SetAt(a, static_cast<int>(rest % a.size), &at);
+          rest /= a.size;
+        }
         v = row.texel(spec, at, 0);
       } else {
         const int ry = y % ax_r.size, z = y / ax_r.size;
@@ -487,26 +502,6 @@ TexelEstimate ClampToRange(const TexelEstimate& v, double e_max) {
   c.scale = s;
   c.bias = b;
   return c;
-}
-
-TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy,
-                                  double mu, double phi_o) {
-  ValidateBakeSpec(spec);
-  TexelAt at;
-  at.mu = mu;
-  at.roughness = roughness;
-  at.anisotropy = anisotropy;
-  at.phi = phi_o;
-  const TexelEstimate v = BakerRowOf(ModelKind::kGgxAniso)->texel(spec, at, 0);
-  return {v.e, v.scale, v.bias, v.err_e, v.err_scale, v.err_bias};
-}
-
-EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double anisotropy) {
-  ValidateBakeSpec(spec);
-  TexelAt at;
-  at.roughness = roughness;
-  at.anisotropy = anisotropy;
-  return BakerRowOf(ModelKind::kGgxAniso)->eavg(spec, at);
 }
 
 TexelEstimate IntegrateTexel(const BakeSpec& spec, double roughness, double mu,

@@ -36,6 +36,20 @@ struct TexelAt {
 
 constexpr unsigned Bit(TableKind t) { return 1u << static_cast<unsigned>(t); }
 
+// The axes of a family's tables where they are its own rather than mu x
+// roughness with an optional gamma axis: the ellipsoid's mu x phi_o over
+// one material, ggx-aniso's mu x phi_o x roughness x anisotropy, ggx-glass's
+// slices over the ior. table_spec.cc's AxesOf, DefaultSizes and SizeForm
+// read them; the bake fills a texel's TexelAt from the axes' names.
+struct OwnAxes {
+  std::vector<Axis BakeSpec::*> axes;  // fastest first
+  std::vector<int> sizes;              // each one's size when --size gives none
+  const char* form;                    // --size's form for messages: "WxH (mu x phi_o, e.g. 64x64)"
+  // The largest phi_o the phi_o axis may reach: pi/2 where E is even in
+  // phi_o and symmetric about pi/2 (ggx-aniso), 2 pi without symmetry.
+  double phi_max = kHalfPi;
+};
+
 struct BakerRow {
   ModelKind kind;
   // The table kinds it bakes (besides the tables of another model's lobe,
@@ -67,6 +81,20 @@ struct BakerRow {
   // Frees what its tables keep between bakes (ReleaseBakeCaches; null:
   // nothing).
   void (*release)() = nullptr;
+  // Whether its tables take a Smith masking (BakeSpec::masking); false for
+  // a lobe whose shadowing is its own (charlie's visibility) or that has
+  // none (ModelTakesMasking).
+  bool masking = true;
+  // Its tables' own axes (E's or E_avg's, as spec.table says); null: mu x
+  // roughness (x gamma).
+  OwnAxes (*own_axes)(const BakeSpec& spec) = nullptr;
+  // The parameters ValidateBakeSpec checks its model with where the table's
+  // axes give them (ggx-aniso: ggx at the spec's widths; ggx-glass: any
+  // roughness); null: the spec's model itself.
+  void (*checked_as)(ModelParams* p) = nullptr;
+  // The definition of its E channel where it is not the common albedo with
+  // F = 1 (ggx-glass: its parts, Fresnel included); null: the common one.
+  const char* (*e_definition)(const BakeSpec& spec) = nullptr;
 };
 
 // The row of `kind`, or null if this build does not contain it.

@@ -273,25 +273,35 @@ const char* MeaningName(Meaning m) {
 
 namespace {
 
+// The baker row of the spec's model; a model this build does not contain
+// is refused with ValidateModelParams' message (its family's row would
+// say its axes).
+const BakerRow& BuiltRow(const BakeSpec& spec) {
+  const BakerRow* row = BakerRowOf(spec.model.kind);
+  if (!row) {
+    ValidateModelParams(spec.model);
+    Bad("{model}: " + std::string(spec.model.name()) + " is not in this build");
+  }
+  return *row;
+}
+
 // The table's axes, fastest first (S: BakeSpec or const BakeSpec).
 template <class S>
 auto AxesOf(S& spec) {
   using A = std::remove_pointer_t<decltype(&spec.mu)>;  // Axis or const Axis
   const bool eavg = spec.table == TableKind::kEavg;
-  if (spec.model.kind == ModelKind::kEllipsoid) {
-    return eavg ? std::vector<A*>{} : std::vector<A*>{&spec.mu, &spec.phi};
-  }
+  const BakerRow& row = BuiltRow(spec);
   if (spec.table == TableKind::kSelNorm) return std::vector<A*>{&spec.alpha_x, &spec.alpha_y};
-  if (spec.Anisotropic()) {
-    return eavg ? std::vector<A*>{&spec.roughness, &spec.anisotropy}
-                : std::vector<A*>{&spec.mu, &spec.phi, &spec.roughness, &spec.anisotropy};
-  }
   std::vector<A*> axes;
+  if (row.own_axes) {
+    for (Axis BakeSpec::*a : row.own_axes(spec).axes) axes.push_back(&(spec.*a));
+    return axes;
+  }
   if (!eavg) axes.push_back(&spec.mu);
   axes.push_back(&spec.roughness);
   if (spec.table == TableKind::kGenSchlickS) {
     axes.push_back(&spec.exponent);
-  } else if (spec.Glass() || spec.table == TableKind::kGenSchlickIorS) {
+  } else if (spec.table == TableKind::kGenSchlickIorS) {
     axes.push_back(&spec.ior);
   } else if (spec.HasGammaAxis()) {
     axes.push_back(&spec.gamma);
@@ -300,7 +310,6 @@ auto AxesOf(S& spec) {
 }
 
 const char* Definition(Meaning meaning, const BakeSpec& spec) {
-  const bool glass = spec.Glass();
   if (meaning == Meaning::kS && spec.table == TableKind::kGenSchlickS) {
     return "s(mu) = integral D_wo(h) (1 - wo.h)^exponent 1{r.z > 0} dh over the visible normals h of a GGX "
            "reflection lobe (r the reflection): the generalized Schlick Fresnel is mix(F0, F90, s); no masking weight";
@@ -317,22 +326,9 @@ const char* Definition(Meaning meaning, const BakeSpec& spec) {
            "visible normals h of a GGX reflection lobe, F the exact dielectric Fresnel, F0 = ((ior - 1) / "
            "(ior + 1))^2: the dielectric Fresnel is mix(F0, 1, s); no masking weight";
   }
-  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kReflection) {
-    return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
-           "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
-  }
-  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kTransmission) {
-    return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
-           "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
-  }
-  if (glass && meaning == Meaning::kE && spec.part == DielectricPart::kTransmissionSchlick) {
-    return "T(mu) = integral over the lower hemisphere of (1 - (1 - |wo.h|)^5) f_T |cos(theta_i)| dwi, f_T the "
-           "rough dielectric's refraction lobe without its Fresnel factor: the refraction weighted by the "
-           "complement of Schlick's weight (EEVEE's btdf_ggx; the renderer multiplies it by 1 - F0)";
-  }
-  if (glass && meaning == Meaning::kE) {
-    return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
-           "the rough dielectric, Fresnel included: reflection plus refraction";
+  if (meaning == Meaning::kE) {
+    const BakerRow* row = BakerRowOf(spec.model.kind);
+    if (row && row->e_definition) return row->e_definition(spec);
   }
   if (meaning == Meaning::kE) return "directional albedo E(mu) = integral of f cos(theta_i) dwi with F = 1";
   if (meaning == Meaning::kOneMinusE) return "1 - E(mu), computed in double before rounding";
@@ -398,9 +394,8 @@ TableShape ShapeOf(const BakeSpec& spec) {
 std::vector<int> DefaultSizes(const BakeSpec& spec) {
   const bool eavg = spec.table == TableKind::kEavg;
   if (spec.GenSchlick()) return {16, 16, 16};
-  if (spec.Glass()) return eavg ? std::vector<int>{32, 32} : std::vector<int>{32, 32, 32};
-  if (spec.Anisotropic()) return eavg ? std::vector<int>{32, 16} : std::vector<int>{32, 16, 32, 16};
-  if (spec.model.kind == ModelKind::kEllipsoid) return eavg ? std::vector<int>{} : std::vector<int>{32, 16};
+  const BakerRow& row = BuiltRow(spec);
+  if (row.own_axes && spec.table != TableKind::kSelNorm) return row.own_axes(spec).sizes;
   std::vector<int> sizes(eavg ? 1 : 2, 32);
   if (spec.table != TableKind::kSelNorm && spec.HasGammaAxis()) sizes.push_back(spec.gamma.size);
   return sizes;
@@ -408,19 +403,11 @@ std::vector<int> DefaultSizes(const BakeSpec& spec) {
 
 std::string SizeForm(const BakeSpec& spec) {
   const bool eavg = spec.table == TableKind::kEavg;
-  if (spec.model.kind == ModelKind::kEllipsoid) {
-    return eavg ? "no size (the ellipsoid's E_avg is one value)" : "WxH (mu x phi_o, e.g. 64x64)";
-  }
   if (spec.table == TableKind::kSelNorm) return "WxH (alpha_x x alpha_y, e.g. 32x32)";
   if (spec.table == TableKind::kGenSchlickS) return "WxHxD (mu x roughness x exponent, e.g. 16x16x16)";
   if (spec.table == TableKind::kGenSchlickIorS) return "WxHxD (mu x roughness x ior, e.g. 16x16x16)";
-  if (spec.Glass()) {
-    return eavg ? "NxD (roughness x ior, e.g. 32x16)" : "WxHxD (mu x roughness x ior, e.g. 32x32x16)";
-  }
-  if (spec.Anisotropic()) {
-    return eavg ? "RxS (roughness x anisotropy, e.g. 32x16)"
-                : "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)";
-  }
+  const BakerRow& row = BuiltRow(spec);
+  if (row.own_axes) return row.own_axes(spec).form;
   if (spec.HasGammaAxis()) {
     return eavg ? "NxD (roughness x gamma, e.g. 32x16)" : "WxHxD (mu x roughness x gamma, e.g. 32x32x16)";
   }
@@ -428,6 +415,13 @@ std::string SizeForm(const BakeSpec& spec) {
 }
 
 namespace {
+
+// "only std", "only a and b": this build's models taking `option` (or "no
+// model of this build"), for a message on a setting of theirs.
+std::string OnlyModelsTaking(ModelOption option) {
+  const std::vector<std::string> names = ModelsTaking(option);
+  return names.empty() ? "no model of this build" : "only " + JoinList(names, " and ");
+}
 
 // Every axis: 1 to 8192 entries, at least 2 with edges placement.
 void CheckAxisSize(const Axis& a) {
@@ -455,15 +449,23 @@ std::vector<std::string> ModelsBaking(TableKind table) {
   return names;
 }
 
+bool ModelTakesMasking(ModelKind model) {
+  const BakerRow* row = BakerRowOf(model);
+  return row && row->masking;
+}
+
 void ValidateBakeSpec(const BakeSpec& spec) {
-  const bool aniso = spec.Anisotropic();
-  const bool glass = spec.Glass();
+  const BakerRow* row = BakerRowOf(spec.model.kind);
   ModelParams params = spec.model;
-  if (aniso) params.kind = ModelKind::kGgx;          // its widths come from the axes
-  if (glass) params.alpha_x = params.alpha_y = 1.0;  // from the roughness axis
+  if (row && row->checked_as) row->checked_as(&params);
   ValidateModelParams(params);
   const ModelKind m = spec.model.kind;
-  if (spec.inverse && !glass) Bad("{inverse}: only ggx-glass has an inside (light leaving the medium)");
+  // A dielectric interface (the models taking an ior): light on either
+  // side of it, and its lobes apart.
+  const bool dielectric = ModelTakes(m, ModelOption::kIor);
+  if (spec.inverse && !dielectric) {
+    Bad("{inverse}: " + OnlyModelsTaking(ModelOption::kIor) + " has an inside (light leaving the medium)");
+  }
   const KindRow& kind = RowOf(spec.table);
   if (kind.term) {
     if (m != kind.model) {
@@ -475,11 +477,11 @@ void ValidateBakeSpec(const BakeSpec& spec) {
   if (!ModelBakes(m, spec.table)) {
     Bad(std::string("{table}: ") + spec.model.name() + " bakes " + BakerRowOf(m)->bakes);
   }
-  if (spec.part != DielectricPart::kBoth && !glass) {
-    Bad("{part}: only ggx-glass has reflection and refraction parts (got {part} " +
+  if (spec.part != DielectricPart::kBoth && !dielectric) {
+    Bad("{part}: " + OnlyModelsTaking(ModelOption::kIor) + " has reflection and refraction parts (got {part} " +
         std::string(DielectricPartName(spec.part)) + ")");
   }
-  const bool ellipsoid = m == ModelKind::kEllipsoid;
+  const double phi_max = row->own_axes ? row->own_axes(spec).phi_max : kHalfPi;
   const std::vector<IntegratorKind> integrators = TableIntegrators(spec);
   if (std::find(integrators.begin(), integrators.end(), spec.integrator) == integrators.end()) {
     Bad("{integrator}: " +
@@ -500,19 +502,21 @@ void ValidateBakeSpec(const BakeSpec& spec) {
     const bool ordered = a->size == 1 ? a->min <= a->max : a->min < a->max;
     if (!(a->clamp_min >= 0 && a->clamp_min <= 1)) Bad("the " + a->name + " axis clamp must lie in [0, 1]");
     const bool angle = a->name == "phi_o";
-    const double upper = angle ? (ellipsoid ? 2 * kPi<double> : kHalfPi) : 1.0;
+    const double upper = angle ? phi_max : 1.0;
     if (!std::isfinite(a->min) || !std::isfinite(a->max) || !ordered || a->min < 0 || a->max > upper * (1 + 1e-15)) {
       std::ostringstream os;
       os << "{range}: the " << a->name
-         << " axis must satisfy 0 <= min < max <= " << (angle ? (ellipsoid ? "2 pi (radians)" : "pi/2 (radians)") : "1")
+         << " axis must satisfy 0 <= min < max <= "
+         << (angle ? (phi_max > kHalfPi ? "2 pi (radians)" : "pi/2 (radians)") : "1")
          << " (got " << a->min << ":" << a->max << ")";
       Bad(os.str());
     }
   }
   if (spec.HasGammaAxis()) {
     const Axis& g = spec.gamma;
-    if (m != ModelKind::kStudentT) {
-      Bad("{size}: only std has a gamma axis (got model '" + std::string(spec.model.name()) + "')");
+    if (!ModelTakes(m, ModelOption::kGamma)) {
+      Bad("{size}: " + OnlyModelsTaking(ModelOption::kGamma) + " has a gamma axis (got model '" +
+          std::string(spec.model.name()) + "')");
     }
     CheckAxisSize(g);
     if (g.warp != Warp::kTail) Bad("{warp}: the gamma axis takes the tail warp only");
@@ -542,7 +546,8 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
   }
-  if (glass || spec.table == TableKind::kGenSchlickIorS) {
+  const std::vector<const Axis*> axes = AxesOf(spec);
+  if (std::any_of(axes.begin(), axes.end(), [](const Axis* a) { return a->name == "ior"; })) {
     const Axis& a = spec.ior;
     CheckAxisSize(a);
     if (a.warp != Warp::kFresnelZ && a.warp != Warp::kLinear && a.warp != Warp::kTwoSided) {

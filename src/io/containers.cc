@@ -30,6 +30,7 @@
 #include "base/pixel.h"
 #include "base/text.h"
 #include "brdfbake/exr.h"
+#include "brdfbake/model.h"
 #include "brdfbake/output_file.h"
 #include "brdfbake/version.h"
 #include "io/exr_write.h"
@@ -471,7 +472,7 @@ std::string ChannelMeaning(const ImageLayout::Out& o, const std::vector<const Ta
   std::string m = SourceName(o.source);
   if (o.table > 0 && o.table <= int(others.size())) {
     m += std::string(" of ") + others[o.table - 1]->spec.model.name();
-    if (others[o.table - 1]->spec.model.kind == ModelKind::kCharlie) {
+    if (ModelTakes(others[o.table - 1]->spec.model.kind, ModelOption::kVisibility)) {
       m += std::string(" (") + SheenVisibilityName(others[o.table - 1]->spec.model.visibility) + ")";
     }
   }

@@ -69,10 +69,7 @@ const ModelRow& Checked(const char* entry, const BatchModel& model) {
   const ModelRow* row = RowOfModel(model.kind);
   if (!row || !row->eval) {
     Bad(std::string(entry) + ": model " + ModelName(model.kind) +
-        (model.kind == ModelKind::kGgxAniso   ? " is a table model; give ggx with its two widths"
-         : model.kind == ModelKind::kGgxGlass ? " is a table model; the rough dielectric's batch is "
-                                                "DielectricBsdfBatch"
-                                              : " is not in this build (BRDFBAKE_MODELS)"));
+        (row && row->no_batch ? row->no_batch : " is not in this build (BRDFBAKE_MODELS)"));
   }
   try {
     ValidateModelParams(ModelParamsOf(model));
@@ -247,9 +244,9 @@ void DielectricBsdfBatch(const BatchDielectric& model, DielectricQuantity q, Dir
 #if BRDFBAKE_WITH_GLASS
   if (n == 0) return;
   const float* in[6] = {wi.x, wi.y, wi.z, wo.x, wo.y, wo.z};
-  // Beckmann's exponential passes through the subnormal range (see
-  // ModelRow::flush_subnormals).
-  MaybeFlushed(model.ndf == ModelKind::kBeckmann, [&] { GlassEvalBatch(model, q, in, out, n); });
+  // With subnormals flushed where the NDF's own kernels flush them
+  // (Beckmann's exponential: ModelRow::flush_subnormals).
+  MaybeFlushed(RowOfModel(model.ndf)->flush_subnormals, [&] { GlassEvalBatch(model, q, in, out, n); });
 #else
   (void)q, (void)wi, (void)wo, (void)out, (void)n;
 #endif

@@ -117,7 +117,7 @@ const ModelRow kGgxRows[] = {
        Bad("model ggx-aniso has only the table quantities E and E_avg (bake them, or eval {quantity} "
            "E); for its BRDF give {model} ggx with {alpha_x} and {alpha_y}");
      },
-     nullptr, nullptr},
+     nullptr, nullptr, nullptr, " is a table model; give ggx with its two widths"},
 };
 extern const ModelFamily kFamily_ggx = {kGgxRows, 2};
 

@@ -83,7 +83,9 @@ const ModelRow kGgxGlassRow = {
       Bad("model ggx-glass has only the table quantities E and E_avg (bake them, or eval {quantity} "
           "E or E_avg); its BSDF is evaluated by DielectricBsdfBatch");
     },
-    nullptr};
+    nullptr,
+    nullptr,
+    " is a table model; the rough dielectric's batch is DielectricBsdfBatch"};
 extern const ModelFamily kFamily_glass = {&kGgxGlassRow, 1};
 
 }  // namespace brdfbake

@@ -68,6 +68,9 @@ struct ModelRow {
   // `quantities` (a sheen visibility without masking has no Lambda), or
   // "" where it has it; null: every quantity of `quantities`.
   std::string (*lacks)(const BatchModel& model, Quantity q) = nullptr;
+  // Why a model without batch kernels has none, completing "model <name>"
+  // (a table model: where its batch is); null for a model with kernels.
+  const char* no_batch = nullptr;
 };
 
 // The rows of one family (BRDFBAKE_MODELS), in the order of its kinds.

@@ -182,6 +182,7 @@ TEST(QuadratureSimdTest, AnisoGgxAgreesWithTheScalarReferenceOnEveryTarget) {
   });
 }
 
+#if BRDFBAKE_WITH_ELLIPSOID
 // The ellipsoid: aligned, tilted and 10^4 : 1 tilted.
 TEST(QuadratureSimdTest, EllipsoidAgreesWithTheScalarReferenceOnEveryTarget) {
   const double cases[][5] = {{0.3, 0.6, 0, 0, 0}, {0.3, 0.6, 0.35, 0, 0.5}, {1, 1e-4, 1.5, -1.2, 0.3}};
@@ -192,6 +193,9 @@ TEST(QuadratureSimdTest, EllipsoidAgreesWithTheScalarReferenceOnEveryTarget) {
   });
 }
 
+#endif  // BRDFBAKE_WITH_ELLIPSOID
+
+#if BRDFBAKE_WITH_SEL
 // The sel lobe's integral: the inner rule's nodes in lanes against the
 // scalar reference on every target, widths from 1e-4 to 1 and 100 : 1.
 TEST(QuadratureSimdTest, SelAgreesWithTheScalarReferenceOnEveryTarget) {
@@ -219,6 +223,9 @@ TEST(QuadratureSimdTest, SelAgreesWithTheScalarReferenceOnEveryTarget) {
   ForceTarget("best");
 }
 
+#endif  // BRDFBAKE_WITH_SEL
+
+#if BRDFBAKE_WITH_ELLIPSOID
 // The kinks' root search in lanes against PolyRootsIn on every target:
 // random polynomials of degree 0 to 4 (stored as quartics) with roots at
 // least 1e-3 apart, batches of 1 to 40 (whole vectors and tails). The
@@ -340,6 +347,8 @@ TEST(QuadratureSimdTest, EllipsoidRaysSetUpInLanesAgreeWithTheScalarOnEveryTarge
   }
   ForceTarget("best");
 }
+
+#endif  // BRDFBAKE_WITH_ELLIPSOID
 
 }  // namespace
 }  // namespace brdfbake

@@ -573,11 +573,10 @@ struct BakeOptions {
     spec.model.gamma = ParseNumberOrInf("--gamma", gamma);
     CheckOption(app, "--visibility", spec.model.kind, brdfbake::ModelOption::kVisibility, model);
     spec.model.visibility = brdfbake::ParseSheenVisibility(visibility);
-    const bool lobe = spec.model.kind == brdfbake::ModelKind::kCharlie ||
-                      spec.model.kind == brdfbake::ModelKind::kDisneyDiffuse;
-    if (Given(app, "--masking") && lobe) {
+    if (Given(app, "--masking") && !brdfbake::ModelTakesMasking(spec.model.kind)) {
+      const bool visibility = brdfbake::ModelTakes(spec.model.kind, brdfbake::ModelOption::kVisibility);
       Bad("--masking: model " + model + " has no Smith masking" +
-          (spec.model.kind == brdfbake::ModelKind::kCharlie ? " (its visibility is --visibility)" : ""));
+          (visibility ? " (its visibility is --visibility)" : ""));
     }
     spec.masking = ParseMasking(masking);
     spec.integrator = brdfbake::ParseIntegrator(integrator);
@@ -615,8 +614,10 @@ struct BakeOptions {
     }
     spec.half = pixel == "half";
     const bool eavg = spec.table == brdfbake::TableKind::kEavg;
-    // std without --gamma takes one more --size entry: the gamma axis.
-    const bool gamma_ok = spec.model.kind == brdfbake::ModelKind::kStudentT && !Given(app, "--gamma");
+    // A model taking gamma (std) without --gamma takes one more --size
+    // entry: the gamma axis.
+    const bool gamma_ok =
+        brdfbake::ModelTakes(spec.model.kind, brdfbake::ModelOption::kGamma) && !Given(app, "--gamma");
     const bool given = Given(app, "--size");
     const size_t entries = !given || size.empty() ? 0 : size_t(std::count(size.begin(), size.end(), 'x')) + 1;
     const bool gen_schlick = spec.GenSchlick();

@@ -86,7 +86,9 @@ const BakerRow kCharlieRow = {
     nullptr,
     CharlieModelJson,
     CharlieIntegratorJson,
-    kInfinity};
+    kInfinity,
+    nullptr,
+    false};  // its shadowing is its own
 
 }  // namespace
 

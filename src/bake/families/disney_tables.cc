@@ -65,7 +65,9 @@ const BakerRow kDisneyRow = {
                            "(1 - NoL)^5) (1 + (F_D90 - 1) (1 - NoV)^5)";
     },
     DisneyIntegratorJson,
-    kInfinity};
+    kInfinity,
+    nullptr,
+    false};  // no shadowing
 
 }  // namespace
 

@@ -247,7 +247,14 @@ const BakerRow kEllipsoidRow = {
     nullptr,
     EllipsoidModelJson,
     EllipsoidIntegratorJson,
-    1.0};
+    1.0,
+    nullptr,
+    true,
+    // One material: E over the view (no azimuthal symmetry), E_avg one value.
+    [](const BakeSpec& spec) {
+      if (spec.table == TableKind::kEavg) return OwnAxes{{}, {}, "no size (the ellipsoid's E_avg is one value)"};
+      return OwnAxes{{&BakeSpec::mu, &BakeSpec::phi}, {32, 16}, "WxH (mu x phi_o, e.g. 64x64)", kTwoPi<double>};
+    }};
 
 }  // namespace
 

@@ -176,11 +176,36 @@ const BakerRow kGgxRows[] = {
      [](const BakeSpec& slice, const TexelAt& at, uint64_t) {
        return AnisoTexel(slice, at.roughness, at.anisotropy, at.mu, at.phi);
      },
-     AnisoEavg, nullptr, nullptr, AnisoModelJson, AnisoIntegratorJson, 1.0},
+     AnisoEavg, nullptr, nullptr, AnisoModelJson, AnisoIntegratorJson, 1.0, nullptr, true,
+     [](const BakeSpec& spec) {
+       if (spec.table == TableKind::kEavg) {
+         return OwnAxes{{&BakeSpec::roughness, &BakeSpec::anisotropy}, {32, 16},
+                        "RxS (roughness x anisotropy, e.g. 32x16)"};
+       }
+       return OwnAxes{{&BakeSpec::mu, &BakeSpec::phi, &BakeSpec::roughness, &BakeSpec::anisotropy},
+                      {32, 16, 32, 16},
+                      "WxPxRxS (mu x phi_o x roughness x anisotropy, e.g. 32x16x32x16)"};
+     },
+     // Its widths come from the roughness and anisotropy axes.
+     [](ModelParams* p) { p->kind = ModelKind::kGgx; }},
 };
 
 }  // namespace
 
 extern const BakerFamily kBakerFamily_ggx = {kGgxRows, 2};
+
+TexelEstimate IntegrateAnisoTexel(const BakeSpec& spec, double roughness, double anisotropy, double mu,
+                                  double phi_o) {
+  ValidateBakeSpec(spec);
+  return AnisoTexel(spec, roughness, anisotropy, mu, phi_o);
+}
+
+EavgEstimate IntegrateAnisoEavg(const BakeSpec& spec, double roughness, double anisotropy) {
+  ValidateBakeSpec(spec);
+  TexelAt at;
+  at.roughness = roughness;
+  at.anisotropy = anisotropy;
+  return AnisoEavg(spec, at);
+}
 
 }  // namespace brdfbake

@@ -114,6 +114,25 @@ void GlassIntegratorJson(const BakeSpec& spec, nlohmann::json* j) {
                        : "alpha < 1e-4 is the smooth interface: E = 1 - (1 - mu)^5";
 }
 
+// E's definition by the parts it counts (BakeSpec::part).
+const char* GlassEDefinition(const BakeSpec& spec) {
+  switch (spec.part) {
+    case DielectricPart::kReflection:
+      return "directional albedo E(mu) = integral over the upper hemisphere of f_R cos(theta_i) dwi of "
+             "the rough dielectric's reflection lobe, Fresnel included: the energy it reflects";
+    case DielectricPart::kTransmission:
+      return "directional albedo E(mu) = integral over the lower hemisphere of f_T |cos(theta_i)| dwi of "
+             "the rough dielectric's refraction lobe, Fresnel included: the energy it refracts";
+    case DielectricPart::kTransmissionSchlick:
+      return "T(mu) = integral over the lower hemisphere of (1 - (1 - |wo.h|)^5) f_T |cos(theta_i)| dwi, f_T the "
+             "rough dielectric's refraction lobe without its Fresnel factor: the refraction weighted by the "
+             "complement of Schlick's weight (EEVEE's btdf_ggx; the renderer multiplies it by 1 - F0)";
+    case DielectricPart::kBoth: break;
+  }
+  return "directional albedo E(mu) = integral over the sphere of (f_R + f_T) |cos(theta_i)| dwi of "
+         "the rough dielectric, Fresnel included: reflection plus refraction";
+}
+
 const BakerRow kGgxGlassRow = {
     ModelKind::kGgxGlass,
     Bit(TableKind::kE) | Bit(TableKind::kEavg),
@@ -125,7 +144,20 @@ const BakerRow kGgxGlassRow = {
     nullptr,
     GlassModelJson,
     GlassIntegratorJson,
-    1.0};
+    1.0,
+    nullptr,
+    true,
+    // Slices over the ior of the medium below the view.
+    [](const BakeSpec& spec) {
+      if (spec.table == TableKind::kEavg) {
+        return OwnAxes{{&BakeSpec::roughness, &BakeSpec::ior}, {32, 32}, "NxD (roughness x ior, e.g. 32x16)"};
+      }
+      return OwnAxes{{&BakeSpec::mu, &BakeSpec::roughness, &BakeSpec::ior}, {32, 32, 32},
+                     "WxHxD (mu x roughness x ior, e.g. 32x32x16)"};
+    },
+    // Its widths come from the roughness axis.
+    [](ModelParams* p) { p->alpha_x = p->alpha_y = 1.0; },
+    GlassEDefinition};
 
 }  // namespace
 
