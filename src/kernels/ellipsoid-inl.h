@@ -311,7 +311,7 @@ HWY_INLINE V EllipsoidPdfVisible(D d, const EllipsoidConsts<D>& c, V ux, V uy, V
   return hn::IfThenElseZero(valid, pdf);
 }
 
-// Seed 000 section 4, Version 3 (see the top); m = (0, 0, 0) for u.z <= 0.
+// [Walter15] section 4, Version 3 (see the top); m = (0, 0, 0) for u.z <= 0.
 template <class D, class V>
 HWY_INLINE void EllipsoidSampleVisible(D d, const EllipsoidConsts<D>& c, V ux, V uy, V uz, V u1,
                                        V u2, V* mx, V* my, V* mz) {

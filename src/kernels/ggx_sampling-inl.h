@@ -177,7 +177,7 @@ HWY_INLINE void CrescentPoint(D d, V s, V oms, V u1, V u2, V* p1, V* p2s, V* lif
   *lift = hn::Sqrt(hn::Max(z2, hn::Zero(d)));
 }
 
-// Seed 003 Listing 1: a visible normal of GGX for the view w, from (u1, u2).
+// [Heitz18] Listing 1: a visible normal of GGX for the view w, from (u1, u2).
 template <class D, class V>
 HWY_INLINE void GgxSampleVisible(D d, const GgxSamplingConsts<D>& c, V wx, V wy, V wz, V u1, V u2,
                                  V* mx, V* my, V* mz) {

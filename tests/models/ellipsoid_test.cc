@@ -409,7 +409,7 @@ TEST(EllipsoidTest, SamplesLieInTheLune) {
 }
 
 // ---------------------------------------------------------------------------
-// Seed 000 section 1: "Scaling the matrix by a constant (c A) and left
+// [Walter15] section 1: "Scaling the matrix by a constant (c A) and left
 // multiplication by an orthogonal matrix (Q A) does not change the
 // distribution". Build c Q A explicitly and compare every quantity.
 TEST(EllipsoidTest, InvariantUnderScaleAndLeftOrthogonal) {

@@ -42,7 +42,7 @@ Mat3<double> RandomRotation(std::mt19937_64& rng) {
          Mat3<double>::RotZ(ang(rng));
 }
 
-// Seed 002 section 1: the written-out SSL is pi alpha^2 D_GGX(cos(theta/2)),
+// [TokuyoshiHarada] section 1: the written-out SSL is pi alpha^2 D_GGX(cos(theta/2)),
 // with D_GGX evaluated by the library's GGX (slope form, [Ribardiere17] eq. 3).
 // The inputs are chosen so that both sides see the same angle exactly:
 // sin^2(theta/2) = s2 is dyadic, so cos(theta) = 1 - 2 s2 is exact (a
@@ -136,7 +136,7 @@ TEST(SelTest, RotationEquivariance) {
   EXPECT_GT(plain.K(wx), plain.K(wy));  // wider along x (alpha_x > alpha_y)
 }
 
-// Seed 002 section 2 from the definition: sqrt(K(w)) v lies on the ellipsoid
+// [TokuyoshiHarada] section 2 from the definition: sqrt(K(w)) v lies on the ellipsoid
 // with centre c = (0, 0, (1 - amax^2) / 2) and semi-axes
 // r = (alpha_x, alpha_y, (1 + amax^2) / 2) in lobe space.
 TEST(SelTest, PointLiesOnTheEllipsoid) {

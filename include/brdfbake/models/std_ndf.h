@@ -368,7 +368,7 @@ class StudentTNdf : public SlopeNdf<T, StudentTNdf<T>> {
 
   T gamma() const { return gamma_; }
 
-  // Seed 004 eq. 13 with sigma = 1: 1 / (pi (1 + r^2/(gamma-1))^gamma),
+  // [Ribardiere17] eq. 13 with sigma = 1: 1 / (pi (1 + r^2/(gamma-1))^gamma),
   // written as exp(-gamma log1p(.)) (no loss for large gamma).
   T UnitP22(T r2) const {
     if (beckmann_inf_) return beckmann_.UnitP22(r2);
