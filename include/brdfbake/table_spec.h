@@ -238,6 +238,8 @@ TableShape ShapeOf(const BakeSpec& spec);
 // The same axes as ShapeOf's, as pointers into `spec`: to set their sizes,
 // ranges and warps.
 std::vector<Axis*> TableAxes(BakeSpec* spec);
+// Whether the table has the axis `name` ("roughness", "phi_o", ...).
+bool TableHasAxis(const BakeSpec& spec, const std::string& name);
 // Whether an axis is a slice axis over a model parameter (gamma, ior,
 // exponent) rather than over the view or the lobe (mu, roughness, phi_o,
 // anisotropy, alpha_x, alpha_y): settings meant for every axis skip it.

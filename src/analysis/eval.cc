@@ -51,8 +51,7 @@ bool TablesOverOwnWidths(ModelKind kind) {
   BakeSpec spec;
   spec.model.kind = kind;
   spec.table = TableKind::kE;
-  const std::vector<Axis*> axes = TableAxes(&spec);
-  return std::none_of(axes.begin(), axes.end(), [](const Axis* a) { return a->name == "roughness"; });
+  return !TableHasAxis(spec, "roughness");
 }
 
 // The names of this build's models with the lobe quantity K (sel).

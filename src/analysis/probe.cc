@@ -102,10 +102,7 @@ bool ProbeSupports(const BakeSpec& s) {
   // over the roughness (f82_bias), over gamma, ior or anisotropy slices
   // too; not the tables without a roughness axis (a material's own table,
   // a lobe's norm over its widths), nor gen_schlick's slices.
-  BakeSpec axes = s;
-  const std::vector<Axis*> named = TableAxes(&axes);
-  const bool roughness = std::any_of(named.begin(), named.end(), [](const Axis* a) { return a->name == "roughness"; });
-  return roughness && !s.GenSchlick();
+  return TableHasAxis(s, "roughness") && !s.GenSchlick();
 }
 
 std::vector<std::vector<double>> ProbePositions(const Table& t, const ProbeOptions& o) {

@@ -372,8 +372,8 @@ Table Bake(const BakeSpec& spec, const ProgressFn& progress) {
     tbb::parallel_for(int64_t(0), total, [&](int64_t i) {
       const int x = static_cast<int>(i % t.width), y = static_cast<int>(i / t.width);
       TexelAt at;
-      at.alpha_x = spec.alpha_x.Value(x);
-      at.alpha_y = spec.alpha_y.Value(y);
+      SetAt(t.axes[0], x, &at);
+      SetAt(t.axes[1], y, &at);
       const TexelEstimate n = row.texel(spec, at, 0);
       v0[i] = n.e;
       t.channels[1].values[i] = n.bias;

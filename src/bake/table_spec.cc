@@ -354,6 +354,11 @@ const char* Definition(Meaning meaning, const BakeSpec& spec) {
 
 std::vector<Axis*> TableAxes(BakeSpec* spec) { return AxesOf(*spec); }
 
+bool TableHasAxis(const BakeSpec& spec, const std::string& name) {
+  const std::vector<const Axis*> axes = AxesOf(spec);
+  return std::any_of(axes.begin(), axes.end(), [&](const Axis* a) { return a->name == name; });
+}
+
 bool ParameterAxis(const Axis& axis) { return axis.name == "gamma" || axis.name == "ior" || axis.name == "exponent"; }
 
 TableShape ShapeOf(const BakeSpec& spec) {
@@ -489,7 +494,8 @@ void ValidateBakeSpec(const BakeSpec& spec) {
         " tables are baked with the quadrature only (got " + IntegratorName(spec.integrator) + ")");
   }
   // The view and lobe axes here; the parameter axes below.
-  for (const Axis* a : AxesOf(spec)) {
+  const std::vector<const Axis*> axes = AxesOf(spec);
+  for (const Axis* a : axes) {
     if (ParameterAxis(*a)) continue;
     if (a->warp == Warp::kTail)
       Bad("{warp}: tail is the gamma axis's warp (the " + a->name + " axis takes linear, square, sqrt or one-minus-square)");
@@ -546,7 +552,6 @@ void ValidateBakeSpec(const BakeSpec& spec) {
           ExactText(a.min) + ":" + ExactText(a.max) + ")");
     }
   }
-  const std::vector<const Axis*> axes = AxesOf(spec);
   if (std::any_of(axes.begin(), axes.end(), [](const Axis* a) { return a->name == "ior"; })) {
     const Axis& a = spec.ior;
     CheckAxisSize(a);
